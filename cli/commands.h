@@ -1,0 +1,9 @@
+#pragma once
+// Each subcommand of the facetlight tool lives in its own cli/<name>_command.cpp and registers itself here.
+#include <CLI/CLI.hpp>
+
+namespace facetlight::cli {
+
+void addInfoCommand(CLI::App& app);
+
+}  // namespace facetlight::cli
