@@ -5,5 +5,6 @@
 namespace facetlight::cli {
 
 void addInfoCommand(CLI::App& app);
+void addCutCommand(CLI::App& app);
 
 }  // namespace facetlight::cli

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "cut_library.h"
 #include "error.h"
 #include "mesh_io.h"
 
@@ -9,7 +10,9 @@ namespace facetlight {
 
 Stone resolveStone(const std::string& mesh, const StoneOptions& options) {
     if (std::filesystem::exists(mesh)) return loadStone(mesh, options);
-    throw Error("no such mesh file or shape: '" + mesh + "'");
+    for (const auto& shape : cutShapes())
+        if (shape.name == mesh) return Stone::build(makeCut(mesh), mesh, options);
+    throw Error("no such mesh file or shape: '" + mesh + "'; the shipped shapes are: " + knownShapeNames());
 }
 
 }  // namespace facetlight

@@ -265,8 +265,13 @@ private:
         for (uint32_t seed = 0; seed < nt; ++seed) {
             if (facetOf[seed] >= 0) continue;
             const auto& sv = stone_.triangles[seed].v;
-            const Vec3 n = normalize(cross(stone_.vertices[sv[1]] - stone_.vertices[sv[0]],
-                                           stone_.vertices[sv[2]] - stone_.vertices[sv[0]]));
+            // The plane of the seed's whole input polygon (Newell), not of the seed triangle, which may be a
+            // sliver with an unreliable normal.
+            const Vec3 seedCross = cross(stone_.vertices[sv[1]] - stone_.vertices[sv[0]],
+                                         stone_.vertices[sv[2]] - stone_.vertices[sv[0]]);
+            const Vec3 polygonNormal =
+                newellNormal(mesh_.vertices, mesh_.polygons[triangleSource_[seed]].vertices);
+            const Vec3 n = normalize(dot(polygonNormal, seedCross) < 0 ? -polygonNormal : polygonNormal);
             const double d = dot(n, stone_.vertices[sv[0]]);
             const uint32_t id = uint32_t(stone_.facets.size());
             Facet facet;
@@ -473,7 +478,10 @@ private:
         const Bounds3& b = stone_.bounds;
         p.length = b.extent().x;
         p.width = b.extent().y;
-        const bool round = p.length <= p.width * 1.01;
+        // Round: no vertex reaches beyond the circle inscribed in the extents (a square's corners do).
+        double maxRadius = 0;
+        for (const auto& v : stone_.vertices) maxRadius = std::max(maxRadius, std::hypot(v.x, v.y));
+        const bool round = p.length <= p.width * 1.01 && maxRadius <= 0.25 * (p.length + p.width) * 1.005;
         p.diameter = round ? 0.5 * (p.length + p.width) : p.width;
         const double d = p.diameter;
         const GirdleBand band = girdleBand();
