@@ -6,5 +6,8 @@ namespace facetlight::cli {
 
 void addInfoCommand(CLI::App& app);
 void addCutCommand(CLI::App& app);
+void addTraceCommand(CLI::App& app);
+void addStudyCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
 
 }  // namespace facetlight::cli

@@ -3,22 +3,29 @@
 
 #include "commands.h"
 #include "error.h"
+#include "process_communicator.h"
 
 int main(int argc, char** argv) {
+    facetlight::cli::processCommunicator();  // under mpirun, every rank starts MPI before anything else
     CLI::App app{"facetlight: how light moves through cut gemstones"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "facetlight 0.1.0");
     facetlight::cli::addInfoCommand(app);
     facetlight::cli::addCutCommand(app);
+    facetlight::cli::addTraceCommand(app);
+    facetlight::cli::addStudyCommand(app);
+    facetlight::cli::addRenderCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     } catch (const facetlight::Error& e) {
         std::cerr << "facetlight: " << e.what() << "\n";
+        facetlight::cli::abortOtherRanks(1);
         return 1;
     } catch (const std::exception& e) {
         std::cerr << "facetlight: internal error: " << e.what() << "\n";
+        facetlight::cli::abortOtherRanks(2);
         return 2;
     }
     return 0;

@@ -1,0 +1,109 @@
+// Stats-only photon tracing of a 57-facet round brilliant (collimated light straight down, no dispersion),
+// in photons per second for 1 and 2 threads. Figures go to docs/performance.md ("Photon tracing").
+//   build-*/bin/bench_trace --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "halfspace.h"
+#include "mesh_io.h"
+#include "photon_tracer.h"
+
+using namespace facetlight;
+
+namespace {
+
+// Tolkowsky-like proportions (girdle diameter 1, knife-edge girdle): table 53%, crown 34.5 deg, pavilion
+// 40.75 deg; stars, upper and lower halves at the usual azimuths with slopes a few degrees off the mains.
+Stone builtBrilliant() {
+    std::vector<NamedPlane> planes;
+    const double tableZ = (1 - 0.53) / 2 * std::tan(radians(34.5));
+    planes.push_back({{{0, 0, 1}, tableZ}, "table"});
+    auto add = [&](double azimuthDeg, double slopeDeg, bool crown, const Vec3& through,
+                   const std::string& name) {
+        const double a = radians(azimuthDeg), s = radians(slopeDeg);
+        const Vec3 n = normalize(
+            Vec3{std::sin(s) * std::cos(a), std::sin(s) * std::sin(a), (crown ? 1 : -1) * std::cos(s)});
+        planes.push_back({{n, dot(n, through)}, name});
+    };
+    auto girdlePoint = [](double azimuthDeg) {
+        return Vec3{0.5 * std::cos(radians(azimuthDeg)), 0.5 * std::sin(radians(azimuthDeg)), 0};
+    };
+    for (int k = 0; k < 8; ++k) {
+        const double main = 45.0 * k, star = main + 22.5;
+        add(main, 34.5, true, girdlePoint(main), "bezel_" + std::to_string(k));
+        const double edge = 0.53 / 2 * std::cos(radians(22.5));
+        add(star, 22.0, true, {edge * std::cos(radians(star)), edge * std::sin(radians(star)), tableZ},
+            "star_" + std::to_string(k));
+        add(main, 40.75, false, girdlePoint(main), "pavilion_main_" + std::to_string(k));
+        for (int side : {-1, 1}) {
+            const double half = main + side * 11.25;
+            const std::string tag = std::to_string(2 * k + (side > 0));
+            add(half, 40.0, true, girdlePoint(half), "upper_half_" + tag);
+            add(half, 42.0, false, girdlePoint(half), "lower_half_" + tag);
+        }
+    }
+    return Stone::build(intersectHalfSpaces(planes), "round_brilliant");
+}
+
+const Stone& brilliant() {
+    static const Stone stone = builtBrilliant();
+    return stone;
+}
+
+// The shipped round brilliant (meshes/round_brilliant.obj, with a faceted girdle), when the tree has one.
+const Stone* shippedBrilliant() {
+    static const std::optional<Stone> stone = []() -> std::optional<Stone> {
+        const std::string path = std::string(FACETLIGHT_SOURCE_DIR) + "/meshes/round_brilliant.obj";
+        if (!std::filesystem::exists(path)) return std::nullopt;
+        return loadStone(path);
+    }();
+    return stone ? &*stone : nullptr;
+}
+
+void traceStats(benchmark::State& state, const Stone& stone) {
+    TraceSettings settings;
+    settings.photons = 4'000'000;
+    settings.threads = int(state.range(0));
+    settings.dispersion = false;
+    const TraceScene scene(stone, settings);
+    uint64_t interfaces = 0;
+    for (auto _ : state) {
+        FacetStats stats(stone.facets.size());
+        traceBlocks(scene, 0, blockCount(settings.photons), settings.threads, stats);
+        benchmark::DoNotOptimize(stats.exited);
+        interfaces = stats.hit + stats.exited;
+        for (const FacetCounts& f : stats.facets) interfaces += f.internalReflections;
+    }
+    state.counters["photons_per_s"] = benchmark::Counter(
+        double(settings.photons) * double(state.iterations()), benchmark::Counter::kIsRate);
+    // Surface interactions (entry, internal reflections, exit) per photon drawn: the work per photon.
+    state.counters["interfaces_per_photon"] = double(interfaces) / double(settings.photons);
+    state.counters["facets"] = double(stone.facets.size());
+}
+
+void BM_TraceBrilliant57(benchmark::State& state) {
+    traceStats(state, brilliant());
+}
+BENCHMARK(BM_TraceBrilliant57)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
+void BM_TraceShippedBrilliant(benchmark::State& state) {
+    if (const Stone* stone = shippedBrilliant()) {
+        traceStats(state, *stone);
+    } else {
+        state.SkipWithError("meshes/round_brilliant.obj not found");
+    }
+}
+BENCHMARK(BM_TraceShippedBrilliant)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+
+}  // namespace
+
+BENCHMARK_MAIN();

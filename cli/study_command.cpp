@@ -1,0 +1,91 @@
+// facetlight study: runs a study described by a JSON job file and writes its results into a folder. The
+// service's launcher runs jobs this way as a child process, across MPI ranks under mpirun.
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "commands.h"
+#include "error.h"
+#include "mesh_resolver.h"
+#include "process_communicator.h"
+#include "progress_json.h"
+#include "study.h"
+
+namespace facetlight::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct StudyOptions {
+    std::string job;
+    std::string out;
+    bool progressJson = false;
+};
+
+nlohmann::json readJob(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error("cannot read job file " + path);
+    try {
+        return nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& e) {
+        throw Error("job file " + path + " is not JSON: " + e.what());
+    }
+}
+
+void writeFile(const fs::path& path, const std::string& bytes) {
+    if (bytes.empty()) return;
+    std::ofstream out(path, std::ios::binary);
+    out << bytes;
+    if (!(out << std::flush)) throw Error("cannot write " + path.string());
+}
+
+void runStudyCommand(const StudyOptions& options) {
+    Communicator& comm = processCommunicator();
+    const nlohmann::json job = readJob(options.job);
+    if (!job.is_object() || !job.contains("mesh") || !job["mesh"].is_string())
+        throw Error("job file " + options.job + ": \"mesh\" must be a string");
+    StudySettings settings;
+    settings.trace = TraceSettings::fromJson(job.value("trace", nlohmann::json::object()));
+    if (job.contains("render")) settings.render = RenderSettings::fromJson(job["render"]);
+    Stone stone = resolveStone(job["mesh"].get<std::string>());
+    if (job.contains("name") && job["name"].is_string()) stone.name = job["name"];
+
+    StudyControl control;
+    StudyResult result;
+    {
+        ProgressJson progress(options.progressJson && comm.isRoot(), [&] {
+            const StudyPhase phase = control.phase;
+            // Rank 0 sees its own share of the trace: scaled to the job, as if every rank kept pace.
+            if (phase == StudyPhase::Tracing)
+                return jobProgress("tracing", control.done, control.total, settings.trace.photons);
+            return ProgressSample{std::string(studyPhaseName(phase)), control.done, control.total};
+        });
+        result = runStudy(stone, settings, control, comm);
+    }
+    if (!comm.isRoot()) return;
+    if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();
+    const fs::path out(options.out);
+    // stats.json last: its presence tells the launcher the folder is complete.
+    writeFile(out / "stats.csv", result.statsCsv);
+    writeFile(out / "render.png", result.renderPng);
+    writeFile(out / "heatmap.png", result.heatmapPng);
+    writeFile(out / "angular.png", result.angularPng);
+    writeFile(out / "stats.json", result.stats.dump(2));
+}
+
+}  // namespace
+
+void addStudyCommand(CLI::App& app) {
+    auto options = std::make_shared<StudyOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "study", "Run a job file's study into a folder (how the service runs jobs through a launcher)");
+    cmd->add_option("--job", options->job, "JSON: {\"mesh\", \"name\", \"trace\": {...}, \"render\": {...}}")
+        ->required();
+    cmd->add_option("--out", options->out, "Folder for stats.json, stats.csv and the PNGs (rank 0 writes)")
+        ->required();
+    cmd->add_flag("--progress-json", options->progressJson, "Write progress as JSON lines on stderr");
+    cmd->callback([options] { runStudyCommand(*options); });
+}
+
+}  // namespace facetlight::cli

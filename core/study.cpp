@@ -1,0 +1,132 @@
+#include "study.h"
+
+#include <chrono>
+#include <sstream>
+#include <thread>
+
+#include "angular_plot.h"
+#include "distributed_trace.h"
+#include "error.h"
+#include "floor_photons.h"
+#include "heatmap.h"
+#include "photon_map.h"
+#include "photon_tracer.h"
+#include "renderer.h"
+#include "scene.h"
+
+namespace facetlight {
+namespace {
+
+// Copies a running phase's progress counter into the study's, and the study's cancel flag into the phase's,
+// every few milliseconds until destroyed.
+class ProgressMirror {
+  public:
+    ProgressMirror(StudyControl& control, std::atomic<uint64_t>& done, std::atomic<bool>& cancel)
+        : thread_([&control, &done, &cancel, this] {
+              while (!stop_.load()) {
+                  control.done.store(done.load(std::memory_order_relaxed), std::memory_order_relaxed);
+                  if (control.cancel.load()) cancel.store(true);
+                  std::this_thread::sleep_for(std::chrono::milliseconds(5));
+              }
+              control.done.store(done.load());
+          }) {}
+    ~ProgressMirror() {
+        stop_ = true;
+        thread_.join();
+    }
+
+  private:
+    std::atomic<bool> stop_{false};
+    std::thread thread_;
+};
+
+void enterPhase(StudyControl& control, StudyPhase phase, uint64_t total) {
+    if (control.cancel.load()) throw Canceled();
+    control.done = 0;
+    control.total = total;
+    control.phase = phase;
+}
+
+}  // namespace
+
+std::string_view studyPhaseName(StudyPhase phase) {
+    switch (phase) {
+        case StudyPhase::Queued:
+            return "queued";
+        case StudyPhase::Tracing:
+            return "tracing";
+        case StudyPhase::PhotonMap:
+            return "photon_map";
+        case StudyPhase::Rendering:
+            return "rendering";
+        case StudyPhase::Done:
+            return "done";
+    }
+    return "queued";
+}
+
+StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyControl& control) {
+    SerialCommunicator serial;
+    return runStudy(stone, settings, control, serial);
+}
+
+StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyControl& control,
+                     Communicator& comm) {
+    settings.trace.validate();
+    if (settings.render) settings.render->validate();
+    StudyResult result;
+    const int threads = settings.trace.threads;
+
+    enterPhase(control, StudyPhase::Tracing, localPhotons(comm, settings.trace.photons));
+    TraceResult traced;
+    {
+        TraceControl traceControl;
+        ProgressMirror mirror(control, traceControl.photonsDone, traceControl.cancel);
+        traced = traceDistributed(comm, stone, settings.trace, &traceControl);
+    }
+    if (traced.cancelled || control.cancel.load()) throw Canceled();
+    if (!comm.isRoot()) return result;
+    result.stats = statsToJson(traced.stats, stone, settings.trace, traced.timing);
+    std::ostringstream csv;
+    writeFacetCsv(csv, traced.stats, stone);
+    result.statsCsv = csv.str();
+    result.heatmapPng = encodePng(facetHeatmap(stone, traced.stats));
+
+    if (!settings.render) {
+        enterPhase(control, StudyPhase::Done, 0);
+        return result;
+    }
+    const RenderSettings& r = *settings.render;
+    const Scene scene(stone, settings.trace);
+    const TraceScene traceScene(stone, settings.trace);
+
+    enterPhase(control, StudyPhase::PhotonMap, r.mapPhotons);
+    FloorPhotons photons;
+    {
+        std::atomic<uint64_t> done{0};
+        std::atomic<bool> cancel{false};
+        ProgressMirror mirror(control, done, cancel);
+        photons = traceFloorPhotons(scene, traceScene, r.mapPhotons, threads, &done, &cancel);
+    }
+    if (photons.cancelled || control.cancel.load()) throw Canceled();
+    const PhotonMap caustics(std::move(photons.caustic), threads);
+    result.angularPng = encodePng(angularPlot(
+        photons.crownExits, std::to_string(photons.crownExits.total) + " of " + std::to_string(r.mapPhotons) +
+                                " photons (" + std::string(lightModelName(settings.trace.light.model)) +
+                                " light), refracted out of table and crown"));
+
+    enterPhase(control, StudyPhase::Rendering, uint64_t(r.width) * uint64_t(r.height));
+    RenderedImage image;
+    {
+        std::atomic<uint64_t> done{0};
+        std::atomic<bool> cancel{false};
+        ProgressMirror mirror(control, done, cancel);
+        image = render(scene, caustics, r, threads, settings.trace.seed, {&done, &cancel});
+    }
+    if (image.cancelled || control.cancel.load()) throw Canceled();
+    result.renderPng = encodePng(toDisplay(image));
+    enterPhase(control, StudyPhase::Done, 0);
+    return result;
+}
+
+}  // namespace facetlight
