@@ -40,8 +40,8 @@ void printText(const Stone& stone) {
         std::printf("\n%s: %d facets\n", std::string(regionName(region)).c_str(), stone.facetCount(region));
         for (const auto& f : stone.facets)
             if (f.region == region)
-                std::printf("  %4u  %-20s area %9.5f  normal (%+.4f, %+.4f, %+.4f)\n", f.id, f.name.c_str(), f.area,
-                            f.normal.x, f.normal.y, f.normal.z);
+                std::printf("  %4u  %-20s area %9.5f  normal (%+.4f, %+.4f, %+.4f)\n", f.id, f.name.c_str(),
+                            f.area, f.normal.x, f.normal.y, f.normal.z);
     }
     for (const auto& w : stone.warnings) std::printf("\nwarning: %s\n", w.c_str());
 }
@@ -51,7 +51,8 @@ void printText(const Stone& stone) {
 void addInfoCommand(CLI::App& app) {
     auto options = std::make_shared<InfoOptions>();
     CLI::App* cmd = app.add_subcommand("info", "Describe a stone: facets by region, proportions, convexity");
-    cmd->add_option("--mesh", options->mesh, "OBJ, STL or GemCad .asc file, or a shipped shape name")->required();
+    cmd->add_option("--mesh", options->mesh, "OBJ, STL or GemCad .asc file, or a shipped shape name")
+        ->required();
     cmd->add_flag("--json", options->json, "Print JSON instead of text");
     cmd->callback([options] {
         const Stone stone = resolveStone(options->mesh);

@@ -1,20 +1,16 @@
 // facetlight render: trace a stone for the statistics, then render it and write the three pictures and the
 // statistics into a folder.
-#include <unistd.h>
-
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <thread>
 
 #include "commands.h"
 #include "error.h"
 #include "mesh_resolver.h"
 #include "process_communicator.h"
 #include "study.h"
+#include "terminal_output.h"
 #include "trace_options.h"
 
 namespace facetlight::cli {
@@ -29,24 +25,6 @@ struct RenderOptions {
     std::string out = ".";
 };
 
-void writeFile(const fs::path& path, const std::string& bytes) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out || !(out << bytes << std::flush)) throw Error("cannot write " + path.string());
-}
-
-// A one-line progress display on stderr, redrawn until `finished`.
-void showProgress(const StudyControl& control, const std::atomic<bool>& finished) {
-    while (!finished.load()) {
-        const uint64_t total = control.total.load(), done = control.done.load();
-        const double share = total ? double(done) / double(total) : 0;
-        std::fprintf(stderr, "\r%-10s %5.1f%%", std::string(studyPhaseName(control.phase.load())).c_str(),
-                     100 * share);
-        std::fflush(stderr);
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    std::fprintf(stderr, "\r%*s\r", 30, "");
-}
-
 void run(RenderOptions& o) {
     StudySettings settings;
     settings.trace = toTraceSettings(o.trace);
@@ -60,23 +38,18 @@ void run(RenderOptions& o) {
     const Stone stone = resolveStone(o.trace.mesh);
 
     StudyControl control;
-    std::atomic<bool> finished{false};
-    std::thread bar;
     // Under mpirun the ranks split the trace and rank 0 alone renders and writes (docs/distributed.md).
     Communicator& comm = processCommunicator();
-    if (comm.isRoot() && isatty(STDERR_FILENO))
-        bar = std::thread(showProgress, std::cref(control), std::cref(finished));
     StudyResult result;
     const auto start = std::chrono::steady_clock::now();
-    try {
+    {
+        ProgressLine bar(comm.isRoot(), [&] {
+            const uint64_t total = control.total.load();
+            return ProgressLine::bar(studyPhaseName(control.phase.load()),
+                                     total ? double(control.done.load()) / double(total) : 0.0);
+        });
         result = runStudy(stone, settings, control, comm);
-    } catch (...) {
-        finished = true;
-        if (bar.joinable()) bar.join();
-        throw;
     }
-    finished = true;
-    if (bar.joinable()) bar.join();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!comm.isRoot()) return;
     if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();

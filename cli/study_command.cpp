@@ -11,6 +11,7 @@
 #include "process_communicator.h"
 #include "progress_json.h"
 #include "study.h"
+#include "terminal_output.h"
 
 namespace facetlight::cli {
 namespace {
@@ -31,13 +32,6 @@ nlohmann::json readJob(const std::string& path) {
     } catch (const nlohmann::json::exception& e) {
         throw Error("job file " + path + " is not JSON: " + e.what());
     }
-}
-
-void writeFile(const fs::path& path, const std::string& bytes) {
-    if (bytes.empty()) return;
-    std::ofstream out(path, std::ios::binary);
-    out << bytes;
-    if (!(out << std::flush)) throw Error("cannot write " + path.string());
 }
 
 void runStudyCommand(const StudyOptions& options) {
@@ -68,9 +62,11 @@ void runStudyCommand(const StudyOptions& options) {
     const fs::path out(options.out);
     // stats.json last: its presence tells the launcher the folder is complete.
     writeFile(out / "stats.csv", result.statsCsv);
-    writeFile(out / "render.png", result.renderPng);
-    writeFile(out / "heatmap.png", result.heatmapPng);
-    writeFile(out / "angular.png", result.angularPng);
+    if (settings.render) {
+        writeFile(out / "render.png", result.renderPng);
+        writeFile(out / "heatmap.png", result.heatmapPng);
+        writeFile(out / "angular.png", result.angularPng);
+    }
     writeFile(out / "stats.json", result.stats.dump(2));
 }
 

@@ -1,0 +1,58 @@
+#pragma once
+// What the subcommands write: result files, and a one-line progress display on stderr while work runs
+// (header-only: the CLI's build takes its sources from cli/*_command.cpp).
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <thread>
+
+#include "error.h"
+
+namespace facetlight::cli {
+
+inline void writeFile(const std::filesystem::path& path, std::string_view bytes) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out || !out.write(bytes.data(), std::streamsize(bytes.size())) || !out.flush())
+        throw Error("cannot write " + path.string());
+}
+
+// Redraws `line()` on stderr every 100 ms while it lives, only when stderr is a terminal and `wanted`.
+class ProgressLine {
+  public:
+    ProgressLine(bool wanted, std::function<std::string()> line) {
+        if (!wanted || !isatty(STDERR_FILENO)) return;
+        thread_ = std::thread([this, line = std::move(line)] {
+            while (!finished_.load()) {
+                std::fprintf(stderr, "\r%-60s", line().c_str());
+                std::fflush(stderr);
+                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+            }
+            std::fprintf(stderr, "\r%60s\r", "");
+        });
+    }
+    ~ProgressLine() {
+        finished_ = true;
+        if (thread_.joinable()) thread_.join();
+    }
+    ProgressLine(const ProgressLine&) = delete;
+    ProgressLine& operator=(const ProgressLine&) = delete;
+
+    static std::string bar(std::string_view label, double share) {
+        const int width = 40, filled = int(std::clamp(share, 0.0, 1.0) * width);
+        return std::string(label) + " [" + std::string(filled, '#') + std::string(width - filled, ' ') +
+               "] " + std::to_string(int(100 * share)) + "%";
+    }
+
+  private:
+    std::atomic<bool> finished_{false};
+    std::thread thread_;
+};
+
+}  // namespace facetlight::cli
