@@ -1,10 +1,17 @@
 #include "convex_intersector.h"
 
+#include <bit>
 #include <cmath>
 #include <limits>
 
-#if defined(__AVX2__) && defined(__FMA__)
+#if defined(__AVX512F__) || (defined(__AVX2__) && defined(__FMA__))
+// GCC 12's AVX-512 intrinsics pass an intentionally undefined vector as the merge source, which its own
+// -Wuninitialized flags (GCC bug 105593).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <immintrin.h>
+#pragma GCC diagnostic pop
 #endif
 
 #include "error.h"
@@ -35,7 +42,105 @@ ConvexIntersector::ConvexIntersector(const Stone& stone) {
     }
 }
 
-#if defined(__AVX2__) && defined(__FMA__)
+#if defined(__AVX512F__)
+
+namespace {
+
+// 1/x to nearly full float precision: the 14-bit hardware estimate and one Newton step, much cheaper than
+// a division.
+inline __m512 reciprocal(__m512 x) {
+    const __m512 r = _mm512_rcp14_ps(x);
+    return _mm512_mul_ps(r, _mm512_fnmadd_ps(x, r, _mm512_set1_ps(2.0f)));
+}
+
+// The extreme of `t` over the lanes and the index kept in its lowest such lane.
+template <bool kMin>
+inline SurfaceHit reduce(__m512 t, __m512i idx) {
+    const float m = kMin ? _mm512_reduce_min_ps(t) : _mm512_reduce_max_ps(t);
+    const __mmask16 at = _mm512_cmp_ps_mask(t, _mm512_set1_ps(m), _CMP_EQ_OQ);
+    alignas(64) uint32_t lanes[16];
+    _mm512_store_si512(lanes, idx);
+    return {m, lanes[at ? __builtin_ctz(unsigned(at)) : 0]};
+}
+
+struct Ray16 {
+    __m512 ox, oy, oz, dx, dy, dz;
+    Ray16(const Vec3f& o, const Vec3f& d)
+        : ox(_mm512_set1_ps(o.x)),
+          oy(_mm512_set1_ps(o.y)),
+          oz(_mm512_set1_ps(o.z)),
+          dx(_mm512_set1_ps(d.x)),
+          dy(_mm512_set1_ps(d.y)),
+          dz(_mm512_set1_ps(d.z)) {}
+};
+
+struct PlaneTerms {
+    __m512 den;  // dot(dir, n): > 0 where the ray heads out through the plane
+    __m512 num;  // offset - dot(origin, n): the ray meets the plane at t = num / den
+};
+
+inline PlaneTerms terms(const float* nx, const float* ny, const float* nz, const float* offset,
+                        const Ray16& r) {
+    const __m512 x = _mm512_loadu_ps(nx), y = _mm512_loadu_ps(ny), z = _mm512_loadu_ps(nz);
+    return {_mm512_fmadd_ps(r.dx, x, _mm512_fmadd_ps(r.dy, y, _mm512_mul_ps(r.dz, z))),
+            _mm512_sub_ps(_mm512_loadu_ps(offset),
+                          _mm512_fmadd_ps(r.ox, x, _mm512_fmadd_ps(r.oy, y, _mm512_mul_ps(r.oz, z))))};
+}
+
+const __m512i kLaneIndex = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+
+}  // namespace
+
+bool ConvexIntersector::leave(const Vec3f& o, const Vec3f& d, SurfaceHit& hit) const {
+    const Ray16 r(o, d);
+    const __m512 zero = _mm512_setzero_ps();
+    __m512 best = _mm512_set1_ps(kInf);
+    __m512i bestIdx = _mm512_setzero_si512(), idx = kLaneIndex;
+    const __m512i step = _mm512_set1_epi32(16);
+    for (size_t i = 0; i < padded_; i += kWidth) {
+        const PlaneTerms p = terms(&nx_[i], &ny_[i], &nz_[i], &offset_[i], r);
+        const __mmask16 out = _mm512_cmp_ps_mask(p.den, zero, _CMP_GT_OQ);
+        // A point a rounding error outside a plane it heads out through leaves at once, at t = 0.
+        const __m512 t = _mm512_max_ps(_mm512_mul_ps(p.num, reciprocal(p.den)), zero);
+        const __mmask16 better = _mm512_mask_cmp_ps_mask(out, t, best, _CMP_LT_OQ);
+        best = _mm512_mask_mov_ps(best, better, t);
+        bestIdx = _mm512_mask_mov_epi32(bestIdx, better, idx);
+        idx = _mm512_add_epi32(idx, step);
+    }
+    // Non-negative floats order as their bit patterns, so one 64-bit key (t above, plane below) per lane
+    // gives the nearest plane and, on ties, the lowest one in a single integer reduction.
+    const __m512i keys = _mm512_min_epu64(_mm512_unpacklo_epi32(bestIdx, _mm512_castps_si512(best)),
+                                          _mm512_unpackhi_epi32(bestIdx, _mm512_castps_si512(best)));
+    const uint64_t key = _mm512_reduce_min_epu64(keys);
+    hit = {std::bit_cast<float>(uint32_t(key >> 32)), uint32_t(key)};
+    return hit.t < kInf;
+}
+
+bool ConvexIntersector::enter(const Vec3f& o, const Vec3f& d, SurfaceHit& hit) const {
+    const Ray16 r(o, d);
+    const __m512 zero = _mm512_setzero_ps();
+    __m512 tIn = _mm512_set1_ps(-kInf), tOut = _mm512_set1_ps(kInf);
+    __mmask16 outside = 0;
+    __m512i inIdx = _mm512_setzero_si512(), idx = kLaneIndex;
+    const __m512i step = _mm512_set1_epi32(16);
+    for (size_t i = 0; i < padded_; i += kWidth) {
+        const PlaneTerms p = terms(&nx_[i], &ny_[i], &nz_[i], &offset_[i], r);
+        const __m512 t = _mm512_mul_ps(p.num, reciprocal(p.den));
+        tOut = _mm512_mask_min_ps(tOut, _mm512_cmp_ps_mask(p.den, zero, _CMP_GT_OQ), tOut, t);
+        const __mmask16 inward = _mm512_cmp_ps_mask(p.den, zero, _CMP_LT_OQ);
+        const __mmask16 better = _mm512_mask_cmp_ps_mask(inward, t, tIn, _CMP_GT_OQ);
+        tIn = _mm512_mask_mov_ps(tIn, better, t);
+        inIdx = _mm512_mask_mov_epi32(inIdx, better, idx);
+        // A ray parallel to a plane it is outside of never enters.
+        outside |=
+            _mm512_mask_cmp_ps_mask(_mm512_cmp_ps_mask(p.den, zero, _CMP_EQ_OQ), p.num, zero, _CMP_LT_OQ);
+        idx = _mm512_add_epi32(idx, step);
+    }
+    hit = reduce<false>(tIn, inIdx);
+    return hit.t > 0 && hit.t <= _mm512_reduce_min_ps(tOut) && outside == 0;
+}
+
+#elif defined(__AVX2__) && defined(__FMA__)
 
 namespace {
 
@@ -146,6 +251,85 @@ bool ConvexIntersector::enter(const Vec3f& o, const Vec3f& d, SurfaceHit& hit) c
         if (den < 0 && t > hit.t) hit = {t, uint32_t(i)};
     }
     return hit.t > 0 && hit.t <= exitT;
+}
+
+#endif
+
+void ConvexBeamEntry::Planes::add(float a_, const Vec3f& m, uint32_t f) {
+    a.push_back(a_);
+    mx.push_back(m.x);
+    my.push_back(m.y);
+    mz.push_back(m.z);
+    facet.push_back(f);
+}
+
+void ConvexBeamEntry::Planes::pad(float a_) {
+    while (a.empty() || a.size() % ConvexIntersector::kWidth) add(a_, {}, 0);
+}
+
+ConvexBeamEntry::ConvexBeamEntry(const Stone& stone, const Vec3f& dir) {
+    if (!stone.convex)
+        throw Error("the convex intersector needs a convex stone; '" + stone.name + "' is not");
+    for (size_t i = 0; i < stone.facets.size(); ++i) {
+        const Facet& f = stone.facets[i];
+        const Vec3f n(f.normal);
+        const float den = dot(dir, n), offset = float(f.offset);
+        if (den == 0) {
+            parallelNormal_.push_back(n);
+            parallelOffset_.push_back(offset);
+        } else {
+            (den < 0 ? in_ : out_).add(offset / den, n * (1 / den), uint32_t(i));
+        }
+    }
+    in_.pad(-kInf);
+    out_.pad(kInf);
+}
+
+#if defined(__AVX512F__)
+
+bool ConvexBeamEntry::enter(const Vec3f& o, SurfaceHit& hit) const {
+    const __m512 ox = _mm512_set1_ps(o.x), oy = _mm512_set1_ps(o.y), oz = _mm512_set1_ps(o.z);
+    auto t = [&](const Planes& p, size_t i) {
+        return _mm512_sub_ps(_mm512_loadu_ps(&p.a[i]),
+                             _mm512_fmadd_ps(ox, _mm512_loadu_ps(&p.mx[i]),
+                                             _mm512_fmadd_ps(oy, _mm512_loadu_ps(&p.my[i]),
+                                                             _mm512_mul_ps(oz, _mm512_loadu_ps(&p.mz[i])))));
+    };
+    __m512 tIn = _mm512_set1_ps(-kInf);
+    __m512i inIdx = _mm512_setzero_si512();
+    for (size_t i = 0; i < in_.a.size(); i += ConvexIntersector::kWidth) {
+        const __m512 ti = t(in_, i);
+        const __mmask16 better = _mm512_cmp_ps_mask(ti, tIn, _CMP_GT_OQ);
+        tIn = _mm512_mask_mov_ps(tIn, better, ti);
+        inIdx = _mm512_mask_loadu_epi32(inIdx, better, &in_.facet[i]);
+    }
+    __m512 tOut = _mm512_set1_ps(kInf);
+    for (size_t i = 0; i < out_.a.size(); i += ConvexIntersector::kWidth)
+        tOut = _mm512_min_ps(tOut, t(out_, i));
+    hit = reduce<false>(tIn, inIdx);
+    if (!(hit.t > 0) || _mm512_cmp_ps_mask(tOut, _mm512_set1_ps(hit.t), _CMP_LT_OQ)) return false;
+    for (size_t i = 0; i < parallelOffset_.size(); ++i) {
+        if (dot(o, parallelNormal_[i]) > parallelOffset_[i]) return false;
+    }
+    return true;
+}
+
+#else
+
+bool ConvexBeamEntry::enter(const Vec3f& o, SurfaceHit& hit) const {
+    hit = {-kInf, 0};
+    float exitT = kInf;
+    for (size_t i = 0; i < in_.a.size(); ++i) {
+        const float t = in_.a[i] - (o.x * in_.mx[i] + o.y * in_.my[i] + o.z * in_.mz[i]);
+        if (t > hit.t) hit = {t, in_.facet[i]};
+    }
+    for (size_t i = 0; i < out_.a.size(); ++i)
+        exitT = std::fmin(exitT, out_.a[i] - (o.x * out_.mx[i] + o.y * out_.my[i] + o.z * out_.mz[i]));
+    if (!(hit.t > 0 && hit.t <= exitT)) return false;
+    for (size_t i = 0; i < parallelOffset_.size(); ++i) {
+        if (dot(o, parallelNormal_[i]) > parallelOffset_[i]) return false;
+    }
+    return true;
 }
 
 #endif

@@ -48,6 +48,17 @@ json histogramJson(const std::array<uint64_t, kHistogramBins>& h) {
 
 }  // namespace
 
+ExitAngleBins::ExitAngleBins() {
+    for (int k = 0; k <= kHistogramBins; ++k) bound_[k] = float(std::cos(radians(k)));
+    bound_[kHistogramBins] = bound_[kHistogramBins + 1] = -2;
+    for (int j = 0; j < kGuesses; ++j) {
+        const double top = std::min(1.0, -1 + 2.0 * (j + 1) / kGuesses);
+        int bin = 0;
+        while (bin + 1 < kHistogramBins && top <= double(bound_[bin + 1])) ++bin;
+        guess_[j] = uint8_t(bin);
+    }
+}
+
 void FacetStats::merge(const FacetStats& o) {
     if (o.facets.size() != facets.size()) throw Error("cannot merge statistics of different stones");
     photons += o.photons;

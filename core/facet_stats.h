@@ -1,6 +1,7 @@
 #pragma once
 // What a trace counts, kept in integers (weighted sums in fixed point) so that adding per-thread or per-rank
 // tallies in any order gives the same bits; and its report as JSON (docs/stats-schema.md) and CSV.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <ostream>
@@ -28,6 +29,26 @@ constexpr int kConeCount = 3;
 constexpr std::array<double, kConeCount> kConeDegrees{30, 45, 60};
 // Fixed-point scale of the cosine weights: 1e10 photons of weight 1 still fit in 64 bits.
 constexpr double kWeightScale = 1073741824.0;  // 2^30
+
+// The histogram bin of an exit at cos(angle to the vertical) = cosUp: floor(angle in degrees), at most 179.
+// Without acos: a table over cosUp gives the bin within two of the answer, and comparisons with the bin
+// boundaries cos(k degrees) finish it.
+class ExitAngleBins {
+  public:
+    ExitAngleBins();
+    int operator()(float cosUp) const {
+        const float x = std::clamp(cosUp, -1.0f, 1.0f);
+        int bin = guess_[std::min(kGuesses - 1, int((x + 1) * (kGuesses / 2)))];
+        bin += x <= bound_[bin + 1];
+        bin += x <= bound_[bin + 1];
+        return bin;
+    }
+
+  private:
+    static constexpr int kGuesses = 8192;
+    std::array<float, kHistogramBins + 2> bound_;  // cos(k degrees); -2 past the last bin so it never grows
+    std::array<uint8_t, kGuesses> guess_;          // the bin at the top of each of kGuesses slices of cosUp
+};
 
 struct alignas(64) FacetStats {
     explicit FacetStats(size_t facetCount = 0) : facets(facetCount) {}

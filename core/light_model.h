@@ -26,6 +26,9 @@ class LightModel {
     // Collimated: the radius of the disc the photons cross, so each of N photons carries pi r^2 / N of a unit
     // beam irradiance (the renderer's photon power).
     double discRadius() const { return discRadius_; }
+    // Collimated: the one direction every photon travels in.
+    bool collimated() const { return kind_ == LightModelKind::Collimated; }
+    Vec3 direction() const { return dir_; }
 
   private:
     LightModelKind kind_;

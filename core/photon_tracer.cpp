@@ -12,17 +12,6 @@
 
 namespace facetlight {
 
-FresnelResult fresnel(float cosI, float eta) {
-    const float sin2T = eta * eta * std::max(0.0f, 1 - cosI * cosI);
-    if (sin2T >= 1) return {true, 1.0f, 0.0f};
-    const float cosT = std::sqrt(1 - sin2T);
-    // Rs and Rp of docs/optics.md with numerator and denominator divided by n2, over one common denominator.
-    const float sNum = eta * cosI - cosT, sDen = eta * cosI + cosT;
-    const float pNum = eta * cosT - cosI, pDen = eta * cosT + cosI;
-    const float r = (sNum * sNum * pDen * pDen + pNum * pNum * sDen * sDen) / (2 * sDen * sDen * pDen * pDen);
-    return {false, r, cosT};
-}
-
 TraceScene::TraceScene(const Stone& stone, const TraceSettings& settings)
     : stone_(stone),
       settings_(settings),
@@ -48,8 +37,20 @@ TraceScene::TraceScene(const Stone& stone, const TraceSettings& settings)
         if (!stone.convex)
             throw Error("intersector 'convex' needs a convex stone; '" + stone.name + "' is not");
         convex_ = std::make_unique<ConvexIntersector>(stone);
+        if (light_.collimated()) beam_ = std::make_unique<ConvexBeamEntry>(stone, Vec3f(light_.direction()));
     } else {
         embree_ = std::make_unique<EmbreeIntersector>(stone);
+    }
+    if (light_.collimated() && !perPhotonIndex()) {
+        // The same float operations as PhotonWalker::walk, so a photon's fate is bit for bit the same.
+        const Vec3f d(light_.direction());
+        const float eta = 1.0f / fixedIndex_;
+        for (const Vec3f& normal : normal_) {
+            const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
+            const FresnelResult fr = fresnel(cosI, eta);
+            fixedEntry_.push_back({fr.reflectance, d + normal * (2 * cosI),
+                                   normalize(d * eta + normal * (eta * cosI - fr.cosT))});
+        }
     }
 }
 
@@ -58,44 +59,122 @@ TraceScene::~TraceScene() = default;
 // The walk of one photon, written once and specialised by intersector (no virtual call per ray) and by what
 // is recorded (a tally for statistics, a path for the renderer).
 class PhotonWalker {
+    struct Tally;
+
   public:
+    // A photon inside the stone, between two interactions.
+    struct Photon {
+        Rng rng{0, 0};
+        Vec3f p, d;
+        float n = 0;
+        uint32_t bounces = 0;
+    };
+
+    // Draws photon `index` and takes it to the stone; true when it is inside and has to be stepped on.
     template <class Intersector, class Visitor>
-    static void walk(const TraceScene& s, const Intersector& isect, uint64_t index, Visitor& visit) {
-        Rng rng(s.settings_.seed, index);
-        const LightRay ray = s.light_.sample(rng);
-        float wavelength = float(Material::kSodiumD), n = s.fixedIndex_;
-        if (s.settings_.dispersion && s.material_.dispersive()) {
-            wavelength = 380.0f + 400.0f * rng.uniform();
-            n = float(s.material_.index(wavelength));
+    static bool start(const TraceScene& s, const Intersector& isect, uint64_t index, Visitor& visit,
+                      Photon& ph) {
+        ph.rng = Rng(s.settings_.seed, index);
+        ph.bounces = 0;
+        const LightRay ray = s.light_.sample(ph.rng);
+        float wavelength = float(Material::kSodiumD);
+        ph.n = s.fixedIndex_;
+        if (s.perPhotonIndex()) {
+            wavelength = 380.0f + 400.0f * ph.rng.uniform();
+            ph.n = float(s.material_.index(wavelength));
         }
         visit.wavelength(wavelength);
 
         Vec3f d(ray.direction), p(ray.origin);
         SurfaceHit hit;
-        if (!isect.enter(p, d, hit)) return visit.missed();
+        if (!(s.beam_ ? s.beam_->enter(p, hit) : isect.enter(p, d, hit))) {
+            visit.missed();
+            return false;
+        }
         p = p + d * hit.t;
-        Vec3f normal = s.normal_[hit.facet];
-        float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
-        const float eta = 1.0f / n;
-        FresnelResult fr = fresnel(cosI, eta);
-        if (rng.uniform() < fr.reflectance) {
-            return visit.reflectedAtEntry(hit.facet, p, d + normal * (2 * cosI));
+        if (!s.fixedEntry_.empty()) {
+            const TraceScene::FixedEntry& e = s.fixedEntry_[hit.facet];
+            if (ph.rng.uniform() < e.reflectance) {
+                visit.reflectedAtEntry(hit.facet, p, e.reflected);
+                return false;
+            }
+            d = e.refracted;
+        } else {
+            const Vec3f normal = s.normal_[hit.facet];
+            const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
+            const float eta = 1.0f / ph.n;
+            const FresnelResult fr = fresnel(cosI, eta);
+            if (ph.rng.uniform() < fr.reflectance) {
+                visit.reflectedAtEntry(hit.facet, p, d + normal * (2 * cosI));
+                return false;
+            }
+            d = normalize(d * eta + normal * (eta * cosI - fr.cosT));
         }
         visit.entered(hit.facet);
-        d = normalize(d * eta + normal * (eta * cosI - fr.cosT));
+        ph.p = p;
+        ph.d = d;
+        return true;
+    }
 
-        for (uint32_t bounces = 0;;) {
-            if (!isect.leave(p, d, hit)) return visit.lost(bounces);
-            p = p + d * hit.t;
-            normal = s.normal_[hit.facet];
-            cosI = std::clamp(dot(d, normal), 0.0f, 1.0f);
-            fr = fresnel(cosI, n);
-            if (!fr.totalInternal && rng.uniform() >= fr.reflectance) {
-                return visit.exited(hit.facet, p, normalize(d * n - normal * (n * cosI - fr.cosT)), bounces);
+    // The photon's next interaction inside; true while it stays inside.
+    template <class Intersector, class Visitor>
+    static bool step(const TraceScene& s, const Intersector& isect, Visitor& visit, Photon& ph) {
+        SurfaceHit hit;
+        if (!isect.leave(ph.p, ph.d, hit)) {
+            visit.lost(ph.bounces);
+            return false;
+        }
+        const Vec3f p = ph.p + ph.d * hit.t, d = ph.d;
+        const Vec3f normal = s.normal_[hit.facet];
+        const float cosI = std::clamp(dot(d, normal), 0.0f, 1.0f), n = ph.n;
+        const FresnelResult fr = fresnel(cosI, n);
+        if (!fr.totalInternal && ph.rng.uniform() >= fr.reflectance) {
+            visit.exited(hit.facet, p, normalize(d * n - normal * (n * cosI - fr.cosT)), ph.bounces);
+            return false;
+        }
+        ph.p = p;
+        ph.d = d - normal * (2 * cosI);
+        visit.internalReflection(hit.facet);
+        if (++ph.bounces >= uint32_t(s.settings_.maxBounces)) {
+            visit.trapped(ph.bounces);
+            return false;
+        }
+        return true;
+    }
+
+    template <class Intersector, class Visitor>
+    static void walk(const TraceScene& s, const Intersector& isect, uint64_t index, Visitor& visit) {
+        Photon ph;
+        if (start(s, isect, index, visit, ph)) {
+            while (step(s, isect, visit, ph)) {
             }
-            d = d - normal * (2 * cosI);
-            visit.internalReflection(hit.facet);
-            if (++bounces >= uint32_t(s.settings_.maxBounces)) return visit.trapped(bounces);
+        }
+    }
+
+    // Photons [begin, end) with a few in flight at once: their interactions are independent chains of
+    // dependent operations, which the core overlaps. Each photon takes exactly the steps walk() takes.
+    template <class Intersector>
+    static void interleave(const TraceScene& s, const Intersector& isect, uint64_t begin, uint64_t end,
+                           Tally& t) {
+        constexpr int kLanes = 4;
+        Photon lane[kLanes];
+        bool live[kLanes];
+        uint64_t next = begin;
+        auto refill = [&](int k) {
+            live[k] = false;
+            while (!live[k] && next < end) live[k] = start(s, isect, next++, t, lane[k]);
+        };
+        int active = 0;
+        for (int k = 0; k < kLanes; ++k) {
+            refill(k);
+            active += live[k];
+        }
+        while (active > 0) {
+            for (int k = 0; k < kLanes; ++k) {
+                if (!live[k] || step(s, isect, t, lane[k])) continue;
+                refill(k);
+                active -= !live[k];
+            }
         }
     }
 
@@ -103,7 +182,7 @@ class PhotonWalker {
     static void tally(const TraceScene& s, uint64_t begin, uint64_t end, FacetStats& stats) {
         Tally t{s, stats};
         if (s.convex_) {
-            for (uint64_t i = begin; i < end; ++i) walk(s, *s.convex_, i, t);
+            interleave(s, *s.convex_, begin, end, t);
         } else {
             for (uint64_t i = begin; i < end; ++i) walk(s, *s.embree_, i, t);
         }
@@ -147,7 +226,7 @@ class PhotonWalker {
             ++st.exited;
             ++st.facets[facet].leaving;
             const float cosUp = std::clamp(dot(dir, s.up_), -1.0f, 1.0f);
-            const int bin = std::min(kHistogramBins - 1, int(std::acos(cosUp) * float(180 / kPi)));
+            const int bin = s.exitBin_(cosUp);
             const bool crown = crownSide(facet);
             ++st.histogram[0][bin];
             ++st.histogram[crown ? 1 : 2][bin];

@@ -3,9 +3,12 @@
 // out through its facets, counted in FacetStats. Photon i draws its random numbers from Rng(seed, i) only
 // and the tallies are integers, so a trace gives the same bits for any thread count, and a distributed run
 // that splits the blocks among ranks and merges their tallies reproduces a local one exactly.
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "facet_stats.h"
 #include "light_model.h"
@@ -16,6 +19,7 @@
 
 namespace facetlight {
 
+class ConvexBeamEntry;
 class ConvexIntersector;
 class EmbreeIntersector;
 
@@ -32,7 +36,16 @@ struct FresnelResult {
     float reflectance = 1;  // 1 under total internal reflection
     float cosT = 0;         // cos of the refraction angle
 };
-FresnelResult fresnel(float cosI, float eta);
+inline FresnelResult fresnel(float cosI, float eta) {
+    const float sin2T = eta * eta * std::max(0.0f, 1 - cosI * cosI);
+    if (sin2T >= 1) return {true, 1.0f, 0.0f};
+    const float cosT = std::sqrt(1 - sin2T);
+    // Rs and Rp of docs/optics.md with numerator and denominator divided by n2, over one common denominator.
+    const float sNum = eta * cosI - cosT, sDen = eta * cosI + cosT;
+    const float pNum = eta * cosT - cosI, pDen = eta * cosT + cosI;
+    const float r = (sNum * sNum * pDen * pDen + pNum * pNum * sDen * sDen) / (2 * sDen * sDen * pDen * pDen);
+    return {false, r, cosT};
+}
 
 // Everything a photon needs, prepared once per trace: the stone's intersector, the light, the material.
 class TraceScene {
@@ -48,6 +61,8 @@ class TraceScene {
 
   private:
     friend class PhotonWalker;
+    // Dispersion gives each photon its own wavelength and index.
+    bool perPhotonIndex() const { return settings_.dispersion && material_.dispersive(); }
     const Stone& stone_;
     TraceSettings settings_;
     Material material_;
@@ -58,8 +73,18 @@ class TraceScene {
     Vec3f up_;             // the viewer's vertical in the stone's frame (tilt undone)
     float cosHeadShadow_;  // exits closer to vertical than this are hidden by the head (2: no cone)
     std::array<float, kConeCount> cosCone_;
+    ExitAngleBins exitBin_;
     std::unique_ptr<ConvexIntersector> convex_;
     std::unique_ptr<EmbreeIntersector> embree_;
+    // Collimated light on a convex stone: the entry search with its divisions done once.
+    std::unique_ptr<ConvexBeamEntry> beam_;
+    // Collimated light at one index of refraction: every photon entering through facet f meets it at the
+    // same angle, so its Fresnel reflectance and both directions are worked out once per facet.
+    struct FixedEntry {
+        float reflectance;
+        Vec3f reflected, refracted;
+    };
+    std::vector<FixedEntry> fixedEntry_;
 };
 
 // One photon's fate, for the renderer and photon maps that reuse the tracer.

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <sstream>
 
+#include "convex_intersector.h"
 #include "error.h"
 #include "halfspace.h"
 #include "material.h"
+#include "random.h"
 #include "stone.h"
 
 using namespace facetlight;
@@ -251,6 +253,46 @@ TEST(PhotonTracer, CollimatedStraightDownHitsAlmostEveryPhoton) {
     // The disc circumscribes the octagonal girdle: cos(22.5 deg)^2 * (8 tan(22.5) / pi) of it is stone.
     const double octagonShare = 8 * std::tan(radians(22.5)) * std::pow(std::cos(radians(22.5)), 2) / kPi;
     EXPECT_NEAR(double(r.stats.hit) / double(r.stats.photons), octagonShare, 0.01);
+}
+
+TEST(ExitAngleBins, MatchAcosExceptAtBinBoundaries) {
+    const ExitAngleBins bin;
+    EXPECT_EQ(bin(1.0f), 0);
+    EXPECT_EQ(bin(-1.0f), kHistogramBins - 1);
+    EXPECT_EQ(bin(0.0f), 90);
+    EXPECT_EQ(bin(1.5f), 0);  // rounding past 1 clamps
+    int checked = 0;
+    for (int i = 0; i <= 400'000; ++i) {
+        const float c = -1.0f + 2.0f * float(i) / 400'000;
+        const double deg = std::acos(double(c)) * 180 / kPi;
+        if (std::abs(deg - std::round(deg)) < 1e-4) continue;  // float cosines of k degrees decide these
+        ASSERT_EQ(bin(c), std::min(kHistogramBins - 1, int(deg))) << c;
+        ++checked;
+    }
+    EXPECT_GT(checked, 399'000);
+}
+
+TEST(ConvexBeamEntry, AgreesWithTheGeneralEntrySearch) {
+    const Stone stone = singleCut();  // its girdle flats are parallel to vertical light
+    const ConvexIntersector general(stone);
+    for (const Vec3f dir : {Vec3f(0, 0, -1), Vec3f(Vec3{normalize(Vec3{0.3, -0.2, -1})})}) {
+        const ConvexBeamEntry beam(stone, dir);
+        Rng rng(1, 2);
+        int hits = 0, disagree = 0;
+        for (int i = 0; i < 20'000; ++i) {
+            const Vec3f o =
+                Vec3f(1.2f * rng.uniform() - 0.6f, 1.2f * rng.uniform() - 0.6f, 0.5f) - dir * 0.5f;
+            SurfaceHit a, b;
+            const bool ha = general.enter(o, dir, a), hb = beam.enter(o, b);
+            disagree += ha != hb;
+            if (!ha || !hb) continue;
+            ++hits;
+            EXPECT_NEAR(a.t, b.t, 1e-5);
+            disagree += a.facet != b.facet;
+        }
+        EXPECT_GT(hits, 10'000);
+        EXPECT_LE(disagree, 2);  // only rays grazing an edge may differ by a rounding error
+    }
 }
 
 TEST(PhotonTracer, CancelStopsBeforeTheEnd) {
