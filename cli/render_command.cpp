@@ -38,7 +38,7 @@ void run(RenderOptions& o) {
     const Stone stone = resolveStone(o.trace.mesh);
 
     StudyControl control;
-    // Under mpirun the ranks split the trace and rank 0 alone renders and writes (docs/distributed.md).
+    // Under mpirun the ranks split the photons and the tiles; rank 0 writes (docs/distributed.md).
     Communicator& comm = processCommunicator();
     StudyResult result;
     const auto start = std::chrono::steady_clock::now();

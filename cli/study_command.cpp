@@ -62,11 +62,11 @@ void runStudyCommand(const StudyOptions& options) {
     const fs::path out(options.out);
     // stats.json last: its presence tells the launcher the folder is complete.
     writeFile(out / "stats.csv", result.statsCsv);
-    if (settings.render) {
-        writeFile(out / "render.png", result.renderPng);
-        writeFile(out / "heatmap.png", result.heatmapPng);
-        writeFile(out / "angular.png", result.angularPng);
-    }
+    // A trace-only study still has its heat-map; the render and the angular plot come with a render.
+    for (const auto& [name, bytes] : {std::pair{"render.png", &result.renderPng},
+                                      std::pair{"heatmap.png", &result.heatmapPng},
+                                      std::pair{"angular.png", &result.angularPng}})
+        if (!bytes->empty()) writeFile(out / name, *bytes);
     writeFile(out / "stats.json", result.stats.dump(2));
 }
 

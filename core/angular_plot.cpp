@@ -23,6 +23,18 @@ void AngularHistogram::merge(const AngularHistogram& o) {
     total += o.total;
 }
 
+std::vector<uint64_t> AngularHistogram::tallies() const {
+    std::vector<uint64_t> out(counts);
+    out.push_back(total);
+    return out;
+}
+
+void AngularHistogram::setTallies(const std::vector<uint64_t>& values) {
+    if (values.size() != counts.size() + 1) throw Error("angular histogram tallies of the wrong length");
+    std::copy(values.begin(), values.end() - 1, counts.begin());
+    total = values.back();
+}
+
 Image angularPlot(const AngularHistogram& h, const std::string& subtitle) {
     constexpr int kWidth = 720, kHeight = 860;
     constexpr double kRadius = 290, cx = kWidth / 2.0, cy = 400;

@@ -19,6 +19,10 @@ struct AngularHistogram {
     // `dir` is a unit vector in the world frame (+z up).
     void add(const Vec3& dir);
     void merge(const AngularHistogram& other);
+    // The counts and then the total, flat, for summing across processes; setTallies throws Error on a
+    // vector of another length.
+    std::vector<uint64_t> tallies() const;
+    void setTallies(const std::vector<uint64_t>& values);
     uint64_t count(int theta, int phi) const { return counts[size_t(theta) * kPhiBins + phi]; }
 };
 

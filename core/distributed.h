@@ -39,6 +39,9 @@ class SerialCommunicator final : public Communicator {
     std::vector<std::string> allGather(std::string_view bytes) override { return {std::string(bytes)}; }
 };
 
+// Whether `flag` is true on any rank, on every rank (a collective: every rank must call it).
+bool anyRank(Communicator& comm, bool flag);
+
 // Part `rank` of [0, count) cut into `size` contiguous parts whose lengths differ by at most one.
 struct IndexRange {
     uint64_t begin = 0, end = 0;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "angular_plot.h"
+#include "distributed.h"
 #include "photon.h"
 #include "photon_tracer.h"
 #include "scene.h"
@@ -16,7 +17,7 @@ namespace facetlight {
 struct FloorPhotons {
     std::vector<Photon> caustic;  // in photon-index order, whatever the thread count
     AngularHistogram crownExits;  // world directions of photons refracted out of table and crown
-    uint64_t traced = 0;
+    uint64_t traced = 0;          // photons of the range traced (of the whole job after a distributed pass)
     bool cancelled = false;
 };
 
@@ -24,6 +25,20 @@ struct FloorPhotons {
 // scene.photonPower(count) and their wavelength when the scene is dispersive (else none: white light).
 FloorPhotons traceFloorPhotons(const Scene& scene, const TraceScene& trace, uint64_t count, int threads,
                                std::atomic<uint64_t>* photonsDone = nullptr,
+                               const std::atomic<bool>* cancel = nullptr);
+// The same for blocks [firstBlock, lastBlock) of a job of `count` photons only (clipped to it): the caustic
+// photons of consecutive block ranges, appended in range order, are those of the whole job.
+FloorPhotons traceFloorPhotons(const Scene& scene, const TraceScene& trace, uint64_t count,
+                               uint64_t firstBlock, uint64_t lastBlock, int threads,
+                               std::atomic<uint64_t>* photonsDone = nullptr,
+                               const std::atomic<bool>* cancel = nullptr);
+
+// The photon pass spread over the ranks of `comm` (docs/distributed.md): each rank traces the blocks of
+// partition(blockCount(count), rank, size), and every rank receives all caustic photons in photon-index
+// order (the single-process map, bit for bit). The angular histogram is summed on rank 0 only; `cancelled`
+// is true on every rank when any rank was cancelled. photonsDone counts this rank's photons.
+FloorPhotons traceFloorPhotons(Communicator& comm, const Scene& scene, const TraceScene& trace,
+                               uint64_t count, int threads, std::atomic<uint64_t>* photonsDone = nullptr,
                                const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace facetlight

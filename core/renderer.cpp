@@ -152,11 +152,71 @@ class SampleTracer {
     Rng& rng_;
 };
 
+struct TileRect {
+    int x0, y0, x1, y1;
+};
+
+int tileCount(int width, int height) {
+    return ((width + kTile - 1) / kTile) * ((height + kTile - 1) / kTile);
+}
+
+// Tiles of the share: offset, offset + stride, ...
+int shareTileCount(int tiles, TileShare share) {
+    return tiles > share.offset ? (tiles - share.offset + share.stride - 1) / share.stride : 0;
+}
+
+TileRect tileRect(int tile, int width, int height) {
+    const int tilesX = (width + kTile - 1) / kTile;
+    const int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
+    return {x0, y0, std::min(x0 + kTile, width), std::min(y0 + kTile, height)};
+}
+
+void checkShare(TileShare share) {
+    if (share.stride < 1 || share.offset < 0 || share.offset >= share.stride)
+        throw Error("tile share " + std::to_string(share.offset) + " of " + std::to_string(share.stride) +
+                    " is not a valid share");
+}
+
+// Calls f(index) for every pixel of the share, tile by tile in tile order, row by row within a tile.
+template <class F>
+void forEachSharePixel(int width, int height, TileShare share, F&& f) {
+    const int tiles = tileCount(width, height);
+    for (int tile = share.offset; tile < tiles; tile += share.stride) {
+        const TileRect t = tileRect(tile, width, height);
+        for (int y = t.y0; y < t.y1; ++y) {
+            for (int x = t.x0; x < t.x1; ++x) f(size_t(y) * size_t(width) + size_t(x));
+        }
+    }
+}
+
 }  // namespace
 
+uint64_t sharePixelCount(int width, int height, TileShare share) {
+    checkShare(share);
+    uint64_t n = 0;
+    forEachSharePixel(width, height, share, [&](size_t) { ++n; });
+    return n;
+}
+
+std::vector<Vec3> sharePixels(const RenderedImage& image, TileShare share) {
+    std::vector<Vec3> out;
+    out.reserve(sharePixelCount(image.width, image.height, share));
+    forEachSharePixel(image.width, image.height, share, [&](size_t i) { out.push_back(image.pixels[i]); });
+    return out;
+}
+
+void placeSharePixels(RenderedImage& image, TileShare share, std::span<const Vec3> pixels) {
+    if (pixels.size() != sharePixelCount(image.width, image.height, share))
+        throw Error("a rank sent " + std::to_string(pixels.size()) + " pixels for its tiles, not " +
+                    std::to_string(sharePixelCount(image.width, image.height, share)));
+    size_t next = 0;
+    forEachSharePixel(image.width, image.height, share, [&](size_t i) { image.pixels[i] = pixels[next++]; });
+}
+
 RenderedImage render(const Scene& scene, const PhotonMap& caustics, const RenderSettings& settings,
-                     int threads, uint64_t seed, const RenderControl& control) {
+                     int threads, uint64_t seed, const RenderControl& control, TileShare share) {
     settings.validate();
+    checkShare(share);
     const Vec3 target = scene.toWorld(scene.center());
     const Camera camera(settings.camera, target, scene.diameter(), settings.width, settings.height);
     GatherSettings gather;
@@ -174,9 +234,8 @@ RenderedImage render(const Scene& scene, const PhotonMap& caustics, const Render
     image.width = settings.width;
     image.height = settings.height;
     image.pixels.assign(size_t(settings.width) * size_t(settings.height), Vec3{});
-    const int tilesX = (settings.width + kTile - 1) / kTile, tilesY = (settings.height + kTile - 1) / kTile;
-    const int tiles = tilesX * tilesY;
-    const int workers = std::clamp(threads, 1, tiles);
+    const int tiles = shareTileCount(tileCount(settings.width, settings.height), share);
+    const int workers = std::clamp(threads, 1, std::max(tiles, 1));
     const Vec3 eye = scene.toStone(camera.position());
     const double fixedIndex = scene.index(Material::kSodiumD);
     std::atomic<int> nextTile{0}, tilesDone{0};
@@ -188,10 +247,10 @@ RenderedImage render(const Scene& scene, const PhotonMap& caustics, const Render
         for (;;) {
             if (abort.load(std::memory_order_relaxed)) return;
             if (control.cancel && control.cancel->load(std::memory_order_relaxed)) return;
-            const int tile = nextTile.fetch_add(1, std::memory_order_relaxed);
-            if (tile >= tiles) return;
-            const int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
-            const int x1 = std::min(x0 + kTile, settings.width), y1 = std::min(y0 + kTile, settings.height);
+            const int k = nextTile.fetch_add(1, std::memory_order_relaxed);
+            if (k >= tiles) return;
+            const auto [x0, y0, x1, y1] =
+                tileRect(share.offset + k * share.stride, settings.width, settings.height);
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
                     const uint64_t index = uint64_t(y) * uint64_t(settings.width) + uint64_t(x);
@@ -229,6 +288,24 @@ RenderedImage render(const Scene& scene, const PhotonMap& caustics, const Render
     work(*state[0]);
     for (std::thread& th : pool) th.join();
     image.cancelled = tilesDone.load() != tiles;
+    return image;
+}
+
+RenderedImage render(Communicator& comm, const Scene& scene, const PhotonMap& caustics,
+                     const RenderSettings& settings, int threads, uint64_t seed,
+                     const RenderControl& control) {
+    const TileShare mine{comm.rank(), comm.size()};
+    RenderedImage image = render(scene, caustics, settings, threads, seed, control, mine);
+    image.cancelled = anyRank(comm, image.cancelled);
+    if (comm.size() == 1 || image.cancelled) return image;
+    // Rank 0's own tiles are in place already.
+    const std::vector<Vec3> pixels = comm.isRoot() ? std::vector<Vec3>{} : sharePixels(image, mine);
+    const std::vector<std::string> parts = comm.gather(asBytes(std::span<const Vec3>(pixels)));
+    for (int r = 1; r < int(parts.size()); ++r) {
+        std::vector<Vec3> theirs;
+        appendFromBytes(parts[r], theirs);
+        placeSharePixels(image, {r, comm.size()}, theirs);
+    }
     return image;
 }
 

@@ -7,9 +7,11 @@
 // so the image is the same bits for any thread count.
 #include <atomic>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "camera.h"
+#include "distributed.h"
 #include "geometry.h"
 #include "image.h"
 #include "photon_map.h"
@@ -30,9 +32,31 @@ struct RenderedImage {
     bool cancelled = false;
 };
 
-// The caustic map may be empty (no photon reached the floor). Throws Error on bad settings.
+// The tiles a render covers: tile t (16 x 16 pixels, numbered row by row from the top left) when
+// t % stride == offset. Rank r of R renders {r, R}: dealt round-robin, the costly tiles over the stone spread
+// evenly across the ranks.
+struct TileShare {
+    int offset = 0, stride = 1;
+};
+
+// The caustic map may be empty (no photon reached the floor). Pixels outside `share` stay zero. Throws Error
+// on bad settings.
 RenderedImage render(const Scene& scene, const PhotonMap& caustics, const RenderSettings& settings,
-                     int threads, uint64_t seed, const RenderControl& control = {});
+                     int threads, uint64_t seed, const RenderControl& control = {}, TileShare share = {});
+
+// The render spread over the ranks of `comm` (docs/distributed.md): each rank renders its TileShare and
+// rank 0 receives the whole image, the single-process one bit for bit; the other ranks keep their own tiles.
+// `cancelled` is true on every rank when any rank was cancelled. control.pixelsDone counts this rank's
+// pixels.
+RenderedImage render(Communicator& comm, const Scene& scene, const PhotonMap& caustics,
+                     const RenderSettings& settings, int threads, uint64_t seed,
+                     const RenderControl& control = {});
+
+// The pixels of a share: how many, and their values tile by tile in tile order (row by row within a tile),
+// taken from or put back into a full-size image.
+uint64_t sharePixelCount(int width, int height, TileShare share);
+std::vector<Vec3> sharePixels(const RenderedImage& image, TileShare share);
+void placeSharePixels(RenderedImage& image, TileShare share, std::span<const Vec3> pixels);
 
 // The display image: exposure, a soft shoulder for highlights, the sRGB curve.
 Image toDisplay(const RenderedImage& image);

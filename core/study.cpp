@@ -84,13 +84,15 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyCon
         ProgressMirror mirror(control, traceControl.photonsDone, traceControl.cancel);
         traced = traceDistributed(comm, stone, settings.trace, &traceControl);
     }
-    if (traced.cancelled || control.cancel.load()) throw Canceled();
-    if (!comm.isRoot()) return result;
-    result.stats = statsToJson(traced.stats, stone, settings.trace, traced.timing);
-    std::ostringstream csv;
-    writeFacetCsv(csv, traced.stats, stone);
-    result.statsCsv = csv.str();
-    result.heatmapPng = encodePng(facetHeatmap(stone, traced.stats));
+    // Every rank takes the same way out, so none is left waiting in a collective.
+    if (anyRank(comm, traced.cancelled || control.cancel.load())) throw Canceled();
+    if (comm.isRoot()) {
+        result.stats = statsToJson(traced.stats, stone, settings.trace, traced.timing);
+        std::ostringstream csv;
+        writeFacetCsv(csv, traced.stats, stone);
+        result.statsCsv = csv.str();
+        result.heatmapPng = encodePng(facetHeatmap(stone, traced.stats));
+    }
 
     if (!settings.render) {
         enterPhase(control, StudyPhase::Done, 0);
@@ -100,30 +102,36 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyCon
     const Scene scene(stone, settings.trace);
     const TraceScene traceScene(stone, settings.trace);
 
-    enterPhase(control, StudyPhase::PhotonMap, r.mapPhotons);
+    // Every rank traces its share of the map photons and builds the whole map (docs/distributed.md).
+    enterPhase(control, StudyPhase::PhotonMap, localPhotons(comm, r.mapPhotons));
     FloorPhotons photons;
     {
         std::atomic<uint64_t> done{0};
         std::atomic<bool> cancel{false};
         ProgressMirror mirror(control, done, cancel);
-        photons = traceFloorPhotons(scene, traceScene, r.mapPhotons, threads, &done, &cancel);
+        photons = traceFloorPhotons(comm, scene, traceScene, r.mapPhotons, threads, &done, &cancel);
     }
     if (photons.cancelled || control.cancel.load()) throw Canceled();
     const PhotonMap caustics(std::move(photons.caustic), threads);
-    result.angularPng = encodePng(angularPlot(
-        photons.crownExits, std::to_string(photons.crownExits.total) + " of " + std::to_string(r.mapPhotons) +
-                                " photons (" + std::string(lightModelName(settings.trace.light.model)) +
-                                " light), refracted out of table and crown"));
+    if (comm.isRoot()) {
+        result.angularPng = encodePng(
+            angularPlot(photons.crownExits, std::to_string(photons.crownExits.total) + " of " +
+                                                std::to_string(r.mapPhotons) + " photons (" +
+                                                std::string(lightModelName(settings.trace.light.model)) +
+                                                " light), refracted out of table and crown"));
+    }
 
-    enterPhase(control, StudyPhase::Rendering, uint64_t(r.width) * uint64_t(r.height));
+    enterPhase(control, StudyPhase::Rendering,
+               sharePixelCount(r.width, r.height, {comm.rank(), comm.size()}));
     RenderedImage image;
     {
         std::atomic<uint64_t> done{0};
         std::atomic<bool> cancel{false};
         ProgressMirror mirror(control, done, cancel);
-        image = render(scene, caustics, r, threads, settings.trace.seed, {&done, &cancel});
+        image = render(comm, scene, caustics, r, threads, settings.trace.seed, {&done, &cancel});
     }
     if (image.cancelled || control.cancel.load()) throw Canceled();
+    if (!comm.isRoot()) return result;
     result.renderPng = encodePng(toDisplay(image));
     enterPhase(control, StudyPhase::Done, 0);
     return result;

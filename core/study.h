@@ -39,9 +39,9 @@ struct StudyResult {
 
 // Throws Canceled when control.cancel is set while it runs, Error on bad settings.
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyControl& control);
-// The same on every rank of `comm` (docs/distributed.md): the trace is split across the ranks and rank 0's
-// result equals the single-process one apart from `timing`; the other ranks return empty results. Renders are
-// not split yet: rank 0 builds the photon map and the pictures alone. control.done counts this rank's work.
+// The same on every rank of `comm` (docs/distributed.md): the trace, the map photons and the render's tiles
+// are split across the ranks and rank 0's result equals the single-process one apart from `timing`; the other
+// ranks return empty results. control.done and control.total count this rank's share of each phase.
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyControl& control,
                      Communicator& comm);
 
