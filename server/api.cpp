@@ -1,0 +1,458 @@
+#include "api.h"
+
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <regex>
+
+#include "error.h"
+
+namespace facetlight::server {
+namespace {
+
+using httplib::Request;
+using httplib::Response;
+using nlohmann::json;
+
+constexpr const char* kProblemType = "application/problem+json";
+constexpr const char* kJsonType = "application/json";
+
+std::string_view reasonPhrase(int status) {
+    switch (status) {
+        case 400:
+            return "Bad Request";
+        case 404:
+            return "Not Found";
+        case 405:
+            return "Method Not Allowed";
+        case 409:
+            return "Conflict";
+        case 411:
+            return "Length Required";
+        case 413:
+            return "Payload Too Large";
+        case 414:
+            return "URI Too Long";
+        case 415:
+            return "Unsupported Media Type";
+        case 422:
+            return "Unprocessable Content";
+        case 500:
+            return "Internal Server Error";
+        case 503:
+            return "Service Unavailable";
+        default:
+            return status >= 500 ? "Server Error" : "Client Error";
+    }
+}
+
+// The field an Error message names: "photons must be ...", "render.width must ...", "unknown field 'x'".
+std::string fieldOf(const std::string& message) {
+    static const std::regex leading(R"(^([a-z_]+(\.[a-z_]+)*)(:| must| is required))");
+    static const std::regex unknown(R"(^unknown field '([^']{1,64})')");
+    std::smatch m;
+    if (std::regex_search(message, m, unknown)) return m[1];
+    if (std::regex_search(message, m, leading)) return m[1];
+    return {};
+}
+
+void problem(Response& res, int status, const std::string& detail, const std::string& field = {}) {
+    json body = {
+        {"type", "about:blank"}, {"title", reasonPhrase(status)}, {"status", status}, {"detail", detail}};
+    if (!field.empty()) body["field"] = field;
+    res.status = status;
+    res.set_content(body.dump(), kProblemType);
+}
+
+void sendJson(Response& res, int status, const json& body) {
+    res.status = status;
+    res.set_content(body.dump(2) + "\n", kJsonType);
+}
+
+std::string mediaType(const Request& req) {
+    std::string type = req.get_header_value("Content-Type");
+    type = type.substr(0, type.find(';'));
+    while (!type.empty() && type.back() == ' ') type.pop_back();
+    for (char& c : type) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return type;
+}
+
+// Reads the whole body, refusing more than `limit` bytes; nullopt when it was too large.
+std::optional<std::string> readBody(const httplib::ContentReader& reader, size_t limit) {
+    std::string body;
+    bool tooLarge = false;
+    reader([&](const char* data, size_t n) {
+        if (body.size() + n > limit) {
+            tooLarge = true;
+            return false;
+        }
+        body.append(data, n);
+        return true;
+    });
+    if (tooLarge) return std::nullopt;
+    return body;
+}
+
+// A query parameter as an integer in [lo, hi]; `fallback` when absent. Throws Error naming it.
+int64_t queryInt(const Request& req, const std::string& name, int64_t fallback, int64_t lo, int64_t hi) {
+    if (!req.has_param(name)) return fallback;
+    const std::string v = req.get_param_value(name);
+    const std::string msg =
+        name + " must be an integer between " + std::to_string(lo) + " and " + std::to_string(hi);
+    if (v.empty() || v.size() > 12 || v.find_first_not_of("0123456789") != std::string::npos)
+        throw Error(msg);
+    const int64_t x = std::stoll(v);
+    if (x < lo || x > hi) throw Error(msg);
+    return x;
+}
+
+std::string jobPath(const std::string& id) {
+    return "/api/jobs/" + id;
+}
+
+json nullIfEmpty(const std::string& s) {
+    return s.empty() ? json(nullptr) : json(s);
+}
+
+void logRequest(const Request& req, const Response& res) {
+    char line[512];
+    std::snprintf(line, sizeof line, "%s %s \"%s %.200s\" %d %zu\n", nowIso8601().c_str(),
+                  req.remote_addr.c_str(), req.method.c_str(), req.path.c_str(), res.status, res.body.size());
+    std::fputs(line, stderr);
+}
+
+}  // namespace
+
+Api::Api(JobStore& store, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits)
+    : store_(store), queue_(queue), catalog_(catalog), limits_(limits) {}
+
+std::vector<Route> Api::routes() {
+    return {
+        {"GET", "/healthz"},
+        {"GET", "/api/openapi.json"},
+        {"GET", "/api/jobs"},
+        {"POST", "/api/jobs"},
+        {"GET", "/api/jobs/{id}"},
+        {"DELETE", "/api/jobs/{id}"},
+        {"POST", "/api/jobs/{id}/cancel"},
+        {"GET", "/api/jobs/{id}/stats"},
+        {"GET", "/api/jobs/{id}/stats.csv"},
+        {"GET", "/api/jobs/{id}/render.png"},
+        {"GET", "/api/jobs/{id}/heatmap.png"},
+        {"GET", "/api/jobs/{id}/angular.png"},
+        {"GET", "/api/meshes"},
+        {"POST", "/api/meshes"},
+    };
+}
+
+json Api::statusJson(const JobRecord& job) const {
+    const std::string self = jobPath(job.id);
+    const json& request = job.request;
+    const int requested = request.value("threads", 1);
+    json threads = {{"requested", requested}, {"cores", queue_.cores()}};
+    const int used = job.threadsUsed > 0 ? job.threadsUsed : std::min(requested, queue_.cores());
+    threads["used"] = used;
+    if (used < requested) {
+        threads["note"] = "capped at the " + std::to_string(queue_.cores()) + " cores of this machine";
+    }
+    json progress = {{"phase", jobStateName(job.state)}, {"done", 0}, {"total", 0}, {"fraction", 0.0}};
+    json doc = {{"id", job.id},
+                {"state", jobStateName(job.state)},
+                {"mesh", request.value("mesh", "")},
+                {"settings", request},
+                {"created_at", job.createdAt},
+                {"started_at", nullIfEmpty(job.startedAt)},
+                {"finished_at", nullIfEmpty(job.finishedAt)},
+                {"threads", threads}};
+    json links = {{"self", self}};
+    switch (job.state) {
+        case JobState::Queued:
+            if (const auto pos = queue_.queuePosition(job.id)) doc["queue_position"] = *pos;
+            links["cancel"] = self + "/cancel";
+            break;
+        case JobState::Running:
+            if (const auto live = queue_.live(job.id)) {
+                const bool queuedPhase = live->phase == StudyPhase::Queued;
+                progress = {{"phase", queuedPhase ? "starting" : studyPhaseName(live->phase)},
+                            {"done", live->done},
+                            {"total", live->total},
+                            {"fraction", live->total ? double(live->done) / double(live->total) : 0.0}};
+                doc["cancel_requested"] = live->cancelRequested;
+            }
+            links["cancel"] = self + "/cancel";
+            break;
+        case JobState::Succeeded: {
+            progress = {{"phase", "done"}, {"done", 1}, {"total", 1}, {"fraction", 1.0}};
+            links["stats"] = self + "/stats";
+            links["stats_csv"] = self + "/stats.csv";
+            if (request.contains("render") && request["render"].is_object()) {
+                links["render"] = self + "/render.png";
+                links["heatmap"] = self + "/heatmap.png";
+                links["angular"] = self + "/angular.png";
+            }
+            break;
+        }
+        case JobState::Failed:
+            doc["error"] = job.error;
+            break;
+        case JobState::Canceled:
+            break;
+    }
+    doc["progress"] = progress;
+    doc["links"] = links;
+    return doc;
+}
+
+void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
+    const std::string type = mediaType(req);
+    const auto body = readBody(reader, limits_.maxBodyBytes);
+    if (!body) {
+        return problem(res, 413, "the job is larger than " + std::to_string(limits_.maxBodyBytes) + " bytes");
+    }
+    if (!type.empty() && type != kJsonType && type != "application/x-www-form-urlencoded" &&
+        type != "text/plain") {
+        return problem(res, 415, "send the job as application/json (got " + type + ")");
+    }
+    json j = json::parse(*body, nullptr, false);
+    if (j.is_discarded()) return problem(res, 400, "the body is not valid JSON");
+    if (!j.is_object()) return problem(res, 400, "the job must be a JSON object");
+    JobSpec spec;
+    try {
+        spec = parseJobSpec(j, queue_.cores());
+        checkLimits(spec, limits_);
+        catalog_.resolve(spec.mesh);
+    } catch (const Error& e) {
+        return problem(res, 422, e.what(), fieldOf(e.what()));
+    }
+    JobRecord job;
+    job.id = newId();
+    job.request = toJson(spec);
+    job.createdAt = nowIso8601();
+    if (!queue_.submit(job)) {
+        res.set_header("Retry-After", "30");
+        return problem(res, 503,
+                       "the queue is full (" + std::to_string(limits_.maxQueued) + " jobs); try again later");
+    }
+    res.set_header("Location", jobPath(job.id));
+    sendJson(res, 202, statusJson(job));
+}
+
+void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentReader& reader) {
+    std::string bytes, fileName = req.has_param("name") ? req.get_param_value("name") : "upload";
+    bool tooLarge = false;
+    const auto receive = [&](const char* data, size_t n) {
+        if (bytes.size() + n > limits_.maxUploadBytes) {
+            tooLarge = true;
+            return false;
+        }
+        bytes.append(data, n);
+        return true;
+    };
+    if (req.is_multipart_form_data()) {
+        int files = 0;
+        reader(
+            [&](const httplib::MultipartFormData& part) {
+                if (part.name != "file") return true;
+                if (!part.filename.empty()) fileName = part.filename;
+                return ++files == 1;
+            },
+            [&](const char* data, size_t n) { return files == 1 ? receive(data, n) : true; });
+    } else {
+        reader(receive);
+    }
+    if (tooLarge) {
+        return problem(res, 413,
+                       "the upload is larger than " + std::to_string(limits_.maxUploadBytes) + " bytes");
+    }
+    std::optional<MeshFormat> format;
+    if (req.has_param("format")) {
+        format = parseMeshFormat(req.get_param_value("format"));
+        if (!format) return problem(res, 422, "format must be one of obj, stl, asc", "format");
+    }
+    try {
+        const MeshRecord m = catalog_.upload(bytes, fileName, format);
+        json doc = m.summary;
+        doc["mesh"] = m.id;
+        doc["file_name"] = m.name;
+        doc["format"] = m.format;
+        doc["created_at"] = m.createdAt;
+        sendJson(res, 201, doc);
+    } catch (const Error& e) {
+        problem(res, 422, std::string("the mesh was refused: ") + e.what(), "file");
+    }
+}
+
+void Api::listJobs(const Request& req, Response& res) {
+    int64_t limit, offset;
+    try {
+        limit = queryInt(req, "limit", 20, 1, 100);
+        offset = queryInt(req, "offset", 0, 0, 1'000'000'000);
+    } catch (const Error& e) {
+        return problem(res, 400, e.what(), fieldOf(e.what()));
+    }
+    json jobs = json::array();
+    for (const auto& job : store_.jobs(int(limit), int(offset))) jobs.push_back(statusJson(job));
+    const int64_t total = store_.jobCount();
+    json doc = {{"jobs", jobs}, {"total", total}, {"limit", limit}, {"offset", offset}, {"next", nullptr}};
+    if (offset + limit < total) {
+        doc["next"] =
+            "/api/jobs?limit=" + std::to_string(limit) + "&offset=" + std::to_string(offset + limit);
+    }
+    sendJson(res, 200, doc);
+}
+
+void Api::getJob(const Request& req, Response& res) {
+    const auto job = store_.job(req.matches[1]);
+    if (!job) return problem(res, 404, "no job with this id");
+    sendJson(res, 200, statusJson(*job));
+}
+
+void Api::cancelJob(const Request& req, Response& res) {
+    const std::string id = req.matches[1];
+    const auto job = store_.job(id);
+    if (!job) return problem(res, 404, "no job with this id");
+    if (job->state == JobState::Succeeded || job->state == JobState::Failed) {
+        return problem(res, 409, "the job has already " + std::string(jobStateName(job->state)));
+    }
+    const auto outcome = queue_.cancel(id);
+    const auto now = store_.job(id);
+    if (!now) return problem(res, 404, "no job with this id");
+    sendJson(res, outcome == JobQueue::CancelOutcome::Requested ? 202 : 200, statusJson(*now));
+}
+
+void Api::deleteJob(const Request& req, Response& res) {
+    const std::string id = req.matches[1];
+    const auto job = store_.job(id);
+    if (!job) return problem(res, 404, "no job with this id");
+    if (!isFinished(job->state)) {
+        return problem(res, 409, "the job is " + std::string(jobStateName(job->state)) + ": cancel it first");
+    }
+    store_.deleteJob(id);
+    res.status = 204;
+}
+
+void Api::getResult(const Request& req, Response& res, const std::string& file,
+                    const std::string& contentType) {
+    const std::string id = req.matches[1];
+    const auto job = store_.job(id);
+    if (!job) return problem(res, 404, "no job with this id");
+    if (job->state != JobState::Succeeded) {
+        return problem(
+            res, 409,
+            "the job is " + std::string(jobStateName(job->state)) + "; results exist once it has succeeded");
+    }
+    auto bytes = store_.readResult(id, file);
+    if (!bytes) return problem(res, 404, "this job has no " + file + " (was render false?)");
+    res.status = 200;
+    res.set_content(std::move(*bytes), contentType.c_str());
+}
+
+void Api::install(httplib::Server& server, bool accessLog) {
+    using Plain = httplib::Server::Handler;
+    using WithReader = httplib::Server::HandlerWithContentReader;
+    const auto result = [this](std::string file, std::string type) {
+        return [this, file, type](const Request& req, Response& res) { getResult(req, res, file, type); };
+    };
+    std::map<std::string, Plain> plain = {
+        {"GET /healthz",
+         [this](const Request&, Response& res) {
+             sendJson(res, 200,
+                      {{"status", "ok"}, {"queued", queue_.queuedCount()}, {"cores", queue_.cores()}});
+         }},
+        {"GET /api/openapi.json",
+         [](const Request&, Response& res) { res.set_content(std::string(openApiDocument()), kJsonType); }},
+        {"GET /api/jobs", [this](const Request& req, Response& res) { listJobs(req, res); }},
+        {"GET /api/jobs/{id}", [this](const Request& req, Response& res) { getJob(req, res); }},
+        {"DELETE /api/jobs/{id}", [this](const Request& req, Response& res) { deleteJob(req, res); }},
+        {"GET /api/jobs/{id}/stats", result("stats.json", kJsonType)},
+        {"GET /api/jobs/{id}/stats.csv", result("stats.csv", "text/csv")},
+        {"GET /api/jobs/{id}/render.png", result("render.png", "image/png")},
+        {"GET /api/jobs/{id}/heatmap.png", result("heatmap.png", "image/png")},
+        {"GET /api/jobs/{id}/angular.png", result("angular.png", "image/png")},
+        {"GET /api/meshes", [this](const Request&, Response& res) { sendJson(res, 200, catalog_.list()); }},
+    };
+    // Routes that take a body read it themselves: that skips httplib's 8 KiB cap on form-encoded bodies
+    // (what a plain `curl -d` sends) and lets each route count the bytes against its own limit.
+    std::map<std::string, WithReader> withReader = {
+        {"POST /api/jobs", [this](const Request& req, Response& res,
+                                  const httplib::ContentReader& r) { submitJob(req, res, r); }},
+        {"POST /api/meshes", [this](const Request& req, Response& res,
+                                    const httplib::ContentReader& r) { uploadMesh(req, res, r); }},
+        // `curl -X POST` sends no Content-Length: a plain handler would wait out the read timeout for a body.
+        {"POST /api/jobs/{id}/cancel",
+         [this](const Request& req, Response& res, const httplib::ContentReader& r) {
+             if (req.has_header("Content-Length")) readBody(r, limits_.maxBodyBytes);  // ignored
+             cancelJob(req, res);
+         }},
+    };
+    for (const Route& route : routes()) {
+        const std::string key = route.method + " " + route.path;
+        std::string pattern = route.path;
+        for (size_t at; (at = pattern.find("{id}")) != std::string::npos;)
+            pattern.replace(at, 4, "([0-9a-f]{32})");
+        for (size_t at = 0; (at = pattern.find('.', at)) != std::string::npos; at += 2)
+            pattern.insert(at, "\\");
+        if (const auto it = plain.find(key); it != plain.end()) {
+            if (route.method == "GET") server.Get(pattern, it->second);
+            if (route.method == "DELETE") server.Delete(pattern, it->second);
+            if (route.method == "POST") server.Post(pattern, it->second);
+            plain.erase(it);
+        } else if (const auto w = withReader.find(key); w != withReader.end()) {
+            server.Post(pattern, w->second);
+            withReader.erase(w);
+        } else {
+            throw std::logic_error("route without a handler: " + key);
+        }
+    }
+    if (!plain.empty() || !withReader.empty()) throw std::logic_error("handler without a route");
+
+    const size_t maxBody = limits_.maxBodyBytes, maxUpload = limits_.maxUploadBytes,
+                 maxUrl = limits_.maxUrlBytes;
+    server.set_payload_max_length(std::max(maxBody, maxUpload));
+    server.set_pre_routing_handler([=](const Request& req, Response& res) {
+        using R = httplib::Server::HandlerResponse;
+        if (req.target.size() > maxUrl) {
+            res.set_header("Connection", "close");
+            problem(res, 414, "the URL is longer than " + std::to_string(maxUrl) + " bytes");
+            return R::Handled;
+        }
+        if (req.has_header("Transfer-Encoding")) {
+            res.set_header("Connection", "close");
+            problem(res, 411, "chunked request bodies are not accepted: send Content-Length");
+            return R::Handled;
+        }
+        const size_t limit = req.path == "/api/meshes" ? maxUpload : maxBody;
+        if (req.has_header("Content-Length")) {
+            const std::string v = req.get_header_value("Content-Length");
+            if (v.size() > 15 || v.find_first_not_of("0123456789") != std::string::npos ||
+                std::stoull(v) > limit) {
+                res.set_header("Connection", "close");
+                problem(res, 413, "the request body is larger than " + std::to_string(limit) + " bytes");
+                return R::Handled;
+            }
+        }
+        return R::Unhandled;
+    });
+    server.set_error_handler(httplib::Server::HandlerWithResponse([](const Request&, Response& res) {
+        if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+        problem(res, res.status,
+                res.status == 404 ? "no such resource (see /api/openapi.json)"
+                                  : std::string(reasonPhrase(res.status)));
+        return httplib::Server::HandlerResponse::Handled;
+    }));
+    server.set_exception_handler([](const Request& req, Response& res, std::exception_ptr ep) {
+        std::string what = "unknown";
+        try {
+            std::rethrow_exception(ep);
+        } catch (const std::exception& e) {
+            what = e.what();
+        } catch (...) {
+        }
+        std::cerr << "facetlight-server: " << req.method << " " << req.path << ": " << what << "\n";
+        problem(res, 500, "internal error; the server log has the details");
+    });
+    if (accessLog) server.set_logger(logRequest);
+}
+
+}  // namespace facetlight::server

@@ -1,0 +1,50 @@
+#pragma once
+// The HTTP face of the service: routes, validation, problem+json errors (RFC 9457), the access log. Handlers
+// only read and write the store and the queue; jobs run on the queue's worker.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <httplib.h>
+
+#include "job_queue.h"
+#include "job_spec.h"
+#include "job_store.h"
+#include "mesh_catalog.h"
+
+namespace facetlight::server {
+
+struct Route {
+    std::string method;  // GET, POST, DELETE
+    std::string path;    // as in the OpenAPI document: /api/jobs/{id}
+};
+
+// The OpenAPI 3 description of the routes below, embedded at build time from server/openapi.json.
+std::string_view openApiDocument();
+
+class Api {
+  public:
+    Api(JobStore& store, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits);
+    // Registers every route, the guards that run before them, the error handlers and the access log.
+    void install(httplib::Server& server, bool accessLog);
+    static std::vector<Route> routes();
+
+  private:
+    nlohmann::json statusJson(const JobRecord& job) const;
+    void submitJob(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader);
+    void uploadMesh(const httplib::Request& req, httplib::Response& res,
+                    const httplib::ContentReader& reader);
+    void listJobs(const httplib::Request& req, httplib::Response& res);
+    void getJob(const httplib::Request& req, httplib::Response& res);
+    void cancelJob(const httplib::Request& req, httplib::Response& res);
+    void deleteJob(const httplib::Request& req, httplib::Response& res);
+    void getResult(const httplib::Request& req, httplib::Response& res, const std::string& file,
+                   const std::string& contentType);
+
+    JobStore& store_;
+    JobQueue& queue_;
+    MeshCatalog& catalog_;
+    ServiceLimits limits_;
+};
+
+}  // namespace facetlight::server

@@ -1,0 +1,147 @@
+#include "job_queue.h"
+
+#include <algorithm>
+#include <iostream>
+#include <new>
+
+#include "error.h"
+#include "job_spec.h"
+
+namespace facetlight::server {
+
+JobQueue::JobQueue(JobStore& store, const MeshCatalog& catalog, size_t maxQueued, int cores)
+    : store_(store), catalog_(catalog), maxQueued_(maxQueued), cores_(std::max(1, cores)) {}
+
+JobQueue::~JobQueue() {
+    stop();
+}
+
+void JobQueue::start() {
+    std::lock_guard lock(mutex_);
+    for (auto& id : store_.recoverQueued()) queued_.push_back(std::move(id));
+    if (!queued_.empty())
+        std::cerr << "facetlight-server: " << queued_.size() << " job(s) queued from the store\n";
+    stopping_ = false;
+    worker_ = std::thread([this] { workerLoop(); });
+}
+
+void JobQueue::stop() {
+    {
+        std::lock_guard lock(mutex_);
+        if (!worker_.joinable()) return;
+        stopping_ = true;
+        if (running_) running_->cancel = true;
+    }
+    wake_.notify_all();
+    worker_.join();
+}
+
+bool JobQueue::submit(JobRecord& job) {
+    {
+        std::lock_guard lock(mutex_);
+        if (queued_.size() >= maxQueued_) return false;
+        store_.insertJob(job);
+        queued_.push_back(job.id);
+    }
+    wake_.notify_one();
+    return true;
+}
+
+JobQueue::CancelOutcome JobQueue::cancel(const std::string& id) {
+    std::lock_guard lock(mutex_);
+    if (const auto it = std::find(queued_.begin(), queued_.end(), id); it != queued_.end()) {
+        queued_.erase(it);
+        store_.markFinished(id, JobState::Canceled);
+        return CancelOutcome::Canceled;
+    }
+    if (running_ && runningId_ == id) {
+        running_->cancel = true;
+        return CancelOutcome::Requested;
+    }
+    return CancelOutcome::NotActive;
+}
+
+std::optional<size_t> JobQueue::queuePosition(const std::string& id) const {
+    std::lock_guard lock(mutex_);
+    const auto it = std::find(queued_.begin(), queued_.end(), id);
+    if (it == queued_.end()) return std::nullopt;
+    return size_t(it - queued_.begin()) + 1;
+}
+
+std::optional<LiveProgress> JobQueue::live(const std::string& id) const {
+    std::lock_guard lock(mutex_);
+    if (!running_ || runningId_ != id) return std::nullopt;
+    return LiveProgress{running_->phase.load(), running_->done.load(), running_->total.load(),
+                        running_->cancel.load()};
+}
+
+size_t JobQueue::queuedCount() const {
+    std::lock_guard lock(mutex_);
+    return queued_.size();
+}
+
+void JobQueue::workerLoop() {
+    for (;;) {
+        std::shared_ptr<StudyControl> control;
+        std::string id;
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [this] { return stopping_ || !queued_.empty(); });
+            if (stopping_) return;
+            id = queued_.front();
+            queued_.pop_front();
+            control = std::make_shared<StudyControl>();
+            running_ = control;
+            runningId_ = id;
+        }
+        try {
+            runJob(id, *control);
+        } catch (const std::exception& e) {  // the store itself failed: log it, keep serving
+            std::cerr << "facetlight-server: job " << id << ": " << e.what() << "\n";
+        }
+        std::lock_guard lock(mutex_);
+        running_.reset();
+        runningId_.clear();
+    }
+}
+
+void JobQueue::runJob(const std::string& id, StudyControl& control) {
+    try {
+        const auto job = store_.job(id);
+        if (!job) return;  // deleted while queued
+        JobSpec spec = parseJobSpec(job->request, cores_);
+        const int threads = std::min(spec.settings.trace.threads, cores_);
+        spec.settings.trace.threads = threads;
+        store_.markRunning(id, threads);
+        store_.clearResults(id);  // a job re-run after a crash starts from nothing
+        const Stone stone = catalog_.resolve(spec.mesh);
+        StudyResult result = runStudy(stone, spec.settings, control);
+        store_.writeResult(id, "stats.json", result.stats.dump(2));
+        store_.writeResult(id, "stats.csv", result.statsCsv);
+        if (!result.renderPng.empty()) store_.writeResult(id, "render.png", result.renderPng);
+        if (!result.heatmapPng.empty()) store_.writeResult(id, "heatmap.png", result.heatmapPng);
+        if (!result.angularPng.empty()) store_.writeResult(id, "angular.png", result.angularPng);
+        store_.markFinished(id, JobState::Succeeded);
+    } catch (const Canceled&) {
+        bool shuttingDown;
+        {
+            std::lock_guard lock(mutex_);
+            shuttingDown = stopping_;
+        }
+        store_.clearResults(id);
+        if (shuttingDown) {
+            store_.markQueued(id);
+        } else {
+            store_.markFinished(id, JobState::Canceled);
+        }
+    } catch (const Error& e) {
+        store_.markFinished(id, JobState::Failed, e.what());
+    } catch (const std::bad_alloc&) {
+        store_.markFinished(id, JobState::Failed, "out of memory: ask for fewer photons or a smaller image");
+    } catch (const std::exception& e) {
+        std::cerr << "facetlight-server: job " << id << " failed: " << e.what() << "\n";
+        store_.markFinished(id, JobState::Failed, std::string("internal error: ") + e.what());
+    }
+}
+
+}  // namespace facetlight::server

@@ -1,0 +1,66 @@
+#pragma once
+// The bounded queue and its one worker thread: jobs run one at a time, off the HTTP threads, each with the
+// threads it asked for capped at the machine's cores. Cancelling a running job sets its StudyControl flag;
+// stopping the service hands the running job back to the queue, so it runs again after a restart.
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "job_store.h"
+#include "mesh_catalog.h"
+#include "study.h"
+
+namespace facetlight::server {
+
+struct LiveProgress {
+    StudyPhase phase = StudyPhase::Queued;
+    uint64_t done = 0, total = 0;
+    bool cancelRequested = false;
+};
+
+class JobQueue {
+  public:
+    JobQueue(JobStore& store, const MeshCatalog& catalog, size_t maxQueued, int cores);
+    ~JobQueue();  // stop()
+
+    // Re-queues what the store holds (jobs a crash left running first in their turn) and starts the worker.
+    void start();
+    // Stops the worker: the running job is cancelled and put back as queued.
+    void stop();
+
+    // Stores the job and queues it; false (and nothing stored) when the queue is full.
+    bool submit(JobRecord& job);
+
+    enum class CancelOutcome { Canceled, Requested, NotActive };
+    // A queued job is canceled at once; a running one is asked to stop (its state follows shortly).
+    CancelOutcome cancel(const std::string& id);
+
+    std::optional<size_t> queuePosition(const std::string& id) const;  // 1 for the next to run
+    std::optional<LiveProgress> live(const std::string& id) const;     // the running job's progress
+    size_t queuedCount() const;
+    int cores() const { return cores_; }
+
+  private:
+    void workerLoop();
+    void runJob(const std::string& id, StudyControl& control);
+
+    JobStore& store_;
+    const MeshCatalog& catalog_;
+    const size_t maxQueued_;
+    const int cores_;
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::deque<std::string> queued_;
+    std::string runningId_;
+    std::shared_ptr<StudyControl> running_;
+    bool stopping_ = false;
+    std::thread worker_;
+};
+
+}  // namespace facetlight::server

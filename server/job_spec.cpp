@@ -1,0 +1,57 @@
+#include "job_spec.h"
+
+#include "error.h"
+
+namespace facetlight::server {
+
+JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads) {
+    if (!body.is_object()) throw Error("the job must be a JSON object");
+    JobSpec spec;
+    nlohmann::json trace = body;
+    if (!body.contains("mesh")) throw Error("mesh is required");
+    if (!body["mesh"].is_string()) throw Error("mesh must be a string");
+    spec.mesh = body["mesh"].get<std::string>();
+    trace.erase("mesh");
+    if (!body.contains("photons")) throw Error("photons is required");
+    if (!body.contains("threads")) trace["threads"] = defaultThreads;
+    if (body.contains("render")) {
+        const nlohmann::json& r = body["render"];
+        if (r.is_object()) {
+            spec.settings.render = RenderSettings::fromJson(r);
+        } else if (r.is_boolean()) {
+            if (r.get<bool>()) spec.settings.render = RenderSettings{};
+        } else if (!r.is_null()) {
+            throw Error("render must be false or an object {width, height, samples, camera}");
+        }
+        trace.erase("render");
+    }
+    spec.settings.trace = TraceSettings::fromJson(trace);
+    return spec;
+}
+
+void checkLimits(const JobSpec& spec, const ServiceLimits& limits) {
+    const std::string maxPhotons = std::to_string(limits.maxPhotons);
+    if (spec.settings.trace.photons > limits.maxPhotons) {
+        throw Error("photons must be at most " + maxPhotons + " on this server");
+    }
+    if (const auto& r = spec.settings.render) {
+        const std::string side = std::to_string(limits.maxImageSide);
+        if (r->width > limits.maxImageSide)
+            throw Error("render.width must be at most " + side + " on this server");
+        if (r->height > limits.maxImageSide) {
+            throw Error("render.height must be at most " + side + " on this server");
+        }
+        if (r->mapPhotons > limits.maxPhotons) {
+            throw Error("render.map_photons must be at most " + maxPhotons + " on this server");
+        }
+    }
+}
+
+nlohmann::json toJson(const JobSpec& spec) {
+    nlohmann::json j = toJson(spec.settings.trace);
+    j["mesh"] = spec.mesh;
+    j["render"] = spec.settings.render ? toJson(*spec.settings.render) : nlohmann::json(false);
+    return j;
+}
+
+}  // namespace facetlight::server

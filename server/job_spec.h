@@ -1,0 +1,36 @@
+#pragma once
+// What a client may ask of the service, read strictly from untrusted JSON: the study settings of core plus
+// the mesh name, checked against the service's limits.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "study.h"
+
+namespace facetlight::server {
+
+// Configurable caps with defaults that protect a laptop.
+struct ServiceLimits {
+    uint64_t maxPhotons = 100'000'000;  // per job, trace and photon-map photons each
+    int maxImageSide = 2048;
+    size_t maxUploadBytes = 16 << 20;
+    size_t maxQueued = 64;
+    size_t maxBodyBytes = 1 << 20;
+    size_t maxUrlBytes = 2048;
+};
+
+struct JobSpec {
+    std::string mesh;
+    StudySettings settings;
+};
+
+// Throws Error naming the field. Missing `threads` means `defaultThreads`.
+JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads);
+// Throws Error naming the field that exceeds a limit of this service.
+void checkLimits(const JobSpec& spec, const ServiceLimits& limits);
+// Every setting written out, so a stored job runs the same after a restart even if defaults change.
+nlohmann::json toJson(const JobSpec& spec);
+
+}  // namespace facetlight::server

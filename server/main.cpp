@@ -1,0 +1,93 @@
+// facetlight-server: the render service. Binds loopback unless told otherwise; SIGINT/SIGTERM stop HTTP,
+// hand the running job back to the queue and close the store.
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <iostream>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+
+#include "error.h"
+#include "service.h"
+
+int main(int argc, char** argv) {
+    using facetlight::server::Service;
+    using facetlight::server::ServiceConfig;
+    ServiceConfig config;
+    std::string host = "127.0.0.1";
+    int port = 8080;
+    CLI::App app{"facetlight-server: the facetlight render service (JSON over HTTP)"};
+    app.set_version_flag("--version", "facetlight-server 0.1.0");
+    app.add_option("--host", host, "Address to bind (0.0.0.0 exposes the service to the network)")
+        ->capture_default_str();
+    app.add_option("--port", port, "TCP port")->capture_default_str()->check(CLI::Range(0, 65535));
+    app.add_option("--data", config.dataDir, "Folder for the job store and results")->capture_default_str();
+    app.add_option("--meshes", config.meshesDir, "Folder of shipped meshes (.obj, .stl, .asc)")
+        ->capture_default_str();
+    app.add_option("--web", config.webDir, "Folder of the web page served at /")->capture_default_str();
+    auto& l = config.limits;
+    app.add_option("--max-photons", l.maxPhotons, "Most photons per job (trace, and photon map)")
+        ->capture_default_str()
+        ->check(CLI::Range(uint64_t(1), uint64_t(10'000'000'000ULL)));
+    app.add_option("--max-image", l.maxImageSide, "Largest render width or height in pixels")
+        ->capture_default_str()
+        ->check(CLI::Range(16, 4096));
+    app.add_option("--max-upload", l.maxUploadBytes, "Largest mesh upload in bytes")
+        ->capture_default_str()
+        ->check(CLI::Range(size_t(1), size_t(1) << 30));
+    app.add_option("--max-queue", l.maxQueued, "Most jobs waiting in the queue")
+        ->capture_default_str()
+        ->check(CLI::Range(size_t(1), size_t(100000)));
+    app.add_option("--max-body", l.maxBodyBytes, "Largest job request body in bytes")
+        ->capture_default_str()
+        ->check(CLI::Range(size_t(256), size_t(64) << 20));
+    app.add_option("--http-threads", config.httpThreads, "Threads answering HTTP requests")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 256));
+    app.add_option("--cores", config.cores, "Cap on a job's threads (0: all the machine's cores)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1024));
+    app.add_flag("!--no-access-log", config.accessLog, "Do not log each request on stderr");
+    CLI11_PARSE(app, argc, argv);
+
+    // Signals go to one thread that waits for them; every other thread (HTTP pool, worker) inherits the mask.
+    sigset_t signals;
+    sigemptyset(&signals);
+    sigaddset(&signals, SIGINT);
+    sigaddset(&signals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+    std::signal(SIGPIPE, SIG_IGN);
+
+    try {
+        Service service(config);
+        if (!service.bind(host, port)) {
+            std::cerr << "facetlight-server: cannot listen on " << host << ":" << port << "\n";
+            return 1;
+        }
+        std::atomic<bool> signaled{false};
+        std::thread waiter([&] {
+            int sig = 0;
+            sigwait(&signals, &sig);
+            signaled = true;
+            std::cerr << "facetlight-server: " << (sig == SIGINT ? "SIGINT" : "SIGTERM") << ", stopping\n";
+            service.stop();
+        });
+        std::cerr << "facetlight-server: listening on http://" << host << ":" << port << "/ (data "
+                  << config.dataDir << ")\n";
+        service.listen();
+        // listen() ends through stop(), or on a socket error: then wake the waiter ourselves.
+        if (!signaled) kill(getpid(), SIGTERM);
+        waiter.join();
+        std::cerr << "facetlight-server: stopped\n";
+    } catch (const facetlight::Error& e) {
+        std::cerr << "facetlight-server: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "facetlight-server: internal error: " << e.what() << "\n";
+        return 2;
+    }
+    return 0;
+}

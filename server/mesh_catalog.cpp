@@ -1,0 +1,143 @@
+#include "mesh_catalog.h"
+
+#include <algorithm>
+
+#include "cut_library.h"
+#include "error.h"
+#include "stone_json.h"
+
+namespace facetlight::server {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr MeshFormat kFormats[] = {MeshFormat::Obj, MeshFormat::Stl, MeshFormat::GemCad};
+
+// The last path component of an uploaded file's name, reduced to harmless characters.
+std::string cleanFileName(std::string_view fileName) {
+    const size_t slash = fileName.find_last_of("/\\");
+    if (slash != std::string_view::npos) fileName.remove_prefix(slash + 1);
+    std::string out;
+    for (char c : fileName) {
+        if (out.size() >= 64) break;
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                        c == '_' || c == '-' || c == '.';
+        out += ok ? c : '_';
+    }
+    while (!out.empty() && out.front() == '.') out.erase(out.begin());
+    return out.empty() ? "upload" : out;
+}
+
+}  // namespace
+
+std::string_view meshFormatName(MeshFormat format) {
+    switch (format) {
+        case MeshFormat::Obj:
+            return "obj";
+        case MeshFormat::Stl:
+            return "stl";
+        case MeshFormat::GemCad:
+            return "asc";
+    }
+    return "obj";
+}
+
+std::optional<MeshFormat> parseMeshFormat(std::string_view name) {
+    for (MeshFormat f : kFormats) {
+        if (meshFormatName(f) == name) return f;
+    }
+    return std::nullopt;
+}
+
+MeshCatalog::MeshCatalog(JobStore& store, fs::path meshesDir)
+    : store_(store), meshesDir_(std::move(meshesDir)) {}
+
+bool MeshCatalog::isShapeName(std::string_view s) {
+    if (s.empty() || s.size() > 64) return false;
+    for (size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || (i > 0 && (c == '_' || c == '-'));
+        if (!ok) return false;
+    }
+    return true;
+}
+
+std::optional<fs::path> MeshCatalog::shippedFile(const std::string& name) const {
+    for (MeshFormat f : kFormats) {
+        const fs::path p = meshesDir_ / (name + "." + std::string(meshFormatName(f)));
+        std::error_code ec;
+        if (fs::is_regular_file(p, ec)) return p;
+    }
+    return std::nullopt;
+}
+
+Stone MeshCatalog::resolve(const std::string& mesh) const {
+    if (isId(mesh)) {
+        const auto record = store_.mesh(mesh);
+        if (!record) throw Error("mesh: no uploaded mesh with id '" + mesh + "'");
+        Stone stone = loadStone(store_.meshFile(*record).string());
+        stone.name = record->name;
+        return stone;
+    }
+    if (!isShapeName(mesh)) {
+        throw Error("mesh must be a shipped shape name (see GET /api/meshes) or an uploaded mesh id");
+    }
+    if (const auto file = shippedFile(mesh)) return loadStone(file->string());
+    for (const auto& shape : cutShapes()) {
+        if (shape.name == mesh) return Stone::build(makeCut(mesh), mesh);
+    }
+    throw Error("mesh: unknown mesh '" + mesh + "' (see GET /api/meshes)");
+}
+
+nlohmann::json MeshCatalog::list() const {
+    std::lock_guard lock(mutex_);
+    if (!shippedSummaries_) {
+        nlohmann::json shipped = nlohmann::json::array();
+        std::vector<std::string> names;
+        std::error_code ec;
+        for (const auto& entry : fs::directory_iterator(meshesDir_, ec)) {
+            const std::string stem = entry.path().stem().string();
+            const std::string ext = entry.path().extension().string();
+            if (isShapeName(stem) && ext.size() > 1 && parseMeshFormat(ext.substr(1))) names.push_back(stem);
+        }
+        for (const auto& shape : cutShapes()) names.push_back(shape.name);
+        std::sort(names.begin(), names.end());
+        names.erase(std::unique(names.begin(), names.end()), names.end());
+        for (const auto& name : names) {
+            try {
+                nlohmann::json j = stoneSummaryJson(resolve(name));
+                j["mesh"] = name;
+                shipped.push_back(std::move(j));
+            } catch (const Error& e) {
+                shipped.push_back({{"mesh", name}, {"error", e.what()}});
+            }
+        }
+        shippedSummaries_ = std::move(shipped);
+    }
+    nlohmann::json uploaded = nlohmann::json::array();
+    for (const auto& m : store_.meshes()) {
+        nlohmann::json j = m.summary;
+        j["mesh"] = m.id;
+        j["file_name"] = m.name;
+        j["format"] = m.format;
+        j["created_at"] = m.createdAt;
+        uploaded.push_back(std::move(j));
+    }
+    return {{"shipped", *shippedSummaries_}, {"uploaded", std::move(uploaded)}};
+}
+
+MeshRecord MeshCatalog::upload(std::string_view bytes, std::string_view fileName,
+                               std::optional<MeshFormat> format) {
+    if (bytes.empty()) throw Error("the upload is empty: send the mesh file as the request body");
+    const std::string name = cleanFileName(fileName);
+    if (!format) format = formatFromFileName(name);
+    if (!format) format = detectFormat(bytes);
+    const PolygonMesh polygons = parseMesh(bytes, *format);
+    const std::string stem = fs::path(name).stem().string();
+    const Stone stone = Stone::build(polygons, stem.empty() ? "upload" : stem);
+    MeshRecord record{newId(), name, std::string(meshFormatName(*format)), nowIso8601(),
+                      stoneSummaryJson(stone)};
+    store_.insertMesh(record, bytes);
+    return record;
+}
+
+}  // namespace facetlight::server

@@ -1,0 +1,46 @@
+#pragma once
+// The stones a job may name: shapes shipped in the meshes folder (by file stem), shapes of the cut library
+// (by snake_case name) and meshes uploaded to the service (by id). Never a path: job
+// JSON is untrusted.
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "job_store.h"
+#include "mesh_io.h"
+#include "stone.h"
+
+namespace facetlight::server {
+
+class MeshCatalog {
+  public:
+    MeshCatalog(JobStore& store, std::filesystem::path meshesDir);
+
+    // Throws Error when `mesh` names nothing we know, or its file does not build into a stone.
+    Stone resolve(const std::string& mesh) const;
+    // {"shipped": [...], "uploaded": [...]}, each entry a stone summary with its `mesh` name.
+    nlohmann::json list() const;
+    // Parses and validates an upload (format from `format`, else the file name, else the content) and
+    // stores it. Throws Error naming the problem.
+    MeshRecord upload(std::string_view bytes, std::string_view fileName, std::optional<MeshFormat> format);
+
+    static bool isShapeName(std::string_view s);  // [a-z0-9][a-z0-9_-]{0,63}
+
+  private:
+    std::optional<std::filesystem::path> shippedFile(const std::string& name) const;
+
+    JobStore& store_;
+    std::filesystem::path meshesDir_;
+    mutable std::mutex mutex_;
+    mutable std::optional<nlohmann::json> shippedSummaries_;  // built on first list()
+};
+
+std::string_view meshFormatName(MeshFormat format);
+std::optional<MeshFormat> parseMeshFormat(std::string_view name);  // obj, stl, asc
+
+}  // namespace facetlight::server

@@ -1,0 +1,66 @@
+#include "service.h"
+
+#include <chrono>
+#include <iostream>
+#include <thread>
+
+namespace facetlight::server {
+
+Service::Service(ServiceConfig config) : config_(std::move(config)) {
+    const int cores = config_.cores > 0 ? config_.cores : int(std::thread::hardware_concurrency());
+    store_ = std::make_unique<JobStore>(config_.dataDir);
+    catalog_ = std::make_unique<MeshCatalog>(*store_, config_.meshesDir);
+    queue_ = std::make_unique<JobQueue>(*store_, *catalog_, config_.limits.maxQueued, cores);
+    api_ = std::make_unique<Api>(*store_, *queue_, *catalog_, config_.limits);
+    const int httpThreads = std::max(1, config_.httpThreads);
+    http_.new_task_queue = [httpThreads] { return new httplib::ThreadPool(size_t(httpThreads)); };
+    http_.set_tcp_nodelay(true);  // headers and body go out as two writes: no Nagle delay between them
+    api_->install(http_, config_.accessLog);
+    std::error_code ec;
+    if (!config_.webDir.empty() && std::filesystem::is_directory(config_.webDir, ec)) {
+        http_.set_file_extension_and_mimetype_mapping("mjs", "text/javascript");
+        if (!http_.set_mount_point("/", config_.webDir.string())) {
+            std::cerr << "facetlight-server: cannot serve " << config_.webDir << "\n";
+        }
+    } else if (!config_.webDir.empty()) {
+        std::cerr << "facetlight-server: no web page folder at " << config_.webDir
+                  << "; serving the API only\n";
+    }
+    queue_->start();
+}
+
+Service::~Service() {
+    stop();
+}
+
+bool Service::bind(const std::string& host, int port) {
+    return http_.bind_to_port(host, port);
+}
+
+int Service::bindToAnyPort(const std::string& host) {
+    return http_.bind_to_any_port(host);
+}
+
+bool Service::listen() {
+    listenStarted_ = true;
+    if (stopped_) {
+        listenEnded_ = true;
+        return true;
+    }
+    const bool ok = http_.listen_after_bind();
+    listenEnded_ = true;
+    return ok;
+}
+
+void Service::stop() {
+    if (stopped_.exchange(true)) return;
+    if (listenStarted_) {
+        // A stop() before the listening loop is running would be lost and listen() would never return.
+        while (!http_.is_running() && !listenEnded_)
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        http_.stop();
+    }
+    queue_->stop();
+}
+
+}  // namespace facetlight::server

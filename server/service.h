@@ -1,0 +1,57 @@
+#pragma once
+// The whole service in one object, for main() and the tests: the store, the mesh catalog, the queue with its
+// worker and the HTTP server, started and stopped in the right order.
+#include <atomic>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <httplib.h>
+
+#include "api.h"
+#include "job_queue.h"
+#include "job_spec.h"
+#include "job_store.h"
+#include "mesh_catalog.h"
+
+namespace facetlight::server {
+
+struct ServiceConfig {
+    std::filesystem::path dataDir = "data";
+    std::filesystem::path meshesDir = "meshes";
+    std::filesystem::path webDir = "web";
+    ServiceLimits limits;
+    int httpThreads = 8;
+    int cores = 0;  // 0: std::thread::hardware_concurrency()
+    bool accessLog = true;
+};
+
+class Service {
+  public:
+    // Opens the store, recovers its queue and starts the worker. Throws Error when the store cannot open.
+    explicit Service(ServiceConfig config);
+    ~Service();  // stop()
+
+    // Binds; false (bind) or -1 (bindToAnyPort) when the address is taken.
+    bool bind(const std::string& host, int port);
+    int bindToAnyPort(const std::string& host);
+    // Serves until stop(); blocks. Returns at once when stop() came first.
+    bool listen();
+    // Stops HTTP (waiting for listen() to be under way, so the stop is not lost), then the worker (the
+    // running job goes back to the queue), and leaves the store to close with the object. Idempotent.
+    void stop();
+
+    JobStore& store() { return *store_; }
+    JobQueue& queue() { return *queue_; }
+
+  private:
+    ServiceConfig config_;
+    std::unique_ptr<JobStore> store_;
+    std::unique_ptr<MeshCatalog> catalog_;
+    std::unique_ptr<JobQueue> queue_;
+    std::unique_ptr<Api> api_;
+    httplib::Server http_;
+    std::atomic<bool> listenStarted_{false}, listenEnded_{false}, stopped_{false};
+};
+
+}  // namespace facetlight::server

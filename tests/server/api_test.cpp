@@ -1,0 +1,412 @@
+// The service in-process: a Service on a free loopback port over a fresh data folder, driven by an
+// httplib::Client through every route, state transition and error.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <regex>
+#include <set>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <httplib.h>
+
+#include "service.h"
+
+namespace facetlight::server {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr const char* kJson = "application/json";
+// A unit cube, outward faces: the smallest closed stone.
+constexpr const char* kCubeObj =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+class ServiceTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("facetlight_api_test_" + std::to_string(::getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        start();
+    }
+    void TearDown() override {
+        stopService();
+        fs::remove_all(dir_);
+    }
+    void start(ServiceLimits limits = {}) {
+        ServiceConfig config;
+        config.dataDir = dir_ / "data";
+        config.meshesDir = dir_ / "meshes";
+        config.webDir = "";
+        config.limits = limits;
+        config.cores = 2;
+        config.accessLog = false;
+        service_ = std::make_unique<Service>(config);
+        port_ = service_->bindToAnyPort("127.0.0.1");
+        ASSERT_GT(port_, 0);
+        listener_ = std::thread([this] { service_->listen(); });
+        client_ = std::make_unique<httplib::Client>("127.0.0.1", port_);
+        client_->set_read_timeout(30, 0);
+    }
+    void stopService() {
+        if (!service_) return;
+        service_->stop();
+        listener_.join();
+        service_.reset();
+    }
+    httplib::Result submit(const json& job) { return client_->Post("/api/jobs", job.dump(), kJson); }
+    std::string submitOk(const json& job) {
+        auto r = submit(job);
+        EXPECT_TRUE(r);
+        EXPECT_EQ(r->status, 202) << r->body;
+        return json::parse(r->body)["id"];
+    }
+    json status(const std::string& id) {
+        auto r = client_->Get("/api/jobs/" + id);
+        EXPECT_TRUE(r && r->status == 200);
+        return json::parse(r->body);
+    }
+    // Polls until the job leaves queued/running (the worker is real; this waits on it, asserting nothing
+    // about time).
+    json waitFinished(const std::string& id) {
+        for (;;) {
+            json s = status(id);
+            if (s["state"] != "queued" && s["state"] != "running") return s;
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+    }
+    json waitState(const std::string& id, const std::string& state) {
+        for (;;) {
+            json s = status(id);
+            if (s["state"] == state) return s;
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+    }
+    static void expectProblem(const httplib::Result& r, int status, const std::string& field = {}) {
+        ASSERT_TRUE(r);
+        EXPECT_EQ(r->status, status) << r->body;
+        EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json");
+        const json p = json::parse(r->body);
+        EXPECT_EQ(p["status"], status);
+        EXPECT_FALSE(p["detail"].get<std::string>().empty());
+        if (!field.empty()) {
+            EXPECT_EQ(p.value("field", ""), field) << r->body;
+        }
+    }
+
+    // Sends raw bytes (what httplib::Client would not send) and returns the response's status code.
+    int rawStatus(const std::string& request) const {
+        const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in addr{};
+        addr.sin_family = AF_INET;
+        addr.sin_port = htons(uint16_t(port_));
+        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
+            ::close(fd);
+            return -1;
+        }
+        ::send(fd, request.data(), request.size(), MSG_NOSIGNAL);
+        char buf[256] = {};
+        const ssize_t n = ::recv(fd, buf, sizeof buf - 1, 0);
+        ::close(fd);
+        if (n < 12) return -1;
+        return std::atoi(buf + 9);  // "HTTP/1.1 413 ..."
+    }
+
+    static json smallJob() { return {{"mesh", "round_brilliant"}, {"photons", 20000}, {"threads", 2}}; }
+    static json longJob() { return {{"mesh", "round_brilliant"}, {"photons", 100'000'000}, {"threads", 1}}; }
+
+    fs::path dir_;
+    std::unique_ptr<Service> service_;
+    std::thread listener_;
+    int port_ = 0;
+    std::unique_ptr<httplib::Client> client_;
+};
+
+TEST_F(ServiceTest, HealthAndOpenApiDescribeEveryRoute) {
+    auto h = client_->Get("/healthz");
+    ASSERT_TRUE(h);
+    EXPECT_EQ(h->status, 200);
+    EXPECT_EQ(json::parse(h->body)["status"], "ok");
+
+    auto r = client_->Get("/api/openapi.json");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200);
+    const json doc = json::parse(r->body);
+    EXPECT_EQ(doc["openapi"].get<std::string>().substr(0, 2), "3.");
+    std::set<std::string> documented, served;
+    for (const auto& [path, ops] : doc["paths"].items()) {
+        for (const auto& [method, op] : ops.items()) {
+            std::string m = method;
+            for (char& c : m) c = char(std::toupper(static_cast<unsigned char>(c)));
+            documented.insert(m + " " + path);
+        }
+    }
+    for (const Route& route : Api::routes()) served.insert(route.method + " " + route.path);
+    EXPECT_EQ(documented, served);
+}
+
+TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
+    json job = smallJob();
+    job["render"] = {{"width", 32}, {"height", 24}, {"samples", 1}, {"map_photons", 5000}};
+    auto r = submit(job);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 202) << r->body;
+    const json accepted = json::parse(r->body);
+    const std::string id = accepted["id"];
+    EXPECT_TRUE(std::regex_match(id, std::regex("[0-9a-f]{32}")));
+    EXPECT_EQ(r->get_header_value("Location"), "/api/jobs/" + id);
+    EXPECT_TRUE(accepted["state"] == "queued" || accepted["state"] == "running");
+
+    const json done = waitFinished(id);
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    EXPECT_EQ(done["progress"]["fraction"], 1.0);
+    EXPECT_FALSE(done["started_at"].is_null());
+    EXPECT_FALSE(done["finished_at"].is_null());
+    EXPECT_EQ(done["settings"]["photons"], 20000);
+    EXPECT_EQ(done["links"]["render"], "/api/jobs/" + id + "/render.png");
+
+    auto stats = client_->Get("/api/jobs/" + id + "/stats");
+    ASSERT_TRUE(stats && stats->status == 200);
+    EXPECT_TRUE(json::parse(stats->body).is_object());
+    auto csv = client_->Get("/api/jobs/" + id + "/stats.csv");
+    ASSERT_TRUE(csv && csv->status == 200);
+    EXPECT_EQ(csv->get_header_value("Content-Type"), "text/csv");
+    EXPECT_NE(csv->body.find("table"), std::string::npos);
+    for (const char* png : {"render.png", "heatmap.png", "angular.png"}) {
+        auto p = client_->Get("/api/jobs/" + id + "/" + png);
+        ASSERT_TRUE(p && p->status == 200) << png;
+        EXPECT_EQ(p->get_header_value("Content-Type"), "image/png");
+        ASSERT_GT(p->body.size(), 24u);
+        EXPECT_EQ(p->body.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
+    }
+    auto png = client_->Get("/api/jobs/" + id + "/render.png");
+    const auto be32 = [&](size_t at) {
+        uint32_t v = 0;
+        for (size_t i = 0; i < 4; ++i) v = v << 8 | uint8_t(png->body[at + i]);
+        return v;
+    };
+    EXPECT_EQ(be32(16), 32u);  // IHDR width
+    EXPECT_EQ(be32(20), 24u);  // IHDR height
+}
+
+TEST_F(ServiceTest, StatsOnlyJobHasNoPictures) {
+    const std::string id = submitOk(smallJob());
+    ASSERT_EQ(waitFinished(id)["state"], "succeeded");
+    expectProblem(client_->Get("/api/jobs/" + id + "/render.png"), 404);
+}
+
+TEST_F(ServiceTest, SameSeedSameStatisticsWhateverTheThreads) {
+    json a = smallJob(), b = smallJob();
+    a["threads"] = 1;
+    b["threads"] = 2;
+    const std::string ia = submitOk(a), ib = submitOk(b);
+    ASSERT_EQ(waitFinished(ia)["state"], "succeeded");
+    ASSERT_EQ(waitFinished(ib)["state"], "succeeded");
+    EXPECT_EQ(client_->Get("/api/jobs/" + ia + "/stats.csv")->body,
+              client_->Get("/api/jobs/" + ib + "/stats.csv")->body);
+}
+
+TEST_F(ServiceTest, ThreadsAreCappedAtTheCores) {
+    json job = smallJob();
+    job["threads"] = 64;
+    const std::string id = submitOk(job);
+    const json s = waitFinished(id);
+    EXPECT_EQ(s["threads"]["requested"], 64);
+    EXPECT_EQ(s["threads"]["used"], 2);
+    EXPECT_TRUE(s["threads"].contains("note"));
+}
+
+TEST_F(ServiceTest, CancelQueuedAndRunningJobs) {
+    const std::string running = submitOk(longJob());
+    const std::string queued = submitOk(smallJob());
+    waitState(running, "running");
+    const json q = status(queued);
+    EXPECT_EQ(q["state"], "queued");
+    EXPECT_EQ(q["queue_position"], 1);
+    expectProblem(client_->Get("/api/jobs/" + running + "/stats"), 409);
+    expectProblem(client_->Delete("/api/jobs/" + running), 409);
+
+    auto c1 = client_->Post("/api/jobs/" + queued + "/cancel");
+    ASSERT_TRUE(c1);
+    EXPECT_EQ(c1->status, 200);
+    EXPECT_EQ(json::parse(c1->body)["state"], "canceled");
+    auto again = client_->Post("/api/jobs/" + queued + "/cancel");  // idempotent
+    ASSERT_TRUE(again);
+    EXPECT_EQ(again->status, 200);
+
+    auto c2 = client_->Post("/api/jobs/" + running + "/cancel");
+    ASSERT_TRUE(c2);
+    EXPECT_EQ(c2->status, 202);
+    EXPECT_EQ(waitFinished(running)["state"], "canceled");
+
+    auto del = client_->Delete("/api/jobs/" + running);
+    ASSERT_TRUE(del);
+    EXPECT_EQ(del->status, 204);
+    expectProblem(client_->Get("/api/jobs/" + running), 404);
+    EXPECT_FALSE(fs::exists(dir_ / "data" / "jobs" / running));
+}
+
+TEST_F(ServiceTest, FinishedJobsCannotBeCanceledButCanBeDeleted) {
+    const std::string id = submitOk(smallJob());
+    ASSERT_EQ(waitFinished(id)["state"], "succeeded");
+    EXPECT_TRUE(fs::exists(dir_ / "data" / "jobs" / id / "stats.json"));
+    expectProblem(client_->Post("/api/jobs/" + id + "/cancel"), 409);
+    auto del = client_->Delete("/api/jobs/" + id);
+    ASSERT_TRUE(del);
+    EXPECT_EQ(del->status, 204);
+    EXPECT_FALSE(fs::exists(dir_ / "data" / "jobs" / id));
+    expectProblem(client_->Delete("/api/jobs/" + id), 404);
+}
+
+TEST_F(ServiceTest, ListIsNewestFirstAndPaginated) {
+    std::vector<std::string> ids;
+    for (int i = 0; i < 3; ++i) ids.push_back(submitOk(smallJob()));
+    auto r = client_->Get("/api/jobs?limit=2");
+    ASSERT_TRUE(r && r->status == 200);
+    const json page = json::parse(r->body);
+    EXPECT_EQ(page["total"], 3);
+    ASSERT_EQ(page["jobs"].size(), 2u);
+    EXPECT_EQ(page["jobs"][0]["id"], ids[2]);
+    EXPECT_EQ(page["jobs"][1]["id"], ids[1]);
+    ASSERT_TRUE(page["next"].is_string());
+    const json rest = json::parse(client_->Get(page["next"].get<std::string>())->body);
+    ASSERT_EQ(rest["jobs"].size(), 1u);
+    EXPECT_EQ(rest["jobs"][0]["id"], ids[0]);
+    EXPECT_TRUE(rest["next"].is_null());
+    expectProblem(client_->Get("/api/jobs?limit=0"), 400, "limit");
+    expectProblem(client_->Get("/api/jobs?offset=-1"), 400, "offset");
+    expectProblem(client_->Get("/api/jobs?limit=abc"), 400, "limit");
+    for (const auto& id : ids) waitFinished(id);
+}
+
+TEST_F(ServiceTest, BadJobsAreRefusedNamingTheField) {
+    expectProblem(client_->Post("/api/jobs", "{\"mesh\":", kJson), 400);
+    expectProblem(client_->Post("/api/jobs", "[1,2]", kJson), 400);
+    expectProblem(client_->Post("/api/jobs", "{}", kJson), 422, "mesh");
+    expectProblem(submit({{"mesh", "round_brilliant"}}), 422, "photons");
+    expectProblem(submit({{"mesh", 3}, {"photons", 10}}), 422, "mesh");
+    expectProblem(submit({{"mesh", "no_such_cut"}, {"photons", 10}}), 422, "mesh");
+    expectProblem(submit({{"mesh", "../../etc/passwd"}, {"photons", 10}}), 422, "mesh");
+    expectProblem(submit({{"mesh", "/etc/passwd"}, {"photons", 10}}), 422, "mesh");
+    expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", -5}}), 422, "photons");
+    expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", "many"}}), 422, "photons");
+    expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", 1e9}}), 422,
+                  "photons");  // over --max-photons
+    expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", 10}, {"threads", 0}}), 422, "threads");
+    expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", 10}, {"colour", "red"}}), 422, "colour");
+    expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", 10}, {"render", "yes"}}), 422, "render");
+    expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", 10}, {"render", {{"width", 3000}}}}), 422,
+                  "render.width");
+    expectProblem(client_->Post("/api/jobs", smallJob().dump(), "application/xml"), 415);
+    expectProblem(client_->Get("/api/jobs/0123456789abcdef0123456789abcdef"), 404);
+    expectProblem(client_->Get("/api/jobs/not-an-id"), 404);
+    expectProblem(client_->Get("/api/jobs/" + std::string(5000, 'a')), 414);
+    EXPECT_EQ(json::parse(client_->Get("/api/jobs")->body)["total"], 0);
+}
+
+TEST_F(ServiceTest, BodyLimitsAndFormEncodedJobs) {
+    // curl -d sends application/x-www-form-urlencoded: accepted, even beyond httplib's 8 KiB form cap.
+    json job = smallJob();
+    std::string body = job.dump();
+    body.insert(body.size() - 1, std::string(10000, ' '));
+    auto r = client_->Post("/api/jobs", body, "application/x-www-form-urlencoded");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 202) << r->body;
+    EXPECT_EQ(rawStatus("POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                        "Content-Length: 5000000\r\n\r\n{"),
+              413);
+    EXPECT_EQ(rawStatus("POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                        "Transfer-Encoding: chunked\r\n\r\n5\r\n{\"a\":\r\n0\r\n\r\n"),
+              411);
+    EXPECT_EQ(rawStatus("GET /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 12x\r\n\r\n"), 413);
+    auto after = client_->Get("/healthz");  // still serving
+    ASSERT_TRUE(after);
+    EXPECT_EQ(after->status, 200);
+    waitFinished(json::parse(r->body)["id"]);
+}
+
+TEST_F(ServiceTest, FullQueueAnswers503WithRetryAfter) {
+    stopService();
+    ServiceLimits limits;
+    limits.maxQueued = 1;
+    start(limits);
+    const std::string running = submitOk(longJob());
+    waitState(running, "running");
+    const std::string queued = submitOk(smallJob());
+    auto r = submit(smallJob());
+    expectProblem(r, 503);
+    EXPECT_FALSE(r->get_header_value("Retry-After").empty());
+    client_->Post("/api/jobs/" + queued + "/cancel");
+    client_->Post("/api/jobs/" + running + "/cancel");
+    EXPECT_EQ(waitFinished(running)["state"], "canceled");
+}
+
+TEST_F(ServiceTest, MeshesListAndUpload) {
+    auto list = client_->Get("/api/meshes");
+    ASSERT_TRUE(list && list->status == 200);
+    const json meshes = json::parse(list->body);
+    bool found = false;
+    for (const auto& m : meshes["shipped"])
+        found |= m["mesh"] == "round_brilliant" && m["facet_count"].get<int>() > 50;
+    EXPECT_TRUE(found) << meshes.dump();
+
+    auto up = client_->Post("/api/meshes?name=cube.obj", kCubeObj, "application/octet-stream");
+    ASSERT_TRUE(up);
+    ASSERT_EQ(up->status, 201) << up->body;
+    const json cube = json::parse(up->body);
+    EXPECT_EQ(cube["facet_count"], 6);
+    const std::string meshId = cube["mesh"];
+    const json uploaded = json::parse(client_->Get("/api/meshes")->body)["uploaded"];
+    ASSERT_EQ(uploaded.size(), 1u);
+    EXPECT_EQ(uploaded[0]["mesh"], meshId);
+    json job = smallJob();
+    job["mesh"] = meshId;
+    EXPECT_EQ(waitFinished(submitOk(job))["state"], "succeeded");
+
+    httplib::MultipartFormDataItems form = {{"file", kCubeObj, "../../evil name.obj", "text/plain"}};
+    auto multi = client_->Post("/api/meshes", form);
+    ASSERT_TRUE(multi);
+    ASSERT_EQ(multi->status, 201) << multi->body;
+    EXPECT_EQ(json::parse(multi->body)["file_name"], "evil_name.obj");
+
+    std::string open = kCubeObj;
+    open.erase(open.rfind("f "));
+    expectProblem(client_->Post("/api/meshes?name=open.obj", open, "application/octet-stream"), 422, "file");
+    expectProblem(
+        client_->Post("/api/meshes?name=t.stl", std::string(84, '\0') + "\x05", "application/octet-stream"),
+        422, "file");
+    expectProblem(
+        client_->Post("/api/meshes", std::string("\x01\x02\xff\xfe junk", 9), "application/octet-stream"),
+        422, "file");
+    expectProblem(client_->Post("/api/meshes?format=ply", kCubeObj, "application/octet-stream"), 422,
+                  "format");
+    expectProblem(client_->Post("/api/meshes", "", "application/octet-stream"), 422);
+    EXPECT_EQ(rawStatus("POST /api/meshes HTTP/1.1\r\nHost: x\r\nContent-Length: 17000000\r\n\r\nv 0 0 0\n"),
+              413);
+    expectProblem(submit({{"mesh", "0123456789abcdef0123456789abcdef"}, {"photons", 10}}), 422, "mesh");
+}
+
+TEST_F(ServiceTest, QueuedAndInterruptedJobsSurviveARestart) {
+    const std::string running = submitOk(longJob());
+    const std::string queued = submitOk(smallJob());
+    waitState(running, "running");
+    stopService();  // the running job goes back to the queue
+    start();
+    const json r = status(running);
+    EXPECT_TRUE(r["state"] == "queued" || r["state"] == "running") << r.dump();
+    EXPECT_TRUE(r["finished_at"].is_null());
+    client_->Post("/api/jobs/" + running + "/cancel");
+    EXPECT_EQ(waitFinished(running)["state"], "canceled");
+    EXPECT_EQ(waitFinished(queued)["state"], "succeeded");
+}
+
+}  // namespace
+}  // namespace facetlight::server
