@@ -1,0 +1,381 @@
+// Browser tests of the web page (issue 7): Debian's headless Chromium, driven by playwright-core, against the
+// real facetlight-server on a free loopback port with a fresh data folder. Screenshots of each step go to
+// FACETLIGHT_SCREENSHOT_DIR (build/screenshots) for people to look at.
+//
+//   FACETLIGHT_SERVER=build/bin/facetlight-server node --test tests/browser/web.test.mjs
+//
+// FACETLIGHT_BASE_URL points the tests at a server that is already running instead.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import net from 'node:net';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+import { chromium } from 'playwright-core';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const sourceDir = process.env.FACETLIGHT_SOURCE_DIR || path.resolve(here, '../..');
+const serverBinary = process.env.FACETLIGHT_SERVER || path.join(sourceDir, 'build/bin/facetlight-server');
+const screenshotDir = process.env.FACETLIGHT_SCREENSHOT_DIR || path.join(sourceDir, 'build/screenshots');
+const chromiumPath = process.env.FACETLIGHT_CHROMIUM || '/usr/bin/chromium';
+const JOB_TIMEOUT_MS = 240_000;
+const DESKTOP = { width: 1366, height: 900 };
+const PHONE = { width: 390, height: 844 };
+
+// Small jobs: enough photons for every facet of the test stone, pictures small enough to render in seconds.
+const SMALL_JOB = { photons: '20000', width: '96', height: '96', samples: '1', mapPhotons: '5000' };
+
+let server;        // { process, log, dataDir } when we started one
+let baseUrl;
+let browser;       // a persistent context in a fresh user-data folder
+let userDataDir;
+let page;
+const foreignRequests = [];
+const pageErrors = [];
+const jobIds = {};  // name -> job id
+
+async function freePort() {
+  return new Promise((resolve, reject) => {
+    const probe = net.createServer();
+    probe.unref();
+    probe.on('error', reject);
+    probe.listen(0, '127.0.0.1', () => {
+      const { port } = probe.address();
+      probe.close(() => resolve(port));
+    });
+  });
+}
+
+async function waitForHealth(url, child, deadlineMs) {
+  const until = Date.now() + deadlineMs;
+  while (Date.now() < until) {
+    if (child.exitCode !== null) return false;
+    try {
+      const res = await fetch(`${url}/healthz`);
+      if (res.ok) return true;
+    } catch {
+      // not listening yet
+    }
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  return false;
+}
+
+// Starts the server on a free port; another process may take the port between the probe and the bind, so a
+// failed start is tried again on a fresh port.
+async function startServer() {
+  assert.ok(fs.existsSync(serverBinary), `no server binary at ${serverBinary} (build facetlight-server first)`);
+  const dataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'facetlight-web-data-'));
+  for (let attempt = 0; attempt < 5; ++attempt) {
+    const port = await freePort();
+    const log = [];
+    const child = spawn(serverBinary, [
+      '--host', '127.0.0.1', '--port', String(port), '--data', dataDir,
+      '--meshes', path.join(sourceDir, 'meshes'), '--web', path.join(sourceDir, 'web'),
+    ], { stdio: ['ignore', 'pipe', 'pipe'] });
+    child.stdout.on('data', (d) => log.push(String(d)));
+    child.stderr.on('data', (d) => log.push(String(d)));
+    const url = `http://127.0.0.1:${port}`;
+    if (await waitForHealth(url, child, 20_000)) return { process: child, log, dataDir, url };
+    child.kill('SIGKILL');
+    if (attempt === 4) throw new Error(`facetlight-server did not start:\n${log.join('')}`);
+  }
+  throw new Error('unreachable');
+}
+
+async function shot(name) {
+  fs.mkdirSync(screenshotDir, { recursive: true });
+  await page.screenshot({ path: path.join(screenshotDir, `${name}.png`), fullPage: true });
+}
+
+// Uploads a mesh through the page and returns the id the shape select now holds.
+async function uploadThroughPage(file) {
+  await page.setInputFiles('#f-file', path.join(sourceDir, file));
+  await page.click('#upload-button');
+  await page.waitForFunction((name) => document.querySelector('#upload-status').textContent.startsWith(`Uploaded ${name}`)
+    || !document.querySelector('#err-file').hidden, path.basename(file), { timeout: 30_000 });
+  assert.equal(await page.isHidden('#err-file'), true, `upload of ${file} refused: ${await page.textContent('#err-file')}`);
+  return page.$eval('#f-mesh', (el) => el.value);
+}
+
+async function fillSmallJob(overrides = {}) {
+  const job = { ...SMALL_JOB, ...overrides };
+  await page.fill('#f-photons', job.photons);
+  await page.fill('#f-threads', '2');
+  await page.setChecked('#f-render', true);
+  await page.fill('#f-width', job.width);
+  await page.fill('#f-height', job.height);
+  await page.fill('#f-samples', job.samples);
+  await page.$eval('details.advanced', (d) => { d.open = true; });
+  await page.fill('#f-map-photons', job.mapPhotons);
+  if (job.material) await page.selectOption('#f-material', job.material);
+  if (job.light) await page.selectOption('#f-light-model', job.light);
+}
+
+// Submits the form and returns the new job's id: the newest job in the list, which was not there before.
+async function submitAndGetId() {
+  const before = await page.$$eval('#job-list > li', (lis) => lis.map((li) => li.dataset.id));
+  await page.click('#submit-button');
+  await page.waitForFunction((known) => {
+    const first = document.querySelector('#job-list > li');
+    return first && !known.includes(first.dataset.id);
+  }, before, { timeout: 15_000 });
+  return page.$eval('#job-list > li', (li) => li.dataset.id);
+}
+
+async function waitForFinished(id) {
+  const bar = `#job-list li[data-id="${id}"] [role="progressbar"]`;
+  await page.waitForFunction((sel) => {
+    const el = document.querySelector(sel);
+    return el && ['100'].includes(el.getAttribute('aria-valuenow'))
+      && el.closest('li').dataset.state === 'succeeded';
+  }, bar, { timeout: JOB_TIMEOUT_MS, polling: 100 });
+}
+
+async function picturesLoaded(scope) {
+  await page.waitForFunction((sel) => {
+    const imgs = [...document.querySelectorAll(`${sel} img`)];
+    return imgs.length > 0 && imgs.every((img) => img.complete);
+  }, scope, { timeout: 30_000 });
+  return page.$$eval(`${scope} img`, (imgs) => imgs.map((img) => ({ src: img.getAttribute('src'), width: img.naturalWidth })));
+}
+
+async function noHorizontalOverflow() {
+  return page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth + 1);
+}
+
+describe('facetlight web page', { timeout: 900_000 }, () => {
+  before(async () => {
+    if (process.env.FACETLIGHT_BASE_URL) {
+      baseUrl = process.env.FACETLIGHT_BASE_URL.replace(/\/$/, '');
+    } else {
+      server = await startServer();
+      baseUrl = server.url;
+    }
+    userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'facetlight-chromium-'));
+    browser = await chromium.launchPersistentContext(userDataDir, {
+      executablePath: chromiumPath,
+      headless: true,
+      viewport: DESKTOP,
+      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+        '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+    });
+    page = browser.pages()[0] || await browser.newPage();
+    page.setDefaultTimeout(30_000);
+    page.on('request', (req) => {
+      const url = req.url();
+      if (!url.startsWith(`${baseUrl}/`) && !url.startsWith('data:')) foreignRequests.push(url);
+    });
+    page.on('pageerror', (err) => pageErrors.push(String(err)));
+    // Chromium logs every 4xx answer as an error; the tests provoke some on purpose.
+    page.on('console', (msg) => {
+      if (msg.type() === 'error' && !/status of 4\d\d/.test(msg.text())) pageErrors.push(msg.text());
+    });
+    await page.goto(`${baseUrl}/`);
+  });
+
+  after(async () => {
+    if (browser) await browser.close();
+    if (userDataDir) fs.rmSync(userDataDir, { recursive: true, force: true });
+    if (server) {
+      server.process.kill('SIGTERM');
+      await new Promise((resolve) => {
+        const timer = setTimeout(() => { server.process.kill('SIGKILL'); resolve(); }, 10_000);
+        server.process.once('exit', () => { clearTimeout(timer); resolve(); });
+      });
+      fs.rmSync(server.dataDir, { recursive: true, force: true });
+    }
+  });
+
+  test('the page loads with its form, labels and the shapes the API lists', async () => {
+    await page.waitForFunction(() => document.querySelector('#server-status').textContent.startsWith('Service ready'));
+    await page.waitForSelector('#f-mesh option', { state: 'attached' });
+    const listed = await (await fetch(`${baseUrl}/api/meshes`)).json();
+    const usable = [...listed.shipped, ...listed.uploaded].filter((m) => !m.error).length;
+    const options = await page.$$eval('#f-mesh option:not([disabled])', (os) => os.filter((o) => o.value).length);
+    assert.equal(options, usable, 'the shape select offers every readable mesh of GET /api/meshes');
+    // Every form control has an accessible name.
+    const unnamed = await page.$$eval('#job-form input, #job-form select', (els) => els
+      .filter((el) => !(el.labels && el.labels.length) && !el.getAttribute('aria-label'))
+      .map((el) => el.name || el.id));
+    assert.deepEqual(unnamed, []);
+    await shot('01-home');
+  });
+
+  test('a bad photon count is shown next to the photons field', async () => {
+    await page.fill('#f-photons', '-5');
+    await page.click('#submit-button');
+    const error = await page.waitForSelector('#err-photons:not([hidden])');
+    const text = await error.textContent();
+    assert.match(text, /photons/i);
+    assert.equal(await page.getAttribute('#f-photons', 'aria-invalid'), 'true');
+    // The message is the server's (the page leaves range checks to the API): it names the allowed range.
+    assert.match(text, /between|at least|must/i);
+    assert.equal(await page.isHidden('#err-threads'), true, 'only the field at fault is marked');
+    await shot('02-photon-error');
+    // Typing in the field clears its error.
+    await page.fill('#f-photons', '20000');
+    assert.equal(await page.isHidden('#err-photons'), true);
+  });
+
+  test('a bad upload is refused next to the file field', async () => {
+    const junk = path.join(os.tmpdir(), `facetlight-junk-${process.pid}.stl`);
+    fs.writeFileSync(junk, 'solid junk\nthis is not a mesh\n');
+    try {
+      await page.setInputFiles('#f-file', junk);
+      await page.click('#upload-button');
+      const error = await page.waitForSelector('#err-file:not([hidden])');
+      assert.ok((await error.textContent()).length > 0);
+    } finally {
+      fs.rmSync(junk, { force: true });
+    }
+  });
+
+  test('submit a small job and watch its progress bar reach 100 %', async () => {
+    jobIds.brilliantMesh = await uploadThroughPage('tests/data/brilliant.asc');
+    assert.match(jobIds.brilliantMesh, /^[0-9a-f]{32}$/);
+    await fillSmallJob();
+    const id = await submitAndGetId();
+    jobIds.brilliant = id;
+    const item = `#job-list li[data-id="${id}"]`;
+    assert.match(await page.textContent(`${item} .state`), /Queued|Running|Finished/);
+    // Watch the bar: record every value it shows until the job is done; it never goes backwards.
+    const seen = [];
+    const until = Date.now() + JOB_TIMEOUT_MS;
+    let shotRunning = false;
+    for (;;) {
+      const state = await page.getAttribute(item, 'data-state');
+      const now = Number(await page.getAttribute(`${item} [role="progressbar"]`, 'aria-valuenow'));
+      seen.push(now);
+      if (state === 'running' && !shotRunning) {
+        await shot('03-job-running');
+        shotRunning = true;
+      }
+      if (state === 'succeeded' || state === 'failed' || state === 'canceled' || Date.now() > until) break;
+      await page.waitForTimeout(100);
+    }
+    assert.equal(await page.getAttribute(item, 'data-state'), 'succeeded');
+    await waitForFinished(id);
+    assert.equal(seen.at(-1), 100);
+    assert.ok(seen.every((v, i) => i === 0 || v >= seen[i - 1]), `progress went backwards: ${seen.join(',')}`);
+    assert.match(await page.textContent(`${item} .progress-text`), /100 %/);
+    assert.match(await page.textContent(`${item} .state`), /Finished/);
+    await shot('04-job-finished');
+  });
+
+  test('open the result: pictures load, figures carry standard errors, the facet table sorts', async () => {
+    const id = jobIds.brilliant;
+    await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
+    await page.waitForSelector('#result-body .figures');
+    const pics = await picturesLoaded('#result-body .pictures');
+    assert.equal(pics.length, 3);
+    for (const p of pics) assert.ok(p.width > 0, `${p.src} did not load`);
+    assert.deepEqual(pics.map((p) => p.src.split('/').pop()), ['render.png', 'heatmap.png', 'angular.png']);
+
+    const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+    const crown = await page.textContent('[data-figure="crown_return"] .figure-value');
+    assert.ok(Math.abs(parseFloat(crown) - stats.totals.crown_return * 100) <= 0.05, `${crown} vs ${stats.totals.crown_return}`);
+    assert.match(await page.textContent('[data-figure="crown_return"] .figure-err'), /± \d/);
+    for (const region of ['table', 'crown', 'pavilion']) {
+      assert.equal(await page.locator(`table.regions tr[data-region="${region}"]`).count(), 1, region);
+    }
+
+    const rows = () => page.$$eval('table.facets tbody tr', (trs) => trs.map((tr) => Number(tr.dataset.facet)));
+    assert.equal((await rows()).length, stats.facets.length);
+    // Default order: most light leaving first.
+    const byShare = [...stats.facets].sort((a, b) => b.leaving_share - a.leaving_share || a.id - b.id).map((f) => f.id);
+    assert.deepEqual(await rows(), byShare);
+    await page.click('table.facets button[data-sort="id"]');
+    assert.deepEqual(await rows(), [...stats.facets].map((f) => f.id).sort((a, b) => b - a));
+    assert.equal(await page.getAttribute('table.facets th:has(button[data-sort="id"])', 'aria-sort'), 'descending');
+    await page.click('table.facets button[data-sort="id"]');
+    assert.deepEqual(await rows(), [...stats.facets].map((f) => f.id).sort((a, b) => a - b));
+
+    const json = await page.getAttribute('a[href$="/stats"]', 'href');
+    const csv = await page.getAttribute('a[href$="/stats.csv"]', 'href');
+    assert.equal((await fetch(`${baseUrl}${json}`)).status, 200);
+    assert.equal((await fetch(`${baseUrl}${csv}`)).status, 200);
+    await shot('05-result-desktop');
+    await page.setViewportSize(PHONE);
+    await page.waitForTimeout(200);
+    await shot('06-result-phone');
+    assert.ok(await noHorizontalOverflow(), 'the result page fits a phone');
+    await page.setViewportSize(DESKTOP);
+  });
+
+  test('compare two finished jobs, ranked by crown return, with their pictures', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector(`#job-list li[data-id="${jobIds.brilliant}"]`);
+    // A second design: an uploaded cube, lit the same way.
+    await uploadThroughPage('tests/data/cube_quads.obj');
+    await fillSmallJob();
+    jobIds.cube = await submitAndGetId();
+    await waitForFinished(jobIds.cube);
+
+    for (const id of [jobIds.brilliant, jobIds.cube]) await page.check(`#job-list li[data-id="${id}"] input.compare-box`);
+    assert.match(await page.textContent('#compare-selected'), /\(2\)/);
+    await page.click('#compare-selected');
+    await page.waitForSelector('.rank-list li:nth-child(2)');
+
+    const crown = {};
+    for (const id of [jobIds.brilliant, jobIds.cube]) {
+      crown[id] = (await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json()).totals.crown_return;
+    }
+    const ranked = await page.$$eval('.rank-list li', (lis) => lis.map((li) => li.dataset.id));
+    const expected = Object.keys(crown).sort((a, b) => crown[b] - crown[a]);
+    assert.deepEqual(ranked, expected, 'ranked by crown return, most first');
+    assert.match(await page.textContent('.rank-list li:first-child'), /Most light out of the top/);
+    assert.match(await page.textContent('.rank-list li:first-child .rank-no'), /#1/);
+
+    const cards = await page.$$eval('.compare-card', (cs) => cs.map((c) => c.dataset.id));
+    assert.deepEqual(cards, expected);
+    const pics = await picturesLoaded('.compare-grid');
+    assert.equal(pics.length, 6);
+    for (const p of pics) assert.ok(p.width > 0, `${p.src} did not load`);
+    // The best value of each figure is marked in words, not only by colour.
+    assert.ok(await page.locator('.compare-table .best-mark').count() >= 7);
+    await shot('07-compare-desktop');
+    await page.setViewportSize(PHONE);
+    await page.waitForTimeout(200);
+    await shot('08-compare-phone');
+    assert.ok(await noHorizontalOverflow(), 'the comparison fits a phone');
+    await page.setViewportSize(DESKTOP);
+  });
+
+  test('cancel a queued job and delete finished ones', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    // A long job, canceled while it waits or runs.
+    await page.selectOption('#f-mesh', jobIds.brilliantMesh);
+    await fillSmallJob({ photons: '50000000' });
+    const id = await submitAndGetId();
+    const item = `#job-list li[data-id="${id}"]`;
+    await page.click(`${item} button[data-action="cancel"]`);
+    await page.waitForFunction((sel) => document.querySelector(sel)?.dataset.state === 'canceled', item, { timeout: 30_000 });
+    assert.match(await page.textContent(`${item} .state`), /Canceled/);
+    await shot('09-canceled');
+    // Delete takes two clicks.
+    await page.click(`${item} button[data-action="delete"]`);
+    assert.match(await page.textContent(`${item} button[data-action="delete"]`), /again/);
+    await page.click(`${item} button[data-action="delete"]`);
+    await page.waitForSelector(item, { state: 'detached' });
+    assert.equal((await fetch(`${baseUrl}/api/jobs/${id}`)).status, 404);
+  });
+
+  test('the home page fits a phone', async () => {
+    await page.setViewportSize(PHONE);
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    await shot('10-home-phone');
+    assert.ok(await noHorizontalOverflow(), 'the home page fits a phone');
+    await page.setViewportSize(DESKTOP);
+  });
+
+  test('no request left the server and the page logged no errors', () => {
+    assert.deepEqual(foreignRequests, []);
+    assert.deepEqual(pageErrors, []);
+  });
+});
