@@ -9,8 +9,13 @@
 
 namespace facetlight::server {
 
-JobQueue::JobQueue(JobStore& store, const MeshCatalog& catalog, size_t maxQueued, int cores)
-    : store_(store), catalog_(catalog), maxQueued_(maxQueued), cores_(std::max(1, cores)) {}
+JobQueue::JobQueue(JobStore& store, const MeshCatalog& catalog, size_t maxQueued, int cores,
+                   std::optional<LaunchSettings> launch)
+    : store_(store),
+      catalog_(catalog),
+      launch_(std::move(launch)),
+      maxQueued_(maxQueued),
+      cores_(std::max(1, cores)) {}
 
 JobQueue::~JobQueue() {
     stop();
@@ -115,7 +120,10 @@ void JobQueue::runJob(const std::string& id, StudyControl& control) {
         store_.markRunning(id, threads);
         store_.clearResults(id);  // a job re-run after a crash starts from nothing
         const Stone stone = catalog_.resolve(spec.mesh);
-        StudyResult result = runStudy(stone, spec.settings, control);
+        StudyResult result =
+            launch_ && useLauncher(*launch_, spec.settings)
+                ? runStudyInChild(*launch_, catalog_.locate(spec.mesh), spec.settings, control)
+                : runStudy(stone, spec.settings, control);
         store_.writeResult(id, "stats.json", result.stats.dump(2));
         store_.writeResult(id, "stats.csv", result.statsCsv);
         if (!result.renderPng.empty()) store_.writeResult(id, "render.png", result.renderPng);

@@ -25,7 +25,9 @@ struct LiveProgress {
 
 class JobQueue {
   public:
-    JobQueue(JobStore& store, const MeshCatalog& catalog, size_t maxQueued, int cores);
+    // With `launch`, jobs it selects run as child processes through its launcher (e.g. mpirun).
+    JobQueue(JobStore& store, const MeshCatalog& catalog, size_t maxQueued, int cores,
+             std::optional<LaunchSettings> launch = std::nullopt);
     ~JobQueue();  // stop()
 
     // Re-queues what the store holds (jobs a crash left running first in their turn) and starts the worker.
@@ -51,6 +53,7 @@ class JobQueue {
 
     JobStore& store_;
     const MeshCatalog& catalog_;
+    const std::optional<LaunchSettings> launch_;
     const size_t maxQueued_;
     const int cores_;
 

@@ -51,7 +51,25 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::Range(0, 1024));
     app.add_flag("!--no-access-log", config.accessLog, "Do not log each request on stderr");
+    std::string launcher;
+    facetlight::server::LaunchSettings launch;
+    app.add_option("--launcher", launcher,
+                   "Run jobs as child processes through this command, e.g. 'mpirun -np 4 --hostfile hosts'");
+    app.add_option("--launcher-min-photons", launch.minPhotons,
+                   "With --launcher: jobs with fewer photons (trace + photon map) run in-process")
+        ->capture_default_str();
+    app.add_option("--launcher-workdir", launch.workDir,
+                   "With --launcher: folder for the children's job files, shared by every node");
     CLI11_PARSE(app, argc, argv);
+    if (!launcher.empty()) {
+        try {
+            launch.launcher = facetlight::server::splitWords(launcher);
+        } catch (const facetlight::Error& e) {
+            std::cerr << "facetlight-server: --launcher: " << e.what() << "\n";
+            return 2;
+        }
+        config.launch = launch;
+    }
 
     // Signals go to one thread that waits for them; every other thread (HTTP pool, worker) inherits the mask.
     sigset_t signals;
@@ -63,8 +81,12 @@ int main(int argc, char** argv) {
 
     try {
         Service service(config);
-        if (!service.bind(host, port)) {
-            std::cerr << "facetlight-server: cannot listen on " << host << ":" << port << "\n";
+        // Port 0: the system chooses a free port, and the line below tells which.
+        const int requested = port;
+        const bool bound =
+            requested == 0 ? (port = service.bindToAnyPort(host)) > 0 : service.bind(host, port);
+        if (!bound) {
+            std::cerr << "facetlight-server: cannot listen on " << host << ":" << requested << "\n";
             return 1;
         }
         std::atomic<bool> signaled{false};

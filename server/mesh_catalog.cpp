@@ -88,6 +88,16 @@ Stone MeshCatalog::resolve(const std::string& mesh) const {
     throw Error("mesh: unknown mesh '" + mesh + "' (see GET /api/meshes)");
 }
 
+ChildMesh MeshCatalog::locate(const std::string& mesh) const {
+    if (isId(mesh)) {
+        const auto record = store_.mesh(mesh);
+        if (!record) throw Error("mesh: no uploaded mesh with id '" + mesh + "'");
+        return {fs::absolute(store_.meshFile(*record)).string(), record->name};
+    }
+    if (const auto file = shippedFile(mesh)) return {fs::absolute(*file).string(), ""};
+    return {mesh, mesh};
+}
+
 nlohmann::json MeshCatalog::list() const {
     std::lock_guard lock(mutex_);
     if (!shippedSummaries_) {

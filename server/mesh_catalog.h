@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "job_store.h"
+#include "launcher.h"
 #include "mesh_io.h"
 #include "stone.h"
 
@@ -23,6 +24,8 @@ class MeshCatalog {
 
     // Throws Error when `mesh` names nothing we know, or its file does not build into a stone.
     Stone resolve(const std::string& mesh) const;
+    // What a child process (a launcher's job) reads the same stone from: a file path or a cut shape name.
+    ChildMesh locate(const std::string& mesh) const;
     // {"shipped": [...], "uploaded": [...]}, each entry a stone summary with its `mesh` name.
     nlohmann::json list() const;
     // Parses and validates an upload (format from `format`, else the file name, else the content) and

@@ -10,7 +10,7 @@ Service::Service(ServiceConfig config) : config_(std::move(config)) {
     const int cores = config_.cores > 0 ? config_.cores : int(std::thread::hardware_concurrency());
     store_ = std::make_unique<JobStore>(config_.dataDir);
     catalog_ = std::make_unique<MeshCatalog>(*store_, config_.meshesDir);
-    queue_ = std::make_unique<JobQueue>(*store_, *catalog_, config_.limits.maxQueued, cores);
+    queue_ = std::make_unique<JobQueue>(*store_, *catalog_, config_.limits.maxQueued, cores, config_.launch);
     api_ = std::make_unique<Api>(*store_, *queue_, *catalog_, config_.limits);
     const int httpThreads = std::max(1, config_.httpThreads);
     http_.new_task_queue = [httpThreads] { return new httplib::ThreadPool(size_t(httpThreads)); };

@@ -24,6 +24,7 @@ struct ServiceConfig {
     int httpThreads = 8;
     int cores = 0;  // 0: std::thread::hardware_concurrency()
     bool accessLog = true;
+    std::optional<LaunchSettings> launch;  // run jobs through a launcher such as mpirun (docs/distributed.md)
 };
 
 class Service {

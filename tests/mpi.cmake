@@ -26,9 +26,8 @@ foreach(ranks 2 3)
     ENVIRONMENT "${FACETLIGHT_MPI_TEST_ENV}" LABELS mpi TIMEOUT 300)
 endforeach()
 
-add_executable(launcher_test ${CMAKE_CURRENT_SOURCE_DIR}/mpi/launcher_test.cpp ${CMAKE_SOURCE_DIR}/server/launcher.cpp)
-target_include_directories(launcher_test PRIVATE ${CMAKE_SOURCE_DIR}/server)
-target_link_libraries(launcher_test PRIVATE facetlight::core GTest::gtest_main facetlight_warnings)
+add_executable(launcher_test ${CMAKE_CURRENT_SOURCE_DIR}/mpi/launcher_test.cpp)
+target_link_libraries(launcher_test PRIVATE facetlight::server GTest::gtest_main facetlight_warnings)
 target_compile_definitions(launcher_test PRIVATE
   FACETLIGHT_SOURCE_DIR="${CMAKE_SOURCE_DIR}" FACETLIGHT_TOOL="$<TARGET_FILE:facetlight>"
   FACETLIGHT_MPIEXEC="${MPIEXEC_EXECUTABLE}")
@@ -36,3 +35,10 @@ set_target_properties(launcher_test PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_
 add_dependencies(launcher_test facetlight)
 gtest_discover_tests(launcher_test DISCOVERY_TIMEOUT 60
   PROPERTIES LABELS mpi TIMEOUT 300)
+
+# The service hands jobs to mpirun: one runs to completion with its progress followed, another is cancelled.
+add_test(NAME mpi_service_launcher
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/mpi/service_launcher.sh $<TARGET_FILE:facetlight-server> ${MPIEXEC_EXECUTABLE}
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(mpi_service_launcher PROPERTIES
+  ENVIRONMENT "${FACETLIGHT_MPI_TEST_ENV}" LABELS mpi TIMEOUT 300)
