@@ -47,6 +47,7 @@ wait_done() {  # base id -> final state; prints the most progress seen on fd 3
 
 start local
 start mpi --launcher "$mpirun -np 2 --oversubscribe"
+rank_pattern="facetlight study --progress-json --job"  # the launcher's child command line
 job='{"mesh":"round_brilliant","photons":3000000,"threads":1,"seed":11}'
 
 read -r state seen < <(wait_done "$base_mpi" "$(submit "$base_mpi" "$job")")
@@ -62,10 +63,10 @@ cmp <(curl -sf "$base_mpi/api/jobs/$id_mpi/stats.csv") <(curl -sf "$base_local/a
 long="$(submit "$base_mpi" '{"mesh":"round_brilliant","photons":100000000,"threads":1}')"
 for _ in $(seq 1 200); do [ "$(status "$base_mpi" "$long" | json_get '["state"]')" = running ] && break; sleep 0.05; done
 sleep 1
-[ "$(pgrep -fc "facetlight study --job")" -ge 2 ] || fail "the long job is not running as mpirun ranks"
+[ "$(pgrep -fc "$rank_pattern")" -ge 2 ] || fail "the long job is not running as mpirun ranks"
 curl -sf -X POST "$base_mpi/api/jobs/$long/cancel" >/dev/null
 read -r state _ < <(wait_done "$base_mpi" "$long")
 [ "$state" = canceled ] || fail "the cancelled launched job ended $state"
 sleep 0.5
-! pgrep -f "facetlight study --job" >/dev/null || fail "a rank of the cancelled job is still running"
+! pgrep -f "$rank_pattern" >/dev/null || fail "a rank of the cancelled job is still running"
 echo "service launcher: ok"
