@@ -5,37 +5,16 @@
 #include <string>
 
 #include "error.h"
+#include "json_fields.h"
 #include "trace_settings.h"
 
 namespace facetlight {
 namespace {
 
 using nlohmann::json;
+using namespace json_fields;
 
-void checkKeys(const json& j, const std::string& where, const std::set<std::string>& known) {
-    if (!j.is_object()) throw Error(where + " must be a JSON object");
-    for (const auto& [key, value] : j.items()) {
-        if (!known.count(key)) throw Error("unknown field '" + where + "." + key + "'");
-    }
-}
-
-// An integer in [lo, hi]; a whole number written as a float (1e5) is accepted.
-int64_t getInteger(const json& j, const std::string& field, int64_t lo, int64_t hi) {
-    const std::string range =
-        field + " must be an integer between " + std::to_string(lo) + " and " + std::to_string(hi);
-    if (j.is_number_integer()) {
-        if (j.is_number_unsigned() ? j.get<uint64_t>() <= uint64_t(hi) && j.get<uint64_t>() >= uint64_t(lo)
-                                   : j.get<int64_t>() >= lo && j.get<int64_t>() <= hi) {
-            return j.get<int64_t>();
-        }
-    } else if (j.is_number_float()) {
-        const double v = j.get<double>();
-        if (v == std::floor(v) && v >= double(lo) && v <= double(hi)) return int64_t(v);
-    }
-    throw Error(range);
-}
-
-double getNumber(const json& j, const std::string& field, double lo, double hi, bool openLo = false) {
+double getNumberIn(const json& j, const std::string& field, double lo, double hi, bool openLo = false) {
     const std::string range = field + " must be a number " + (openLo ? "above " : "from ") +
                               std::to_string(int(lo)) + (openLo ? " up to " : " to ") +
                               std::to_string(int(hi));
@@ -83,31 +62,29 @@ RenderSettings RenderSettings::fromJson(const json& j) {
     checkKeys(j, "render", {"width", "height", "samples", "max_depth", "map_photons", "camera"});
     RenderSettings s;
     if (j.contains("width"))
-        s.width = int(getInteger(j["width"], "render.width", kMinImageSide, kMaxImageSide));
+        s.width = int(getCount(j["width"], "render.width", kMinImageSide, kMaxImageSide));
     if (j.contains("height"))
-        s.height = int(getInteger(j["height"], "render.height", kMinImageSide, kMaxImageSide));
-    if (j.contains("samples")) s.samples = int(getInteger(j["samples"], "render.samples", 1, kMaxSamples));
-    if (j.contains("max_depth"))
-        s.maxDepth = int(getInteger(j["max_depth"], "render.max_depth", 1, kMaxDepth));
+        s.height = int(getCount(j["height"], "render.height", kMinImageSide, kMaxImageSide));
+    if (j.contains("samples")) s.samples = int(getCount(j["samples"], "render.samples", 1, kMaxSamples));
+    if (j.contains("max_depth")) s.maxDepth = int(getCount(j["max_depth"], "render.max_depth", 1, kMaxDepth));
     if (j.contains("map_photons")) {
-        s.mapPhotons =
-            uint64_t(getInteger(j["map_photons"], "render.map_photons", 1000, int64_t(kMaxPhotons)));
+        s.mapPhotons = getCount(j["map_photons"], "render.map_photons", 1000, kMaxPhotons);
     }
     if (j.contains("camera")) {
         const json& c = j["camera"];
         checkKeys(c, "render.camera", {"elevation_deg", "azimuth_deg", "distance", "fov_deg"});
         if (c.contains("elevation_deg")) {
-            s.camera.elevationDeg = getNumber(c["elevation_deg"], "render.camera.elevation_deg", -90, 90);
+            s.camera.elevationDeg = getNumberIn(c["elevation_deg"], "render.camera.elevation_deg", -90, 90);
         }
         if (c.contains("azimuth_deg")) {
-            s.camera.azimuthDeg = getNumber(c["azimuth_deg"], "render.camera.azimuth_deg", -360, 360);
+            s.camera.azimuthDeg = getNumberIn(c["azimuth_deg"], "render.camera.azimuth_deg", -360, 360);
         }
         if (c.contains("distance")) {
             s.camera.distance =
-                getNumber(c["distance"], "render.camera.distance", kMinCameraDistance, kMaxCameraDistance);
+                getNumberIn(c["distance"], "render.camera.distance", kMinCameraDistance, kMaxCameraDistance);
         }
         if (c.contains("fov_deg"))
-            s.camera.fovDeg = getNumber(c["fov_deg"], "render.camera.fov_deg", 0, kMaxFovDeg, true);
+            s.camera.fovDeg = getNumberIn(c["fov_deg"], "render.camera.fov_deg", 0, kMaxFovDeg, true);
     }
     s.validate();
     return s;

@@ -4,55 +4,14 @@
 #include <set>
 
 #include "error.h"
+#include "json_fields.h"
 #include "material.h"
 
 namespace facetlight {
 namespace {
 
 using nlohmann::json;
-
-void checkKeys(const json& j, const std::string& where, const std::set<std::string>& known) {
-    if (!j.is_object()) throw Error(where + " must be a JSON object");
-    for (const auto& [key, value] : j.items()) {
-        if (!known.count(key)) {
-            throw Error("unknown field '" + (where == "settings" ? key : where + "." + key) + "'");
-        }
-    }
-}
-
-double getNumber(const json& j, const std::string& field) {
-    if (!j.is_number()) throw Error(field + " must be a number");
-    return j.get<double>();
-}
-
-// An integer in [lo, hi]; accepts 1e6 written as a float as long as it is a whole number.
-uint64_t getCount(const json& j, const std::string& field, uint64_t lo, uint64_t hi) {
-    if (j.is_number_unsigned()) {
-        const uint64_t v = j.get<uint64_t>();
-        if (v >= lo && v <= hi) return v;
-    } else if (j.is_number()) {
-        const double v = j.get<double>();
-        if (v == std::floor(v) && v >= double(lo) && v <= double(hi)) return uint64_t(v);
-    } else {
-        throw Error(field + " must be a number");
-    }
-    throw Error(field + " must be an integer between " + std::to_string(lo) + " and " + std::to_string(hi));
-}
-
-bool getBool(const json& j, const std::string& field) {
-    if (!j.is_boolean()) throw Error(field + " must be true or false");
-    return j.get<bool>();
-}
-
-std::string getString(const json& j, const std::string& field) {
-    if (!j.is_string()) throw Error(field + " must be a string");
-    return j.get<std::string>();
-}
-
-Vec3 getVec3(const json& j, const std::string& field) {
-    if (!j.is_array() || j.size() != 3) throw Error(field + " must be an array of 3 numbers");
-    return {getNumber(j[0], field), getNumber(j[1], field), getNumber(j[2], field)};
-}
+using namespace json_fields;
 
 json vec3Json(const Vec3& v) {
     return json::array({v.x, v.y, v.z});
@@ -141,7 +100,7 @@ json toJson(const TraceSettings& s) {
 
 TraceSettings TraceSettings::fromJson(const json& j) {
     checkKeys(
-        j, "settings",
+        j, "",
         {"photons", "threads", "seed", "material", "n", "dispersion", "max_bounces", "intersector", "light"});
     TraceSettings s;
     if (j.contains("photons")) s.photons = getCount(j["photons"], "photons", 1, kMaxPhotons);
