@@ -219,8 +219,7 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     if (!j.is_object()) return problem(res, 400, "the job must be a JSON object");
     JobSpec spec;
     try {
-        spec = parseJobSpec(j, queue_.cores());
-        checkLimits(spec, limits_);
+        spec = parseJobSpec(j, queue_.cores(), &limits_);
         catalog_.resolve(spec.mesh);
     } catch (const Error& e) {
         return problem(res, 422, e.what(), fieldOf(e.what()));

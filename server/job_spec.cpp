@@ -1,10 +1,30 @@
 #include "job_spec.h"
 
 #include "error.h"
+#include "json_fields.h"
 
 namespace facetlight::server {
 
-JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads) {
+namespace {
+
+void checkRenderLimits(const JobSpec& spec, const ServiceLimits& limits) {
+    const auto& r = spec.settings.render;
+    if (!r) return;
+    const std::string maxPhotons = std::to_string(limits.maxPhotons);
+    const std::string side = std::to_string(limits.maxImageSide);
+    if (r->width > limits.maxImageSide)
+        throw Error("render.width must be at most " + side + " on this server");
+    if (r->height > limits.maxImageSide) {
+        throw Error("render.height must be at most " + side + " on this server");
+    }
+    if (r->mapPhotons > limits.maxPhotons) {
+        throw Error("render.map_photons must be at most " + maxPhotons + " on this server");
+    }
+}
+
+}  // namespace
+
+JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits) {
     if (!body.is_object()) throw Error("the job must be a JSON object");
     JobSpec spec;
     nlohmann::json trace = body;
@@ -13,6 +33,8 @@ JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads) {
     spec.mesh = body["mesh"].get<std::string>();
     trace.erase("mesh");
     if (!body.contains("photons")) throw Error("photons is required");
+    // This server's cap, not only the core's, names the range a user may ask for.
+    if (limits) json_fields::getCount(body["photons"], "photons", 1, limits->maxPhotons);
     if (!body.contains("threads")) trace["threads"] = defaultThreads;
     if (body.contains("render")) {
         const nlohmann::json& r = body["render"];
@@ -26,27 +48,9 @@ JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads) {
         trace.erase("render");
     }
     spec.settings.trace = TraceSettings::fromJson(trace);
+    if (limits) checkRenderLimits(spec, *limits);
     return spec;
 }
-
-void checkLimits(const JobSpec& spec, const ServiceLimits& limits) {
-    const std::string maxPhotons = std::to_string(limits.maxPhotons);
-    if (spec.settings.trace.photons > limits.maxPhotons) {
-        throw Error("photons must be at most " + maxPhotons + " on this server");
-    }
-    if (const auto& r = spec.settings.render) {
-        const std::string side = std::to_string(limits.maxImageSide);
-        if (r->width > limits.maxImageSide)
-            throw Error("render.width must be at most " + side + " on this server");
-        if (r->height > limits.maxImageSide) {
-            throw Error("render.height must be at most " + side + " on this server");
-        }
-        if (r->mapPhotons > limits.maxPhotons) {
-            throw Error("render.map_photons must be at most " + maxPhotons + " on this server");
-        }
-    }
-}
-
 nlohmann::json toJson(const JobSpec& spec) {
     nlohmann::json j = toJson(spec.settings.trace);
     j["mesh"] = spec.mesh;

@@ -26,10 +26,9 @@ struct JobSpec {
     StudySettings settings;
 };
 
-// Throws Error naming the field. Missing `threads` means `defaultThreads`.
-JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads);
-// Throws Error naming the field that exceeds a limit of this service.
-void checkLimits(const JobSpec& spec, const ServiceLimits& limits);
+// Throws Error naming the field, also when it exceeds a limit of this service (with `limits`: new jobs;
+// without: jobs already accepted). Missing `threads` means `defaultThreads`.
+JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits = nullptr);
 // Every setting written out, so a stored job runs the same after a restart even if defaults change.
 nlohmann::json toJson(const JobSpec& spec);
 

@@ -298,8 +298,9 @@ TEST_F(ServiceTest, BadJobsAreRefusedNamingTheField) {
     expectProblem(submit({{"mesh", "/etc/passwd"}, {"photons", 10}}), 422, "mesh");
     expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", -5}}), 422, "photons");
     expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", "many"}}), 422, "photons");
-    expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", 1e9}}), 422,
-                  "photons");  // over --max-photons
+    const auto overCap = submit({{"mesh", "round_brilliant"}, {"photons", 1e9}});
+    expectProblem(overCap, 422, "photons");  // over --max-photons: the message gives this server's range
+    EXPECT_EQ(json::parse(overCap->body)["detail"], "photons must be an integer between 1 and 100000000");
     expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", 10}, {"threads", 0}}), 422, "threads");
     expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", 10}, {"colour", "red"}}), 422, "colour");
     expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", 10}, {"render", "yes"}}), 422, "render");
