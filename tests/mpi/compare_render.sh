@@ -10,13 +10,5 @@ args=(render --mesh "$mesh" --photons 100000 --threads 2 --seed 4 --width 64 --h
 "$exe" "${args[@]}" --out "$work/one" > /dev/null
 "$mpiexec" --oversubscribe -np "$ranks" "$exe" "${args[@]}" --out "$work/many" > /dev/null
 for f in render.png heatmap.png angular.png stats.csv; do cmp "$work/one/$f" "$work/many/$f"; done
-python3 - "$work/one/stats.json" "$work/many/stats.json" "$ranks" <<'PY'
-import json, sys
-one, many = (json.load(open(p)) for p in sys.argv[1:3])
-assert many["timing"]["ranks"] == int(sys.argv[3]), many["timing"]
-for doc in (one, many):
-    doc.pop("timing")
-if one != many:
-    sys.exit("statistics differ between 1 and %s ranks" % sys.argv[3])
-PY
+python3 "$(dirname "$0")/same_stats.py" "$work/one/stats.json" "$work/many/stats.json" "$ranks"
 echo "$ranks ranks: identical"
