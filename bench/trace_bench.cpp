@@ -1,5 +1,6 @@
 // Stats-only photon tracing of a 57-facet round brilliant (collimated light straight down, no dispersion),
-// in photons per second for 1 and 2 threads. Figures go to docs/performance.md ("Photon tracing").
+// in photons per second for 1 and 2 threads; the same with dispersion, and the shipped 121-facet brilliant.
+// Figures go to docs/performance.md ("Photon tracing").
 //   build-*/bin/bench_trace --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -64,11 +65,11 @@ const Stone* shippedBrilliant() {
     return stone ? &*stone : nullptr;
 }
 
-void traceStats(benchmark::State& state, const Stone& stone) {
+void traceStats(benchmark::State& state, const Stone& stone, bool dispersion = false) {
     TraceSettings settings;
     settings.photons = 4'000'000;
     settings.threads = int(state.range(0));
-    settings.dispersion = false;
+    settings.dispersion = dispersion;
     const TraceScene scene(stone, settings);
     uint64_t interfaces = 0;
     for (auto _ : state) {
@@ -89,6 +90,17 @@ void BM_TraceBrilliant57(benchmark::State& state) {
     traceStats(state, brilliant());
 }
 BENCHMARK(BM_TraceBrilliant57)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
+// The same with dispersion, a job's default: each photon draws a wavelength and has its own index.
+void BM_TraceBrilliant57Dispersion(benchmark::State& state) {
+    traceStats(state, brilliant(), true);
+}
+BENCHMARK(BM_TraceBrilliant57Dispersion)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
 
 void BM_TraceShippedBrilliant(benchmark::State& state) {
     if (const Stone* stone = shippedBrilliant()) {

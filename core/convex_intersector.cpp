@@ -28,6 +28,7 @@ ConvexIntersector::ConvexIntersector(const Stone& stone) {
         throw Error("the convex intersector needs a convex stone; '" + stone.name + "' is not");
     if (stone.facets.empty()) throw Error("stone '" + stone.name + "' has no facets");
     const size_t n = stone.facets.size();
+    planes_ = n;
     padded_ = (n + kWidth - 1) / kWidth * kWidth;
     nx_.assign(padded_, 0.0f);
     ny_.assign(padded_, 0.0f);
@@ -115,6 +116,42 @@ bool ConvexIntersector::leave(const Vec3f& o, const Vec3f& d, SurfaceHit& hit) c
     hit = {std::bit_cast<float>(uint32_t(key >> 32)), uint32_t(key)};
     return hit.t < kInf;
 }
+
+#if FACETLIGHT_PACKETS
+void ConvexIntersector::leave(const RayPacket& rays, Floats16& tOut, __m512i& facetOut) const {
+    // The plane loop of leave(const Vec3f&, ...) turned around: one plane against sixteen rays, with the
+    // same operations per (ray, plane), so each lane's t has the same bits. Two interleaved searches over
+    // even and odd planes halve the chain of dependent compares.
+    const __m512 zero = _mm512_setzero_ps(), inf = _mm512_set1_ps(kInf);
+    __m512 best[2] = {inf, inf};
+    __m512i bestIdx[2] = {_mm512_setzero_si512(), _mm512_setzero_si512()};
+    auto visit = [&](size_t i, int chain) {
+        const __m512 x = _mm512_set1_ps(nx_[i]), y = _mm512_set1_ps(ny_[i]), z = _mm512_set1_ps(nz_[i]);
+        const __m512 den =
+            _mm512_fmadd_ps(rays.dx.v, x, _mm512_fmadd_ps(rays.dy.v, y, _mm512_mul_ps(rays.dz.v, z)));
+        const __m512 num = _mm512_sub_ps(
+            _mm512_set1_ps(offset_[i]),
+            _mm512_fmadd_ps(rays.ox.v, x, _mm512_fmadd_ps(rays.oy.v, y, _mm512_mul_ps(rays.oz.v, z))));
+        const __mmask16 out = _mm512_cmp_ps_mask(den, zero, _CMP_GT_OQ);
+        const __m512 t = _mm512_max_ps(_mm512_mul_ps(num, reciprocal(den)), zero);
+        const __mmask16 better = _mm512_mask_cmp_ps_mask(out, t, best[chain], _CMP_LT_OQ);
+        best[chain] = _mm512_mask_mov_ps(best[chain], better, t);
+        bestIdx[chain] = _mm512_mask_mov_epi32(bestIdx[chain], better, _mm512_set1_epi32(int(i)));
+    };
+    size_t i = 0;
+    for (; i + 1 < planes_; i += 2) {
+        visit(i, 0);
+        visit(i + 1, 1);
+    }
+    if (i < planes_) visit(i, 0);
+    // The nearer of the two, and on a tie the lower plane, as the one-ray search picks.
+    const __mmask16 odd =
+        _mm512_cmp_ps_mask(best[1], best[0], _CMP_LT_OQ) |
+        (_mm512_cmp_ps_mask(best[1], best[0], _CMP_EQ_OQ) & _mm512_cmplt_epu32_mask(bestIdx[1], bestIdx[0]));
+    tOut = _mm512_mask_mov_ps(best[0], odd, best[1]);
+    facetOut = _mm512_mask_mov_epi32(bestIdx[0], odd, bestIdx[1]);
+}
+#endif
 
 bool ConvexIntersector::enter(const Vec3f& o, const Vec3f& d, SurfaceHit& hit) const {
     const Ray16 r(o, d);
@@ -281,8 +318,13 @@ ConvexBeamEntry::ConvexBeamEntry(const Stone& stone, const Vec3f& dir) {
             (den < 0 ? in_ : out_).add(offset / den, n * (1 / den), uint32_t(i));
         }
     }
+    const size_t entering = in_.a.size();
     in_.pad(-kInf);
     out_.pad(kInf);
+    for (size_t lane = 0; lane < ConvexIntersector::kWidth; ++lane) {
+        for (size_t i = lane; i < entering; i += ConvexIntersector::kWidth)
+            inTieOrder_.push_back(uint32_t(i));
+    }
 }
 
 #if defined(__AVX512F__)
@@ -313,6 +355,40 @@ bool ConvexBeamEntry::enter(const Vec3f& o, SurfaceHit& hit) const {
     }
     return true;
 }
+
+#if FACETLIGHT_PACKETS
+LaneMask ConvexBeamEntry::enter(const Floats16& ox, const Floats16& oy, const Floats16& oz, Floats16& tOut,
+                                __m512i& facetOut) const {
+    // The same operations per (origin, plane) as the one-origin search; the entry planes in the order that
+    // search settles ties in, so that each lane gets its facet too.
+    auto t = [&](const Planes& p, size_t i) {
+        return _mm512_sub_ps(_mm512_set1_ps(p.a[i]),
+                             _mm512_fmadd_ps(ox.v, _mm512_set1_ps(p.mx[i]),
+                                             _mm512_fmadd_ps(oy.v, _mm512_set1_ps(p.my[i]),
+                                                             _mm512_mul_ps(oz.v, _mm512_set1_ps(p.mz[i])))));
+    };
+    __m512 tIn = _mm512_set1_ps(-kInf);
+    __m512i inIdx = _mm512_setzero_si512();
+    for (const uint32_t i : inTieOrder_) {
+        const __m512 ti = t(in_, i);
+        const __mmask16 better = _mm512_cmp_ps_mask(ti, tIn, _CMP_GT_OQ);
+        tIn = _mm512_mask_mov_ps(tIn, better, ti);
+        inIdx = _mm512_mask_mov_epi32(inIdx, better, _mm512_set1_epi32(int(in_.facet[i])));
+    }
+    __m512 tExit = _mm512_set1_ps(kInf);
+    for (size_t i = 0; i < out_.a.size(); ++i) tExit = _mm512_min_ps(tExit, t(out_, i));
+    __mmask16 enters = _mm512_mask_cmp_ps_mask(_mm512_cmp_ps_mask(tIn, _mm512_setzero_ps(), _CMP_GT_OQ),
+                                               tExit, tIn, _CMP_NLT_UQ);
+    for (size_t i = 0; i < parallelOffset_.size(); ++i) {
+        const Vec3f& n = parallelNormal_[i];
+        const Floats16 side = ox * Floats16(n.x) + oy * Floats16(n.y) + oz * Floats16(n.z);
+        enters &= __mmask16(~(Floats16(parallelOffset_[i]) < side));
+    }
+    tOut = tIn;
+    facetOut = inIdx;
+    return enters;
+}
+#endif
 
 #else
 

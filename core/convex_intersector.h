@@ -21,6 +21,11 @@ class ConvexIntersector {
     // A ray from a point inside or on the surface: the facet it leaves through, at t >= 0 (a point a rounding
     // error outside a plane it heads out through leaves at once). Always true for a closed convex stone.
     bool leave(const Vec3f& origin, const Vec3f& dir, SurfaceHit& hit) const;
+#if FACETLIGHT_PACKETS
+    // leave() for sixteen rays at once: each lane gets the t and facet leave() gives its ray, t = +inf
+    // where it finds no way out.
+    void leave(const RayPacket& rays, Floats16& t, __m512i& facet) const;
+#endif
 
 #if defined(__AVX512F__)
     static constexpr size_t kWidth = 16;  // floats per SIMD register (AVX-512)
@@ -29,7 +34,7 @@ class ConvexIntersector {
 #endif
 
   private:
-    size_t padded_ = 0;
+    size_t planes_ = 0, padded_ = 0;
     // Padding planes have a zero normal, so they are neither entered nor left.
     std::vector<float> nx_, ny_, nz_, offset_;
 };
@@ -41,6 +46,11 @@ class ConvexBeamEntry {
   public:
     ConvexBeamEntry(const Stone& stone, const Vec3f& dir);
     bool enter(const Vec3f& origin, SurfaceHit& hit) const;
+#if FACETLIGHT_PACKETS
+    // enter() for sixteen origins at once: the lanes that enter, each with the t and facet enter() gives.
+    LaneMask enter(const Floats16& ox, const Floats16& oy, const Floats16& oz, Floats16& t,
+                   __m512i& facet) const;
+#endif
 
   private:
     // A structure of arrays padded to kWidth, for the planes the beam heads in through (padding at
@@ -52,6 +62,9 @@ class ConvexBeamEntry {
         void pad(float a_);
     };
     Planes in_, out_;
+    // The positions in in_ of its real planes, in the order enter() settles ties: by position modulo kWidth
+    // (its SIMD lane), then by position.
+    std::vector<uint32_t> inTieOrder_;
     // Planes parallel to the beam: a ray outside one of them misses the stone.
     std::vector<Vec3f> parallelNormal_;
     std::vector<float> parallelOffset_;

@@ -29,6 +29,11 @@ class LightModel {
     // Collimated: the one direction every photon travels in.
     bool collimated() const { return kind_ == LightModelKind::Collimated; }
     Vec3 direction() const { return dir_; }
+#if FACETLIGHT_PACKETS
+    // Collimated only: sample() for sixteen streams at once (their Rng::state()s, advanced as sample()
+    // advances them), each lane's origin rounded to float as Vec3f does; every direction is direction().
+    void sampleBeam(uint64_t* state, Floats16& ox, Floats16& oy, Floats16& oz) const;
+#endif
 
   private:
     LightModelKind kind_;

@@ -54,14 +54,6 @@ Material Material::constant(double n) {
     return m;
 }
 
-double Material::index(double wavelengthNm) const {
-    if (terms_ == 0) return n0_;
-    const double l2 = (wavelengthNm * 1e-3) * (wavelengthNm * 1e-3);
-    double n2 = 1;
-    for (int i = 0; i < terms_; ++i) n2 += b_[i] * l2 / (l2 - c2_[i]);
-    return std::sqrt(n2);
-}
-
 std::vector<std::string> materialNames() {
     std::vector<std::string> names;
     for (const SellmeierFit& fit : kFits) names.emplace_back(fit.name);

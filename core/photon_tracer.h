@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "facet_stats.h"
+#include "fresnel.h"
 #include "light_model.h"
 #include "material.h"
 #include "ray.h"
@@ -28,24 +29,6 @@ struct TraceControl {
     std::atomic<uint64_t> photonsDone{0};
     std::atomic<bool> cancel{false};  // checked before each block; a cancelled trace returns cancelled = true
 };
-
-// Unpolarised Fresnel reflectance at an interface, for a ray with cos(incidence) cosI > 0 going from index
-// n1 to n2 with eta = n1 / n2.
-struct FresnelResult {
-    bool totalInternal = false;
-    float reflectance = 1;  // 1 under total internal reflection
-    float cosT = 0;         // cos of the refraction angle
-};
-inline FresnelResult fresnel(float cosI, float eta) {
-    const float sin2T = eta * eta * std::max(0.0f, 1 - cosI * cosI);
-    if (sin2T >= 1) return {true, 1.0f, 0.0f};
-    const float cosT = std::sqrt(1 - sin2T);
-    // Rs and Rp of docs/optics.md with numerator and denominator divided by n2, over one common denominator.
-    const float sNum = eta * cosI - cosT, sDen = eta * cosI + cosT;
-    const float pNum = eta * cosT - cosI, pDen = eta * cosT + cosI;
-    const float r = (sNum * sNum * pDen * pDen + pNum * pNum * sDen * sDen) / (2 * sDen * sDen * pDen * pDen);
-    return {false, r, cosT};
-}
 
 // Everything a photon needs, prepared once per trace: the stone's intersector, the light, the material.
 class TraceScene {

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "geometry.h"
+#include "simd.h"
 
 namespace facetlight {
 
@@ -31,5 +32,12 @@ struct SurfaceHit {
     float t = 0;
     uint32_t facet = 0;
 };
+
+#if FACETLIGHT_PACKETS
+// Sixteen rays, one per lane.
+struct RayPacket {
+    Floats16 ox, oy, oz, dx, dy, dz;
+};
+#endif
 
 }  // namespace facetlight
