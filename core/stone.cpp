@@ -451,23 +451,43 @@ private:
         }
     }
 
-    // The slope of the main facets: those that run from the table (or culet) to the girdle; failing that,
-    // the largest facet touching the girdle.
+    // The slope of the main facets: those that run from the table (or culet) down to the girdle; failing
+    // that, the largest facet at the girdle. A facet reaches the girdle where it shares a vertex with a
+    // girdle facet (or, on a knife edge, with the other side) or comes down to the girdle's thinnest
+    // point: on a fancy outline the girdle's height varies, so no one height tells. Of those at the table,
+    // the largest of those that come closest to the girdle (within a tenth of the crown's height: a pear's
+    // stars touch the girdle at its point, but its bezels come much lower).
     std::optional<double> mainAngle(Region region, double girdleZ, double apexZ) const {
-        const double eps = 1e-6 * scale_;
+        const double eps = 1e-6 * scale_, side = region == Region::Crown ? 1 : -1;
+        const double closeEnough = 0.1 * std::fabs(apexZ - girdleZ);
+        std::vector<bool> atGirdle(stone_.vertices.size(), false);
+        const Region otherSide = region == Region::Crown ? Region::Pavilion : Region::Crown;
+        for (const auto& f : stone_.facets) {
+            if (f.region != Region::Girdle && f.region != otherSide) continue;
+            for (uint32_t v : f.outline) atGirdle[v] = true;
+        }
         const Facet* best = nullptr;
-        int bestRank = -1;
+        bool bestAtApex = false;
+        double bestHeight = 0;  // of the facet's lowest point above the girdle (crown; below it, pavilion)
+        auto outranksBest = [&](const Facet& f, bool atApex, double height) {
+            if (!best) return true;
+            if (atApex != bestAtApex) return atApex;
+            if (std::fabs(height - bestHeight) > closeEnough) return height < bestHeight;
+            return f.area > best->area;
+        };
         for (const auto& f : stone_.facets) {
             if (f.region != region) continue;
             bool touchesGirdle = false, touchesApex = false;
+            double height = INFINITY;
             for (uint32_t v : f.outline) {
                 const double z = stone_.vertices[v].z;
-                touchesGirdle |= region == Region::Crown ? z <= girdleZ + eps : z >= girdleZ - eps;
+                height = std::min(height, side * (z - girdleZ));
+                touchesGirdle |= atGirdle[v];
                 touchesApex |= std::fabs(z - apexZ) <= eps;
             }
-            if (!touchesGirdle) continue;
-            const int rank = touchesApex ? 1 : 0;
-            if (rank > bestRank || (rank == bestRank && f.area > best->area)) best = &f, bestRank = rank;
+            if (!touchesGirdle && height > eps) continue;
+            if (!outranksBest(f, touchesApex, height)) continue;
+            best = &f, bestAtApex = touchesApex, bestHeight = height;
         }
         if (!best) return std::nullopt;
         return degrees(std::acos(std::clamp(std::fabs(best->normal.z), 0.0, 1.0)));
