@@ -56,10 +56,11 @@ void run(RenderOptions& o) {
 
     writeFile(out / "render.png", result.renderPng);
     writeFile(out / "heatmap.png", result.heatmapPng);
+    writeFile(out / "heatmap.json", result.heatmapLayout);
     writeFile(out / "angular.png", result.angularPng);
     writeFile(out / "stats.csv", result.statsCsv);
     writeFile(out / "stats.json", result.stats.dump(2) + "\n");
-    std::cout << "wrote render.png, heatmap.png, angular.png, stats.json, stats.csv to " << out.string()
+    std::cout << "wrote render.png, heatmap.png, heatmap.json, angular.png, stats.json, stats.csv to " << out.string()
               << " in " << seconds << " s\n";
 }
 

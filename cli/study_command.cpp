@@ -65,6 +65,7 @@ void runStudyCommand(const StudyOptions& options) {
     // A trace-only study still has its heat-map; the render and the angular plot come with a render.
     for (const auto& [name, bytes] : {std::pair{"render.png", &result.renderPng},
                                       std::pair{"heatmap.png", &result.heatmapPng},
+                                      std::pair{"heatmap.json", &result.heatmapLayout},
                                       std::pair{"angular.png", &result.angularPng}})
         if (!bytes->empty()) writeFile(out / name, *bytes);
     writeFile(out / "stats.json", result.stats.dump(2));

@@ -92,6 +92,7 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyCon
         writeFacetCsv(csv, traced.stats, stone);
         result.statsCsv = csv.str();
         result.heatmapPng = encodePng(facetHeatmap(stone, traced.stats));
+        result.heatmapLayout = toJson(heatmapLayout(stone), stone).dump();
     }
 
     if (!settings.render) {

@@ -34,7 +34,8 @@ struct StudyControl {
 struct StudyResult {
     nlohmann::json stats;                           // the statistics document (docs/stats-schema.md)
     std::string statsCsv;                           // the facet table
-    std::string renderPng, heatmapPng, angularPng;  // empty without a render
+    std::string renderPng, heatmapPng, angularPng;  // empty without a render (the heat-map: always)
+    std::string heatmapLayout;  // heatmap.png's facets in pixels (JSON, docs/stats-schema.md), with it
 };
 
 // Throws Canceled when control.cancel is set while it runs, Error on bad settings.

@@ -140,6 +140,7 @@ std::vector<Route> Api::routes() {
         {"GET", "/api/jobs/{id}/stats.csv"},
         {"GET", "/api/jobs/{id}/render.png"},
         {"GET", "/api/jobs/{id}/heatmap.png"},
+        {"GET", "/api/jobs/{id}/heatmap.json"},
         {"GET", "/api/jobs/{id}/angular.png"},
         {"GET", "/api/meshes"},
         {"POST", "/api/meshes"},
@@ -189,6 +190,7 @@ json Api::statusJson(const JobRecord& job) const {
             if (request.contains("render") && request["render"].is_object()) {
                 links["render"] = self + "/render.png";
                 links["heatmap"] = self + "/heatmap.png";
+                links["heatmap_layout"] = self + "/heatmap.json";
                 links["angular"] = self + "/angular.png";
             }
             break;
@@ -368,6 +370,7 @@ void Api::install(httplib::Server& server, bool accessLog) {
         {"GET /api/jobs/{id}/stats.csv", result("stats.csv", "text/csv")},
         {"GET /api/jobs/{id}/render.png", result("render.png", "image/png")},
         {"GET /api/jobs/{id}/heatmap.png", result("heatmap.png", "image/png")},
+        {"GET /api/jobs/{id}/heatmap.json", result("heatmap.json", kJsonType)},
         {"GET /api/jobs/{id}/angular.png", result("angular.png", "image/png")},
         {"GET /api/meshes", [this](const Request&, Response& res) { sendJson(res, 200, catalog_.list()); }},
     };

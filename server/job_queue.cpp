@@ -128,6 +128,7 @@ void JobQueue::runJob(const std::string& id, StudyControl& control) {
         store_.writeResult(id, "stats.csv", result.statsCsv);
         if (!result.renderPng.empty()) store_.writeResult(id, "render.png", result.renderPng);
         if (!result.heatmapPng.empty()) store_.writeResult(id, "heatmap.png", result.heatmapPng);
+        if (!result.heatmapLayout.empty()) store_.writeResult(id, "heatmap.json", result.heatmapLayout);
         if (!result.angularPng.empty()) store_.writeResult(id, "angular.png", result.angularPng);
         store_.markFinished(id, JobState::Succeeded);
     } catch (const Canceled&) {

@@ -283,6 +283,7 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
     result.statsCsv = readFile(folder.path() / "stats.csv").value_or("");
     result.renderPng = readFile(folder.path() / "render.png").value_or("");
     result.heatmapPng = readFile(folder.path() / "heatmap.png").value_or("");
+    result.heatmapLayout = readFile(folder.path() / "heatmap.json").value_or("");
     result.angularPng = readFile(folder.path() / "angular.png").value_or("");
     return result;
 }

@@ -155,6 +155,44 @@ TEST(Study, CancelThrowsCanceled) {
     EXPECT_THROW(runStudy(roundBrilliant(), s, control), Canceled);
 }
 
+// The layout a page lays over the heat-map: every facet but the girdle's, once, inside the picture, far ones
+// first, the table around the crown diagram's centre.
+TEST(Pictures, HeatmapLayoutPlacesEveryDrawnFacet) {
+    const Stone& stone = roundBrilliant();
+    const HeatmapLayout layout = heatmapLayout(stone);
+    EXPECT_EQ(layout.facets.size(), stone.facets.size() - stone.facetCount(Region::Girdle));
+    std::vector<int> seen(stone.facets.size(), 0);
+    double lastZ[2] = {-INFINITY, INFINITY};
+    for (const HeatmapFacet& f : layout.facets) {
+        const Facet& facet = stone.facets[f.facet];
+        ++seen[f.facet];
+        EXPECT_EQ(f.side, facet.region == Region::Pavilion ? 1 : 0) << facet.name;
+        EXPECT_EQ(f.outline.size(), facet.outline.size());
+        for (const Point2& p : f.outline) {
+            EXPECT_TRUE(p[0] >= 0 && p[0] <= layout.width && p[1] >= 0 && p[1] <= layout.height)
+                << facet.name;
+        }
+        // Crown facets from the girdle up, pavilion facets from the girdle down.
+        if (f.side == 0) {
+            EXPECT_GE(facet.centroid.z, lastZ[0]) << facet.name;
+        } else {
+            EXPECT_LE(facet.centroid.z, lastZ[1]) << facet.name;
+        }
+        lastZ[f.side] = facet.centroid.z;
+    }
+    for (size_t i = 0; i < stone.facets.size(); ++i)
+        EXPECT_EQ(seen[i], stone.facets[i].region == Region::Girdle ? 0 : 1) << stone.facets[i].name;
+    // The table is drawn last on its side and its centroid is the crown diagram's centre.
+    const HeatmapFacet& table = layout.facets[stone.facets.size() - stone.facetCount(Region::Girdle) -
+                                              stone.facetCount(Region::Pavilion) - 1];
+    EXPECT_EQ(stone.facets[table.facet].region, Region::Table);
+    EXPECT_NEAR(table.centroid[0], layout.width * 0.25 + 5, 1.0);
+    const nlohmann::json doc = toJson(layout, stone);
+    ASSERT_EQ(doc["facets"].size(), layout.facets.size());
+    EXPECT_EQ(doc["facets"][0]["points"].size(), layout.facets[0].outline.size());
+    EXPECT_EQ(doc["facets"].back()["side"], "pavilion");
+}
+
 TEST(Pictures, HeatmapAndAngularPlotAreNotBlank) {
     const TraceResult traced = trace(roundBrilliant(), smallTrace(2));
     const Image heatmap = facetHeatmap(roundBrilliant(), traced.stats);

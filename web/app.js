@@ -616,7 +616,58 @@ function figureCard(f, totals, emphasis = false) {
       h('span', { class: 'figure-hint' }, f.hint)));
 }
 
-function pictures(job, name) {
+// --- heat-map overlay ----------------------------------------------------------------------------------------
+// The heat-map's facets as shapes laid over its picture (heatmap.json): pointing at a facet names it and
+// lights up its row of the facet table; pointing at a row lights up the facet.
+const SVG_NS = 'http://www.w3.org/2000/svg';
+function svg(tag, attrs = {}, ...children) {
+  const el = document.createElementNS(SVG_NS, tag);
+  for (const [key, value] of Object.entries(attrs)) el.setAttribute(key, String(value));
+  el.append(...children);
+  return el;
+}
+
+// Lights up facet `id` (null: none) within `root`: its shapes on the heat-map and its table row.
+function linkFacet(root, id) {
+  for (const el of root.querySelectorAll('.linked')) el.classList.remove('linked');
+  if (id === null) return;
+  for (const el of root.querySelectorAll(`[data-facet="${id}"]`)) el.classList.add('linked');
+}
+
+async function overlayHeatmap(figure, href, stats) {
+  let layout;
+  try {
+    layout = await api(href);
+  } catch {
+    return;  // the picture itself is still there
+  }
+  const anchor = figure.querySelector('a');
+  if (!layout || !anchor || !anchor.isConnected) return;
+  const facets = new Map(((stats && stats.facets) || []).map((f) => [f.id, f]));
+  const hit = stats && stats.totals ? stats.totals.hit : 0;
+  const describe = (f) => {
+    const s = facets.get(f.id);
+    return s ? `${humanize(f.name)} (${f.side}): ${fmtPctErr(s.leaving_share, shareStderr(s.leaving_share, hit))} of the light leaving`
+      : humanize(f.name);
+  };
+  const readout = h('p', { class: 'heatmap-readout', 'aria-live': 'polite' }, 'Point at a facet to name it.');
+  const shapes = svg('svg', { class: 'heatmap-overlay', viewBox: `0 0 ${layout.width} ${layout.height}`, 'aria-hidden': 'true' },
+    ...layout.facets.map((f) => svg('polygon', { points: f.points.map((p) => p.join(',')).join(' '), 'data-facet': f.id },
+      svg('title', {}, describe(f)))));
+  const root = figure.closest('.result, .compare-card') || figure;
+  const byId = new Map(layout.facets.map((f) => [String(f.id), f]));
+  shapes.addEventListener('mouseover', (e) => {
+    const id = e.target.getAttribute && e.target.getAttribute('data-facet');
+    if (id === null || !byId.has(id)) return;
+    linkFacet(root, id);
+    readout.textContent = describe(byId.get(id));
+  });
+  shapes.addEventListener('mouseleave', () => linkFacet(root, null));
+  anchor.append(shapes);
+  figure.append(readout);
+}
+
+function pictures(job, name, stats) {
   const links = job.links || {};
   const render = job.settings && job.settings.render;
   if (!links.render) {
@@ -628,10 +679,12 @@ function pictures(job, name) {
     { href: links.heatmap, cls: 'pic-heatmap', title: 'Facet heat-map', alt: `Heat-map of ${name}: facets shaded by the share of light leaving them` },
     { href: links.angular, cls: 'pic-angular', title: 'Exit angles', alt: `Chart of ${name}: where the light leaves, by angle from vertical` },
   ];
-  return h('div', { class: 'pictures' }, items.map((p) => h('figure', { class: `picture ${p.cls}` },
+  const figures = items.map((p) => h('figure', { class: `picture ${p.cls}` },
     h('a', { href: p.href, target: '_blank', rel: 'noopener' },
       h('img', { src: p.href, alt: p.alt, ...(p.cls === 'pic-angular' ? {} : size), decoding: 'async' })),
-    h('figcaption', {}, p.title))));
+    h('figcaption', {}, p.title)));
+  if (links.heatmap_layout) overlayHeatmap(figures[1], links.heatmap_layout, stats);
+  return h('div', { class: 'pictures' }, figures);
 }
 
 // Standard error of a share of the photons that hit the stone (binomial), as the statistics compute it.
@@ -676,7 +729,11 @@ function facetTable(facets, hit) {
           },
         }, c.label, h('span', { class: 'sort-mark', 'aria-hidden': 'true' }, active ? (dir > 0 ? ' ▲' : ' ▼') : ' ↕')));
     }));
-    const rows = sorted.map((f) => h('tr', { 'data-facet': f.id, 'data-region': f.region }, FACET_COLUMNS.map((c) => {
+    const rows = sorted.map((f) => h('tr', {
+      'data-facet': f.id, 'data-region': f.region,
+      onmouseenter: (e) => linkFacet(e.currentTarget.closest('.result') || document, f.id),
+      onmouseleave: (e) => linkFacet(e.currentTarget.closest('.result') || document, null),
+    }, FACET_COLUMNS.map((c) => {
       if (c.key === 'leaving_share') {
         return h('td', { class: 'num share-cell' },
           h('span', { class: 'mini-track', 'aria-hidden': 'true' },
@@ -724,7 +781,7 @@ function resultPage(job, stats) {
       h('p', { class: 'hint' }, 'Shares of the photons that hit the stone, with one standard error.'),
       h('dl', { class: 'figures' }, FIGURES.map((f, i) => figureCard(f, totals, i === 0)))),
     h('section', { class: 'card', 'aria-labelledby': 'pictures-title' },
-      h('h2', { id: 'pictures-title' }, 'Pictures'), pictures(job, name)),
+      h('h2', { id: 'pictures-title' }, 'Pictures'), pictures(job, name, stats)),
     h('div', { class: 'result-grid' },
       h('section', { class: 'card', 'aria-labelledby': 'regions-title' },
         h('h2', { id: 'regions-title' }, 'Where the light leaves'), regionTable(stats.regions || {}, 'Light leaving each region', totals.hit)),
@@ -829,7 +886,7 @@ function compareCards(entries) {
         h('h3', {}, h('span', { class: 'rank-no small' }, `#${i + 1}`), ' ', h('a', { href: `#/jobs/${e.job.id}` }, entryName(e))),
         h('p', { class: 'rank-meta' }, jobSummary(e.job.settings)),
         h('p', { class: 'compare-value' }, fmtPctErr(t.crown_return, t.crown_return_stderr), h('span', { class: 'muted' }, ' crown return')),
-        pictures(e.job, entryName(e)),
+        pictures(e.job, entryName(e), e.stats),
         regionTable(e.stats.regions || {}, `Light leaving each region, ${entryName(e)}`, t.hit, true));
     })));
 }

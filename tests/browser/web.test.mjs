@@ -294,6 +294,18 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.click('table.facets button[data-sort="id"]');
     assert.deepEqual(await rows(), [...stats.facets].map((f) => f.id).sort((a, b) => a - b));
 
+    // The heat-map and the facet table point at each other.
+    const table = stats.facets.find((f) => f.region === 'table');
+    await page.hover(`.pic-heatmap polygon[data-facet="${table.id}"]`);
+    assert.ok(await page.locator(`table.facets tr[data-facet="${table.id}"].linked`).count() === 1, 'hovering the table lights its row');
+    const readout = await page.textContent('.pic-heatmap .heatmap-readout');
+    assert.ok(readout.startsWith(`${table.name.replace(/_/g, ' ')} (crown): `), readout);
+    assert.match(readout, /: \d+(\.\d+)? % ± [\d.]+ of the light leaving$/);
+    const pavilion = stats.facets.find((f) => f.region === 'pavilion');
+    await page.hover(`table.facets tr[data-facet="${pavilion.id}"]`);
+    assert.equal(await page.locator(`.pic-heatmap polygon[data-facet="${pavilion.id}"].linked`).count(), 1);
+    assert.equal(await page.locator(`table.facets tr[data-facet="${table.id}"].linked`).count(), 0);
+
     const json = await page.getAttribute('a[href$="/stats"]', 'href');
     const csv = await page.getAttribute('a[href$="/stats.csv"]', 'href');
     assert.equal((await fetch(`${baseUrl}${json}`)).status, 200);

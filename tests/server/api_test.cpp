@@ -187,6 +187,16 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
         ASSERT_GT(p->body.size(), 24u);
         EXPECT_EQ(p->body.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
     }
+    EXPECT_EQ(done["links"]["heatmap_layout"], "/api/jobs/" + id + "/heatmap.json");
+    auto layout = client_->Get("/api/jobs/" + id + "/heatmap.json");
+    ASSERT_TRUE(layout && layout->status == 200);
+    EXPECT_EQ(layout->get_header_value("Content-Type"), "application/json");
+    const json map = json::parse(layout->body);
+    EXPECT_EQ(map["width"], 1100);
+    size_t drawn = 0;
+    const json statsDoc = json::parse(stats->body);
+    for (const json& f : statsDoc["facets"]) drawn += f["region"] != "girdle";
+    EXPECT_EQ(map["facets"].size(), drawn);
     auto png = client_->Get("/api/jobs/" + id + "/render.png");
     const auto be32 = [&](size_t at) {
         uint32_t v = 0;
