@@ -8,6 +8,7 @@
 
 #if FACETLIGHT_PACKETS
 
+#include <array>
 #include <bit>
 #include <limits>
 
@@ -60,6 +61,14 @@ inline Floats16 clampUnit(Floats16 v) {
     return select(v < zero, zero, select(one < v, one, v));
 }
 
+// The normal of each lane's facet.
+inline std::array<Floats16, 3> gatherNormals(const std::vector<Vec3f>& normal, __m512i facet) {
+    const float* x = &normal[0].x;
+    const __m512i at = _mm512_add_epi32(facet, _mm512_slli_epi32(facet, 1));  // 3 floats per normal
+    return {_mm512_i32gather_ps(at, x, 4), _mm512_i32gather_ps(at, x + 1, 4),
+            _mm512_i32gather_ps(at, x + 2, 4)};
+}
+
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 }  // namespace
@@ -110,10 +119,7 @@ void PhotonWalker::startPacket(const TraceScene& s, uint64_t first, uint64_t end
     const LaneMask hits = lanes & s.beam_->enter(ox, oy, oz, t, facet);
     const Vec3f d(s.light_.direction());
     const Floats16 dx(d.x), dy(d.y), dz(d.z);
-    const float* normals = &s.normal_[0].x;
-    const __m512i at = _mm512_add_epi32(facet, _mm512_slli_epi32(facet, 1));  // 3 floats per normal
-    const Floats16 nx = _mm512_i32gather_ps(at, normals, 4), ny = _mm512_i32gather_ps(at, normals + 1, 4),
-                   nz = _mm512_i32gather_ps(at, normals + 2, 4);
+    const auto [nx, ny, nz] = gatherNormals(s.normal_, facet);
     const Floats16 cosI = clampUnit(-(dx * nx + dy * ny + dz * nz)), eta = Floats16(1.0f) / n;
     const FresnelTerms<Floats16> fr = fresnelTerms(cosI, eta);
     const LaneMask reflects = hits & (uniformOf(started.rng, hits) < fr.reflectance);
@@ -145,10 +151,7 @@ void PhotonWalker::stepPacket(const TraceScene& s, Packet& lanes, Tally& tally) 
     s.convex_->leave(ray, t, facet);
     const LaneMask live = lanes.live, inside = live & (t < Floats16(kInf));
     const Floats16 px = ray.ox + ray.dx * t, py = ray.oy + ray.dy * t, pz = ray.oz + ray.dz * t;
-    const float* normals = &s.normal_[0].x;
-    const __m512i at = _mm512_add_epi32(facet, _mm512_slli_epi32(facet, 1));  // 3 floats per normal
-    const Floats16 nx = _mm512_i32gather_ps(at, normals, 4), ny = _mm512_i32gather_ps(at, normals + 1, 4),
-                   nz = _mm512_i32gather_ps(at, normals + 2, 4);
+    const auto [nx, ny, nz] = gatherNormals(s.normal_, facet);
     const Floats16 cosI = clampUnit(ray.dx * nx + ray.dy * ny + ray.dz * nz);
     const FresnelTerms<Floats16> fr = fresnelTerms(cosI, Floats16::load(lanes.n));
     const LaneMask draw = inside & LaneMask(~fr.totalInternal);
