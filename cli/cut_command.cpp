@@ -10,6 +10,7 @@
 #include "error.h"
 #include "obj_writer.h"
 #include "stone.h"
+#include "terminal_output.h"
 
 namespace facetlight::cli {
 
@@ -42,18 +43,7 @@ void printSummary(const Stone& stone, const std::string& path) {
     std::printf("wrote %s: %zu facets (table %d, crown %d, girdle %d, pavilion %d)\n", path.c_str(),
                 stone.facets.size(), stone.facetCount(Region::Table), stone.facetCount(Region::Crown),
                 stone.facetCount(Region::Girdle), stone.facetCount(Region::Pavilion));
-    const Proportions& p = stone.proportions;
-    auto show = [](const char* label, const std::optional<double>& v, const char* unit) {
-        if (v) std::printf("  %-15s %7.2f %s\n", label, *v, unit);
-    };
-    std::printf("  %-15s %7.3f\n", "length/width", p.length / p.width);
-    show("table", p.tablePct, "%");
-    show("crown height", p.crownHeightPct, "%");
-    show("girdle", p.girdlePct, "%");
-    show("pavilion depth", p.pavilionDepthPct, "%");
-    show("total depth", p.totalDepthPct, "%");
-    show("crown angle", p.crownAngleDeg, "deg");
-    show("pavilion angle", p.pavilionAngleDeg, "deg");
+    printProportions(stone.proportions);
 }
 
 }  // namespace

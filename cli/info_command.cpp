@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "mesh_resolver.h"
 #include "stone_json.h"
+#include "terminal_output.h"
 
 namespace facetlight::cli {
 
@@ -16,25 +17,12 @@ struct InfoOptions {
     bool json = false;
 };
 
-void printOptional(const char* label, const std::optional<double>& v, const char* unit) {
-    if (v)
-        std::printf("  %-18s %8.2f %s\n", label, *v, unit);
-    else
-        std::printf("  %-18s %8s\n", label, "-");
-}
-
 void printText(const Stone& stone) {
     std::printf("%s: %zu facets, %zu triangles, %s\n", stone.name.c_str(), stone.facets.size(),
                 stone.triangles.size(), stone.convex ? "convex" : "not convex");
     const Proportions& p = stone.proportions;
     std::printf("\nproportions (length %.4g x width %.4g)\n", p.length, p.width);
-    printOptional("table", p.tablePct, "%");
-    printOptional("crown height", p.crownHeightPct, "%");
-    printOptional("girdle", p.girdlePct, "%");
-    printOptional("pavilion depth", p.pavilionDepthPct, "%");
-    printOptional("total depth", p.totalDepthPct, "%");
-    printOptional("crown angle", p.crownAngleDeg, "deg");
-    printOptional("pavilion angle", p.pavilionAngleDeg, "deg");
+    printProportions(p);
     for (int r = 0; r < kRegionCount; ++r) {
         const Region region = Region(r);
         std::printf("\n%s: %d facets\n", std::string(regionName(region)).c_str(), stone.facetCount(region));

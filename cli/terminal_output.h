@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "error.h"
+#include "stone.h"
 
 namespace facetlight::cli {
 
@@ -21,6 +22,25 @@ inline void writeFile(const std::filesystem::path& path, std::string_view bytes)
     std::ofstream out(path, std::ios::binary);
     if (!out || !out.write(bytes.data(), std::streamsize(bytes.size())) || !out.flush())
         throw Error("cannot write " + path.string());
+}
+
+// A stone's trade proportions, one per line ("-" where one does not apply), as `info` and `cut` print them
+// (scripts/make-meshes reads the second field, or the third after a two-word label).
+inline void printProportions(const Proportions& p) {
+    auto line = [](const char* label, const std::optional<double>& v, const char* unit) {
+        if (v)
+            std::printf("  %-18s %8.2f %s\n", label, *v, unit);
+        else
+            std::printf("  %-18s %8s\n", label, "-");
+    };
+    std::printf("  %-18s %8.3f\n", "length/width", p.length / p.width);
+    line("table", p.tablePct, "%");
+    line("crown height", p.crownHeightPct, "%");
+    line("girdle", p.girdlePct, "%");
+    line("pavilion depth", p.pavilionDepthPct, "%");
+    line("total depth", p.totalDepthPct, "%");
+    line("crown angle", p.crownAngleDeg, "deg");
+    line("pavilion angle", p.pavilionAngleDeg, "deg");
 }
 
 // Redraws `line()` on stderr every 100 ms while it lives, only when stderr is a terminal and `wanted`.
