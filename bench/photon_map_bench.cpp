@@ -20,7 +20,7 @@
 
 #include <nanoflann.hpp>
 
-#include "photon_map.h"
+#include "photonmap/photon_map.h"
 
 namespace facetlight {
 namespace {

@@ -9,12 +9,12 @@
 #include <ctime>
 #include <vector>
 
-#include "floor_photons.h"
-#include "mesh_resolver.h"
-#include "photon_map.h"
-#include "photon_tracer.h"
-#include "renderer.h"
-#include "scene.h"
+#include "intersect/scene.h"
+#include "io/mesh_resolver.h"
+#include "photonmap/floor_photons.h"
+#include "photonmap/photon_map.h"
+#include "render/renderer.h"
+#include "trace/photon_tracer.h"
 
 using namespace facetlight;
 

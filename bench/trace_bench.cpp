@@ -9,9 +9,9 @@
 #include <optional>
 #include <string>
 
-#include "halfspace.h"
-#include "mesh_io.h"
-#include "photon_tracer.h"
+#include "geometry/halfspace.h"
+#include "io/mesh_io.h"
+#include "trace/photon_tracer.h"
 
 using namespace facetlight;
 

@@ -6,11 +6,11 @@
 #include <set>
 
 #include "commands.h"
-#include "cut_library.h"
-#include "error.h"
-#include "obj_writer.h"
-#include "stone.h"
+#include "cuts/cut_library.h"
+#include "io/obj_writer.h"
+#include "stone/stone.h"
 #include "terminal_output.h"
+#include "util/error.h"
 
 namespace facetlight::cli {
 

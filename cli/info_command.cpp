@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "commands.h"
-#include "mesh_resolver.h"
-#include "stone_json.h"
+#include "io/mesh_resolver.h"
+#include "stone/stone_json.h"
 #include "terminal_output.h"
 
 namespace facetlight::cli {

@@ -2,8 +2,8 @@
 #include <iostream>
 
 #include "commands.h"
-#include "error.h"
 #include "process_communicator.h"
+#include "util/error.h"
 
 int main(int argc, char** argv) {
     facetlight::cli::processCommunicator();  // under mpirun, every rank starts MPI before anything else

@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <memory>
 
-#include "error.h"
 #include "process_communicator.h"
+#include "util/error.h"
 
 namespace facetlight::cli {
 namespace {

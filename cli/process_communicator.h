@@ -2,7 +2,7 @@
 // The communicator of this facetlight process: MPI's world when launched under mpirun in a build with
 // FACETLIGHT_MPI (cli/mpi_communicator.cpp), else serial (cli/serial_communicator.cpp). A plain run never
 // touches the MPI runtime.
-#include "distributed.h"
+#include "util/distributed.h"
 
 namespace facetlight::cli {
 

@@ -6,12 +6,12 @@
 #include <sstream>
 
 #include "commands.h"
-#include "error.h"
-#include "mesh_resolver.h"
+#include "io/mesh_resolver.h"
 #include "process_communicator.h"
 #include "progress_json.h"
-#include "study.h"
+#include "study/study.h"
 #include "terminal_output.h"
+#include "util/error.h"
 
 namespace facetlight::cli {
 namespace {

@@ -13,8 +13,8 @@
 #include <string_view>
 #include <thread>
 
-#include "error.h"
-#include "stone.h"
+#include "stone/stone.h"
+#include "util/error.h"
 
 namespace facetlight::cli {
 

@@ -4,14 +4,14 @@
 #include <sstream>
 
 #include "commands.h"
-#include "distributed_trace.h"
-#include "error.h"
-#include "mesh_resolver.h"
-#include "photon_tracer.h"
+#include "io/mesh_resolver.h"
 #include "process_communicator.h"
 #include "progress_json.h"
 #include "terminal_output.h"
+#include "trace/distributed_trace.h"
+#include "trace/photon_tracer.h"
 #include "trace_options.h"
+#include "util/error.h"
 
 namespace facetlight::cli {
 

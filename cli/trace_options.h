@@ -9,8 +9,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "error.h"
-#include "trace_settings.h"
+#include "trace/trace_settings.h"
+#include "util/error.h"
 
 namespace facetlight::cli {
 

@@ -6,7 +6,7 @@
 #include <map>
 #include <regex>
 
-#include "error.h"
+#include "util/error.h"
 
 namespace facetlight::server {
 namespace {

@@ -4,8 +4,8 @@
 #include <iostream>
 #include <new>
 
-#include "error.h"
 #include "job_spec.h"
+#include "util/error.h"
 
 namespace facetlight::server {
 

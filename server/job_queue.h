@@ -13,7 +13,7 @@
 
 #include "job_store.h"
 #include "mesh_catalog.h"
-#include "study.h"
+#include "study/study.h"
 
 namespace facetlight::server {
 

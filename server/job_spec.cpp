@@ -1,7 +1,7 @@
 #include "job_spec.h"
 
-#include "error.h"
-#include "json_fields.h"
+#include "util/error.h"
+#include "util/json_fields.h"
 
 namespace facetlight::server {
 

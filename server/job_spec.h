@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "study.h"
+#include "study/study.h"
 
 namespace facetlight::server {
 

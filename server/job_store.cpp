@@ -10,7 +10,7 @@
 #include <random>
 #include <sstream>
 
-#include "error.h"
+#include "util/error.h"
 
 namespace facetlight::server {
 namespace {

@@ -19,7 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "error.h"
+#include "util/error.h"
 
 extern char** environ;
 

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "study.h"
+#include "study/study.h"
 
 namespace facetlight::server {
 

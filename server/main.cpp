@@ -10,8 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "error.h"
 #include "service.h"
+#include "util/error.h"
 
 int main(int argc, char** argv) {
     using facetlight::server::Service;

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "cut_library.h"
-#include "error.h"
-#include "stone_json.h"
+#include "cuts/cut_library.h"
+#include "stone/stone_json.h"
+#include "util/error.h"
 
 namespace facetlight::server {
 namespace {

@@ -11,10 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/mesh_io.h"
 #include "job_store.h"
 #include "launcher.h"
-#include "mesh_io.h"
-#include "stone.h"
+#include "stone/stone.h"
 
 namespace facetlight::server {
 

@@ -1,11 +1,9 @@
 # The service's in-process tests (tests/server/*_test.cpp: they link the server library, so they stay out of
 # the core test glob) and the end-to-end tests that drive the real binary with curl.
 if(TARGET facetlight_server)
-  file(GLOB FACETLIGHT_SERVER_TEST_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/server/*_test.cpp)
-  foreach(source ${FACETLIGHT_SERVER_TEST_SOURCES})
-    get_filename_component(name ${source} NAME_WE)
-    set(name server_${name})
-    add_executable(${name} ${source})
+  foreach(test api_test)
+    set(name server_${test})
+    add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/server/${test}.cpp)
     target_link_libraries(${name} PRIVATE facetlight::server GTest::gtest_main facetlight_warnings)
     set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
     gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS unit)

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "error.h"
-#include "mesh_io.h"
+#include "io/mesh_io.h"
+#include "util/error.h"
 
 namespace facetlight::fuzz {
 

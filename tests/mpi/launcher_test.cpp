@@ -10,9 +10,9 @@
 #include <fstream>
 #include <thread>
 
-#include "error.h"
-#include "mesh_resolver.h"
-#include "study.h"
+#include "io/mesh_resolver.h"
+#include "study/study.h"
+#include "util/error.h"
 
 using namespace facetlight;
 using namespace facetlight::server;

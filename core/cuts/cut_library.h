@@ -1,0 +1,43 @@
+#pragma once
+// The shipped designs by their snake_case names (the same in the CLI, the API and meshes/): each shape's
+// parameters with defaults and valid ranges, and makeCut() to build one.
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "geometry/polygon_mesh.h"
+
+namespace facetlight {
+
+struct CutParameter {
+    std::string name;  // snake_case key; the command-line flag is --name with '-' for '_'
+    std::string unit;  // "%", "deg", "" (a ratio or a count)
+    std::string help;
+    double defaultValue = 0, min = 0, max = 0;
+    bool integer = false;
+};
+
+using CutValues = std::map<std::string, double>;
+
+struct CutShape {
+    std::string name;
+    std::string description;
+    std::vector<CutParameter> parameters;
+    std::function<PolygonMesh(const CutValues&)> build;  // takes every parameter, already checked
+};
+
+const std::vector<CutShape>& cutShapes();
+// Throws Error listing the known shapes when there is no such shape.
+const CutShape& findCutShape(const std::string& name);
+std::string knownShapeNames();  // comma-separated
+
+// The shape's defaults with `values` overriding some of them. Throws Error for an unknown shape or parameter,
+// a value outside its range or a fraction given for a count, and for proportions that cannot make the stone.
+CutValues completeCutValues(const CutShape& shape, const CutValues& values);
+PolygonMesh makeCut(const std::string& shape, const CutValues& values = {});
+
+// "round_brilliant --table 57 --crown 34 ...": the command-line arguments that build this design.
+std::string cutCommandLine(const CutShape& shape, const CutValues& completeValues);
+
+}  // namespace facetlight

@@ -1,0 +1,32 @@
+#pragma once
+// The round brilliant built from the proportions the trade grades: every facet a plane (azimuth, slope,
+// offset), the stone their intersection. Conventions in docs/optics.md, "Round brilliant".
+#include <vector>
+
+#include "geometry/halfspace.h"
+#include "geometry/polygon_mesh.h"
+
+namespace facetlight {
+
+struct RoundBrilliantParams {
+    double tablePct = 57;            // corner to corner, % of the girdle diameter
+    double crownAngleDeg = 34;       // bezel slope
+    double pavilionAngleDeg = 40.7;  // pavilion main slope
+    double girdlePct = 2.5;          // at the thin points (bezel and main azimuths); 0 = knife edge
+    double starPct = 50;             // horizontal, from the table edge toward the girdle
+    double lowerHalfPct = 80;        // horizontal, from the girdle toward the centre
+    double culetPct = 0;             // flat to flat, % of the diameter; 0 = pointed
+    int girdleFacets = 0;            // 0 = smooth girdle (64 flat sides); else a multiple of 16
+};
+
+// The facet planes of the stone with girdle diameter 1, girdle centred on z = 0. Throws Error naming the
+// input when the proportions cannot make this stone.
+std::vector<NamedPlane> roundBrilliantPlanes(const RoundBrilliantParams& params);
+
+// The intersection of those planes; also checks that every designed facet survived it.
+PolygonMesh makeRoundBrilliant(const RoundBrilliantParams& params);
+
+// The girdle facet count a setting stands for (64 for the smooth girdle, none for a knife edge).
+int girdleSideCount(const RoundBrilliantParams& params);
+
+}  // namespace facetlight

@@ -1,0 +1,28 @@
+#pragma once
+// What a loader reads from a file, before it is understood as a stone: vertices and polygons, each polygon
+// with the group name the file gave it (empty when none). Stone::build() validates and interprets it.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geometry/geometry.h"
+
+namespace facetlight {
+
+struct PolygonMesh {
+    struct Polygon {
+        std::vector<uint32_t> vertices;  // indices into `vertices`, counter-clockwise seen from outside
+        std::string name;                // facet name from the file (OBJ g/o/usemtl, GemCad tier), or empty
+    };
+    std::vector<Vec3> vertices;
+    std::vector<Polygon> polygons;
+    std::vector<std::string> warnings;   // loader remarks that are not errors (e.g. "fixed orientation")
+};
+
+// Caps that protect the process from hostile or absurd input; loaders refuse meshes beyond them.
+struct MeshLimits {
+    size_t maxVertices = 2'000'000;
+    size_t maxPolygons = 2'000'000;
+};
+
+}  // namespace facetlight

@@ -1,0 +1,155 @@
+#include "optics/light_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "util/error.h"
+
+namespace facetlight {
+namespace {
+
+// An orthonormal basis around a unit vector (Duff et al., "Building an orthonormal basis, revisited",
+// JCGT 6(1), 2017).
+void basis(const Vec3& n, Vec3& u, Vec3& v) {
+    const double sign = std::copysign(1.0, n.z);
+    const double a = -1.0 / (sign + n.z);
+    const double b = n.x * n.y * a;
+    u = {1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
+    v = {b, sign + n.y * n.y * a, -n.y};
+}
+
+// The stone tilted about x by `tilt` is the light rotated by -tilt about x.
+Vec3 untilt(const Vec3& p, double cosT, double sinT) {
+    return {p.x, p.y * cosT + p.z * sinT, -p.y * sinT + p.z * cosT};
+}
+
+// A uniform point (x, y) in the unit disc by rejection, which needs no trigonometry; its squared radius r2 is
+// itself uniform in (0, 1), and (x, y) / sqrt(r2) is a uniform direction.
+struct DiscPoint {
+    double x, y, r2;
+};
+DiscPoint unitDisc(Rng& rng) {
+    for (;;) {
+        const double x = 2 * rng.uniformDouble() - 1, y = 2 * rng.uniformDouble() - 1, r2 = x * x + y * y;
+        if (r2 < 1 && r2 > 0) return {x, y, r2};
+    }
+}
+
+// A direction at cos(theta) from `axis`, in the azimuth of the disc point q.
+Vec3 around(const Vec3& axis, double cosTheta, const DiscPoint& q) {
+    Vec3 u, v;
+    basis(axis, u, v);
+    const double sinTheta = std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta)), s = sinTheta / std::sqrt(q.r2);
+    return u * (q.x * s) + v * (q.y * s) + axis * cosTheta;
+}
+
+}  // namespace
+
+LightModel::LightModel(const LightSettings& s, const Stone& stone) : kind_(s.model) {
+    if (stone.vertices.empty()) throw Error("stone '" + stone.name + "' has no vertices");
+    center_ = stone.bounds.center();
+    for (const Vec3& p : stone.vertices) radius_ = std::max(radius_, length(p - center_));
+    cosTilt_ = std::cos(radians(s.tiltDeg));
+    sinTilt_ = std::sin(radians(s.tiltDeg));
+
+    switch (kind_) {
+        case LightModelKind::Collimated: {
+            dir_ = untilt(normalize(s.direction), cosTilt_, sinTilt_);
+            basis(dir_, u_, v_);
+            // The tightest disc about the centre of the silhouette's bounding rectangle.
+            double uLo = INFINITY, uHi = -INFINITY, vLo = INFINITY, vHi = -INFINITY, front = INFINITY;
+            for (const Vec3& p : stone.vertices) {
+                uLo = std::min(uLo, dot(p, u_));
+                uHi = std::max(uHi, dot(p, u_));
+                vLo = std::min(vLo, dot(p, v_));
+                vHi = std::max(vHi, dot(p, v_));
+                front = std::min(front, dot(p, dir_));
+            }
+            const double cu = 0.5 * (uLo + uHi), cv = 0.5 * (vLo + vHi);
+            for (const Vec3& p : stone.vertices) {
+                discRadius_ = std::max(discRadius_, std::hypot(dot(p, u_) - cu, dot(p, v_) - cv));
+            }
+            discRadius_ *= 1 + 1e-6;
+            discCenter_ = u_ * cu + v_ * cv + dir_ * (front - 0.01 * radius_);
+            break;
+        }
+        case LightModelKind::Hemisphere: {
+            const double sinShadow = std::sin(radians(s.headShadowDeg));
+            sin2Shadow_ = sinShadow * sinShadow;
+            break;
+        }
+        case LightModelKind::Point: {
+            position_ = untilt(s.position, cosTilt_, sinTilt_);
+            const double d = length(center_ - position_);
+            if (!(d > radius_ * 1.001)) {
+                throw Error("light.position must lie outside the stone's bounding sphere (centre " +
+                            std::to_string(center_.z) + " on the z axis, radius " + std::to_string(radius_) +
+                            ")");
+            }
+            cosCone_ = std::sqrt(1 - (radius_ / d) * (radius_ / d));
+            dir_ = normalize(center_ - position_);
+            break;
+        }
+    }
+}
+
+LightRay LightModel::sample(Rng& rng) const {
+    switch (kind_) {
+        case LightModelKind::Collimated: {
+            const DiscPoint q = unitDisc(rng);
+            return {discCenter_ + u_ * (discRadius_ * q.x) + v_ * (discRadius_ * q.y), dir_};
+        }
+        case LightModelKind::Hemisphere: {
+            // Cosine-weighted over the upper hemisphere less the head cone: sin^2(theta) is uniform.
+            const DiscPoint a = unitDisc(rng);
+            const double sin2 = sin2Shadow_ + (1 - sin2Shadow_) * a.r2, s = std::sqrt(sin2 / a.r2);
+            const Vec3 dir = -untilt({a.x * s, a.y * s, std::sqrt(1 - sin2)}, cosTilt_, sinTilt_);
+            Vec3 u, v;
+            basis(dir, u, v);
+            const DiscPoint b = unitDisc(rng);
+            return {center_ - dir * (1.01 * radius_) + u * (radius_ * b.x) + v * (radius_ * b.y), dir};
+        }
+        case LightModelKind::Point: {
+            const DiscPoint q = unitDisc(rng);
+            return {position_, around(dir_, 1 - q.r2 * (1 - cosCone_), q)};
+        }
+    }
+    return {};
+}
+
+#if FACETLIGHT_PACKETS
+void LightModel::sampleBeam(uint64_t* state, Floats16& ox, Floats16& oy, Floats16& oz) const {
+    const __m512d one = _mm512_set1_pd(1.0), two = _mm512_set1_pd(2.0), zero = _mm512_setzero_pd();
+    __m256 origin[3][2];
+    for (int h = 0; h < 2; ++h) {
+        // unitDisc() lane-wise: each lane draws pairs until its own point falls inside the disc.
+        __m512i s = _mm512_load_si512(state + 8 * h);
+        __m512d x = zero, y = zero;
+        for (__mmask8 pending = 0xff; pending;) {
+            const __m512d cx = _mm512_sub_pd(_mm512_mul_pd(two, uniformDoubleOf(s, pending)), one);
+            const __m512d cy = _mm512_sub_pd(_mm512_mul_pd(two, uniformDoubleOf(s, pending)), one);
+            const __m512d r2 = _mm512_add_pd(_mm512_mul_pd(cx, cx), _mm512_mul_pd(cy, cy));
+            const __mmask8 inside = _mm512_mask_cmp_pd_mask(
+                _mm512_mask_cmp_pd_mask(pending, r2, one, _CMP_LT_OQ), r2, zero, _CMP_GT_OQ);
+            x = _mm512_mask_mov_pd(x, inside, cx);
+            y = _mm512_mask_mov_pd(y, inside, cy);
+            pending &= __mmask8(~inside);
+        }
+        _mm512_store_si512(state + 8 * h, s);
+        const __m512d sx = _mm512_mul_pd(_mm512_set1_pd(discRadius_), x);
+        const __m512d sy = _mm512_mul_pd(_mm512_set1_pd(discRadius_), y);
+        auto component = [&](double c, double u, double v) {
+            const __m512d cu = _mm512_add_pd(_mm512_set1_pd(c), _mm512_mul_pd(_mm512_set1_pd(u), sx));
+            return _mm512_cvtpd_ps(_mm512_add_pd(cu, _mm512_mul_pd(_mm512_set1_pd(v), sy)));
+        };
+        origin[0][h] = component(discCenter_.x, u_.x, v_.x);
+        origin[1][h] = component(discCenter_.y, u_.y, v_.y);
+        origin[2][h] = component(discCenter_.z, u_.z, v_.z);
+    }
+    ox = Floats16::join(origin[0][0], origin[0][1]);
+    oy = Floats16::join(origin[1][0], origin[1][1]);
+    oz = Floats16::join(origin[2][0], origin[2][1]);
+}
+#endif
+
+}  // namespace facetlight

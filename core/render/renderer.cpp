@@ -1,0 +1,329 @@
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <thread>
+
+#include "optics/spectrum.h"
+#include "trace/photon_tracer.h"
+#include "util/error.h"
+#include "util/random.h"
+
+namespace facetlight {
+namespace {
+
+constexpr int kTile = 16;
+// A branch of the ray tree is followed both ways at an interface while both weights stay above this; below
+// it one way is chosen with the Fresnel probabilities (unbiased, and the tree stays small).
+constexpr double kBranchWeight = 0.05;
+
+// Everything a worker reads: shared, constant.
+struct Context {
+    const Scene& scene;
+    const PhotonMap& caustics;
+    const RenderSettings& settings;
+    SpectralBands bands;
+    Vec3 toViewer;  // world
+    GatherSettings gather;
+    double causticScale;  // 1 / samples: each sample adds its share of the (already coloured) caustic light
+};
+
+// Per thread, never shared.
+struct Worker {
+    GatherState gatherState;
+    std::array<Neighbor, kCausticNeighbors> neighbors;
+};
+
+struct Branch {
+    Vec3 origin, dir;
+    double weight;
+    int depth;
+    bool inside;
+    // Whether the path went through the stone with a wavelength-dependent index. Until it has, its light does
+    // not depend on the sample's band: it is counted as white (1 / samples per sample), free of colour noise.
+    bool spectral;
+};
+
+class SampleTracer {
+  public:
+    SampleTracer(const Context& c, Worker& w, Rng& rng) : c_(c), w_(w), rng_(rng) {}
+
+    // Radiance (linear sRGB) along a camera ray for wavelength band `band` with refractive index n.
+    Vec3 trace(const Vec3& origin, const Vec3& dir, int band, double n) {
+        const Vec3& bandColour = c_.bands.colour(band);
+        const Vec3 white = Vec3{1, 1, 1} * c_.causticScale;
+        const double diameter = c_.scene.diameter();
+        const int maxDepth = c_.settings.maxDepth;
+        std::array<Branch, 2 * kMaxDepth + 2> stack;
+        int top = 0;
+        stack[top++] = {origin, dir, 1.0, 0, false, false};
+        Vec3 sum;
+        while (top > 0) {
+            const Branch b = stack[--top];
+            SurfaceHit hit;
+            if (!b.inside) {
+                double tFloor = INFINITY;
+                const bool floor = c_.scene.hitFloor(b.origin, b.dir, tFloor);
+                const bool stone = c_.scene.enter(Vec3f(b.origin), Vec3f(b.dir), hit) && hit.t < tFloor;
+                if (!stone) {
+                    const Vec3& colour = b.spectral ? bandColour : white;
+                    if (floor) {
+                        sum += floorRadiance(b.origin + b.dir * tFloor, colour) * b.weight;
+                    } else {
+                        sum += colour * (b.weight * Scene::environment(c_.scene.toWorld(b.dir), c_.toViewer));
+                    }
+                    continue;
+                }
+                if (b.depth >= maxDepth) continue;
+                const Vec3 p = b.origin + b.dir * double(hit.t);
+                const Vec3f& nf = c_.scene.normal(hit.facet);
+                const Vec3 normal{nf.x, nf.y, nf.z};
+                const double cosI = std::clamp(-dot(b.dir, normal), 0.0, 1.0);
+                const double eta = 1 / n;
+                const FresnelResult fr = fresnel(float(cosI), float(eta));
+                const Vec3 reflected = b.dir + normal * (2 * cosI);
+                const Vec3 refracted = normalize(b.dir * eta + normal * (eta * cosI - fr.cosT));
+                split(stack, top, b, fr.reflectance,
+                      {p + reflected * (1e-6 * diameter), reflected, 0, 0, false, false},
+                      {p, refracted, 0, 0, true, false});
+            } else {
+                if (!c_.scene.leave(Vec3f(b.origin), Vec3f(b.dir), hit) || b.depth >= maxDepth) continue;
+                const Vec3 p = b.origin + b.dir * double(hit.t);
+                const Vec3f& nf = c_.scene.normal(hit.facet);
+                const Vec3 normal{nf.x, nf.y, nf.z};
+                const double cosI = std::clamp(dot(b.dir, normal), 0.0, 1.0);
+                const FresnelResult fr = fresnel(float(cosI), float(n));
+                const Vec3 reflected = b.dir - normal * (2 * cosI);
+                if (fr.totalInternal) {
+                    stack[top++] = {p, reflected, b.weight, b.depth + 1, true, b.spectral};
+                    continue;
+                }
+                const Vec3 out = normalize(b.dir * n - normal * (n * cosI - fr.cosT));
+                split(stack, top, b, fr.reflectance, {p, reflected, 0, 0, true, false},
+                      {p + out * (1e-6 * diameter), out, 0, 0, false, false});
+            }
+        }
+        return sum;
+    }
+
+  private:
+    // Pushes the reflected and transmitted continuations of b, both when they carry enough weight, else one
+    // chosen with probability R (reflection) or 1 - R.
+    template <size_t N>
+    void split(std::array<Branch, N>& stack, int& top, const Branch& b, double r, Branch reflected,
+               Branch transmitted) {
+        reflected.depth = transmitted.depth = b.depth + 1;
+        const bool dispersive = c_.scene.dispersive();
+        reflected.spectral = b.spectral || (reflected.inside && dispersive);
+        transmitted.spectral = b.spectral || (transmitted.inside && dispersive);
+        if (b.weight * std::min(r, 1 - r) > kBranchWeight && top + 2 <= int(N)) {
+            reflected.weight = b.weight * r;
+            transmitted.weight = b.weight * (1 - r);
+            stack[top++] = reflected;
+            stack[top++] = transmitted;
+        } else {
+            Branch& chosen = rng_.uniformDouble() < r ? reflected : transmitted;
+            chosen.weight = b.weight;
+            stack[top++] = chosen;
+        }
+    }
+
+    Vec3 floorRadiance(const Vec3& p, const Vec3& colour) {
+        Vec3 irradiance = colour * c_.scene.directIrradiance(p, rng_);
+        if (!c_.caustics.empty()) {
+            irradiance +=
+                c_.caustics.estimate<Vec3>(p, w_.neighbors, w_.gatherState, c_.gather,
+                                           [](const Photon& ph) {
+                                               return ph.wavelength() > 0
+                                                          ? photonColour(ph.wavelength()) * double(ph.power)
+                                                          : Vec3{1, 1, 1} * double(ph.power);
+                                           }) *
+                c_.causticScale;
+        }
+        // Lambertian: radiance albedo E / pi; the display's exposure takes the 1 / pi (an open floor under
+        // unit irradiance shows as albedo).
+        return irradiance * Scene::kFloorAlbedo;
+    }
+
+    const Context& c_;
+    Worker& w_;
+    Rng& rng_;
+};
+
+struct TileRect {
+    int x0, y0, x1, y1;
+};
+
+int tileCount(int width, int height) {
+    return ((width + kTile - 1) / kTile) * ((height + kTile - 1) / kTile);
+}
+
+// Tiles of the share: offset, offset + stride, ...
+int shareTileCount(int tiles, TileShare share) {
+    return tiles > share.offset ? (tiles - share.offset + share.stride - 1) / share.stride : 0;
+}
+
+TileRect tileRect(int tile, int width, int height) {
+    const int tilesX = (width + kTile - 1) / kTile;
+    const int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
+    return {x0, y0, std::min(x0 + kTile, width), std::min(y0 + kTile, height)};
+}
+
+void checkShare(TileShare share) {
+    if (share.stride < 1 || share.offset < 0 || share.offset >= share.stride)
+        throw Error("tile share " + std::to_string(share.offset) + " of " + std::to_string(share.stride) +
+                    " is not a valid share");
+}
+
+// Calls f(index) for every pixel of the share, tile by tile in tile order, row by row within a tile.
+template <class F>
+void forEachSharePixel(int width, int height, TileShare share, F&& f) {
+    const int tiles = tileCount(width, height);
+    for (int tile = share.offset; tile < tiles; tile += share.stride) {
+        const TileRect t = tileRect(tile, width, height);
+        for (int y = t.y0; y < t.y1; ++y) {
+            for (int x = t.x0; x < t.x1; ++x) f(size_t(y) * size_t(width) + size_t(x));
+        }
+    }
+}
+
+}  // namespace
+
+uint64_t sharePixelCount(int width, int height, TileShare share) {
+    checkShare(share);
+    uint64_t n = 0;
+    forEachSharePixel(width, height, share, [&](size_t) { ++n; });
+    return n;
+}
+
+std::vector<Vec3> sharePixels(const RenderedImage& image, TileShare share) {
+    std::vector<Vec3> out;
+    out.reserve(sharePixelCount(image.width, image.height, share));
+    forEachSharePixel(image.width, image.height, share, [&](size_t i) { out.push_back(image.pixels[i]); });
+    return out;
+}
+
+void placeSharePixels(RenderedImage& image, TileShare share, std::span<const Vec3> pixels) {
+    if (pixels.size() != sharePixelCount(image.width, image.height, share))
+        throw Error("a rank sent " + std::to_string(pixels.size()) + " pixels for its tiles, not " +
+                    std::to_string(sharePixelCount(image.width, image.height, share)));
+    size_t next = 0;
+    forEachSharePixel(image.width, image.height, share, [&](size_t i) { image.pixels[i] = pixels[next++]; });
+}
+
+RenderedImage render(const Scene& scene, const PhotonMap& caustics, const RenderSettings& settings,
+                     int threads, uint64_t seed, const RenderControl& control, TileShare share) {
+    settings.validate();
+    checkShare(share);
+    const Vec3 target = scene.toWorld(scene.center());
+    const Camera camera(settings.camera, target, scene.diameter(), settings.width, settings.height);
+    GatherSettings gather;
+    gather.maxRadius = float(0.04 * scene.diameter());
+    gather.coneK = 1.1f;
+    const Context context{scene,
+                          caustics,
+                          settings,
+                          SpectralBands(settings.samples),
+                          normalize(camera.position() - target),
+                          gather,
+                          1.0 / settings.samples};
+
+    RenderedImage image;
+    image.width = settings.width;
+    image.height = settings.height;
+    image.pixels.assign(size_t(settings.width) * size_t(settings.height), Vec3{});
+    const int tiles = shareTileCount(tileCount(settings.width, settings.height), share);
+    const int workers = std::clamp(threads, 1, std::max(tiles, 1));
+    const Vec3 eye = scene.toStone(camera.position());
+    const double fixedIndex = scene.index(Material::kSodiumD);
+    std::atomic<int> nextTile{0}, tilesDone{0};
+    std::atomic<bool> abort{false};
+    std::vector<std::unique_ptr<Worker>> state;
+    for (int t = 0; t < workers; ++t) state.push_back(std::make_unique<Worker>());
+
+    auto work = [&](Worker& worker) {
+        for (;;) {
+            if (abort.load(std::memory_order_relaxed)) return;
+            if (control.cancel && control.cancel->load(std::memory_order_relaxed)) return;
+            const int k = nextTile.fetch_add(1, std::memory_order_relaxed);
+            if (k >= tiles) return;
+            const auto [x0, y0, x1, y1] =
+                tileRect(share.offset + k * share.stride, settings.width, settings.height);
+            for (int y = y0; y < y1; ++y) {
+                for (int x = x0; x < x1; ++x) {
+                    const uint64_t index = uint64_t(y) * uint64_t(settings.width) + uint64_t(x);
+                    Rng rng(mix64(seed ^ 0x52454e444552ULL), index);
+                    SampleTracer tracer(context, worker, rng);
+                    Vec3 sum;
+                    for (int s = 0; s < settings.samples; ++s) {
+                        const double px = x + rng.uniformDouble(), py = y + rng.uniformDouble();
+                        // Sample s takes band s, at a wavelength jittered within it when that changes the
+                        // index.
+                        const double u = rng.uniformDouble();
+                        const double n =
+                            scene.dispersive() ? scene.index(context.bands.wavelength(s, u)) : fixedIndex;
+                        const Vec3 dir = scene.toStone(camera.direction(px, py));
+                        sum += tracer.trace(eye, dir, s, n);
+                    }
+                    image.pixels[index] = sum;
+                }
+            }
+            tilesDone.fetch_add(1, std::memory_order_relaxed);
+            if (control.pixelsDone) {
+                control.pixelsDone->fetch_add(uint64_t(x1 - x0) * uint64_t(y1 - y0),
+                                              std::memory_order_relaxed);
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    try {
+        for (int t = 1; t < workers; ++t) pool.emplace_back(work, std::ref(*state[t]));
+    } catch (...) {
+        abort = true;
+        for (std::thread& th : pool) th.join();
+        throw Error("cannot start " + std::to_string(workers) + " threads");
+    }
+    work(*state[0]);
+    for (std::thread& th : pool) th.join();
+    image.cancelled = tilesDone.load() != tiles;
+    return image;
+}
+
+RenderedImage render(Communicator& comm, const Scene& scene, const PhotonMap& caustics,
+                     const RenderSettings& settings, int threads, uint64_t seed,
+                     const RenderControl& control) {
+    const TileShare mine{comm.rank(), comm.size()};
+    RenderedImage image = render(scene, caustics, settings, threads, seed, control, mine);
+    image.cancelled = anyRank(comm, image.cancelled);
+    if (comm.size() == 1 || image.cancelled) return image;
+    // Rank 0's own tiles are in place already.
+    const std::vector<Vec3> pixels = comm.isRoot() ? std::vector<Vec3>{} : sharePixels(image, mine);
+    const std::vector<std::string> parts = comm.gather(asBytes(std::span<const Vec3>(pixels)));
+    for (int r = 1; r < int(parts.size()); ++r) {
+        std::vector<Vec3> theirs;
+        appendFromBytes(parts[r], theirs);
+        placeSharePixels(image, {r, comm.size()}, theirs);
+    }
+    return image;
+}
+
+Image toDisplay(const RenderedImage& r) {
+    Image image(r.width, r.height);
+    auto tone = [](double v) {
+        constexpr double knee = 0.8;  // linear below, then an exponential shoulder toward 1
+        v = std::max(v, 0.0);
+        return float(
+            srgbEncode(v <= knee ? v : knee + (1 - knee) * (1 - std::exp(-(v - knee) / (1 - knee)))));
+    };
+    for (int y = 0; y < r.height; ++y) {
+        for (int x = 0; x < r.width; ++x) {
+            const Vec3& p = r.pixels[size_t(y) * r.width + x];
+            image.at(x, y) = {tone(p.x), tone(p.y), tone(p.z)};
+        }
+    }
+    return image;
+}
+
+}  // namespace facetlight

@@ -1,0 +1,74 @@
+#pragma once
+// A cut stone: a closed, outward-oriented triangle mesh grouped into planar facets, put in the standard frame
+// (girdle plane z = 0, table up, centred on the z axis) with its regions and trade proportions measured.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geometry/geometry.h"
+#include "geometry/polygon_mesh.h"
+
+namespace facetlight {
+
+enum class Region : uint8_t { Table, Crown, Girdle, Pavilion };
+constexpr int kRegionCount = 4;
+std::string_view regionName(Region r);
+
+struct Triangle {
+    std::array<uint32_t, 3> v;  // counter-clockwise seen from outside
+    uint32_t facet;             // index into Stone::facets
+};
+
+struct Facet {
+    uint32_t id = 0;       // index in Stone::facets
+    std::string name;      // from the file or design; "facet_<id>" when the file gave none
+    Region region = Region::Crown;
+    Vec3 normal;           // outward unit normal (Newell's method over the outline)
+    double offset = 0;     // plane: dot(normal, p) == offset
+    double area = 0;
+    Vec3 centroid;
+    std::vector<uint32_t> triangles;  // indices into Stone::triangles
+    std::vector<uint32_t> outline;    // vertex loop, counter-clockwise seen from outside
+    Plane plane() const { return {normal, offset}; }
+};
+
+// Trade proportions, as percentages of the girdle diameter (of the width for fancy shapes) and degrees;
+// empty where a figure does not apply to the cut.
+struct Proportions {
+    double length = 0;  // girdle outline extent along x
+    double width = 0;   // girdle outline extent along y
+    double diameter = 0;  // reference size for the percentages: the width (the diameter for a round)
+    std::optional<double> tablePct, crownHeightPct, pavilionDepthPct, girdlePct, totalDepthPct;
+    std::optional<double> crownAngleDeg, pavilionAngleDeg;
+};
+
+struct StoneOptions {
+    MeshLimits limits;
+    // Move the stone into the standard frame. Off only for tests of the raw geometry.
+    bool standardFrame = true;
+};
+
+class Stone {
+public:
+    // Validates `mesh` and interprets it: triangulates polygons, merges coplanar edge-connected triangles into
+    // facets, fixes a wholly flipped orientation (with a warning), refuses open, inconsistent, degenerate or
+    // non-finite meshes with an Error naming the problem, then classifies regions and measures proportions.
+    static Stone build(const PolygonMesh& mesh, std::string name, const StoneOptions& options = {});
+
+    std::string name;
+    std::vector<Vec3> vertices;
+    std::vector<Triangle> triangles;
+    std::vector<Facet> facets;
+    bool convex = false;
+    Bounds3 bounds;
+    Proportions proportions;
+    std::vector<std::string> warnings;
+
+    int facetCount(Region r) const;
+    double volume() const;
+};
+
+}  // namespace facetlight

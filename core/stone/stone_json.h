@@ -1,0 +1,14 @@
+#pragma once
+// The JSON description of a stone shared by `facetlight info`, the statistics and the service's mesh list.
+#include <nlohmann/json.hpp>
+
+#include "stone/stone.h"
+
+namespace facetlight {
+
+// name, facet and triangle counts, convex, regions (facet count per region), proportions, warnings.
+nlohmann::json stoneSummaryJson(const Stone& stone);
+// The summary plus `facets`: id, name, region, area, normal, centroid.
+nlohmann::json stoneJson(const Stone& stone);
+
+}  // namespace facetlight

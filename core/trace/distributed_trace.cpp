@@ -1,0 +1,37 @@
+#include "trace/distributed_trace.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace facetlight {
+
+uint64_t localPhotons(const Communicator& comm, uint64_t photons) {
+    const IndexRange blocks = partition(blockCount(photons), comm.rank(), comm.size());
+    return std::min(blocks.end * kPhotonBlock, photons) - std::min(blocks.begin * kPhotonBlock, photons);
+}
+
+TraceResult traceDistributed(Communicator& comm, const Stone& stone, const TraceSettings& settings,
+                             TraceControl* control) {
+    const auto start = std::chrono::steady_clock::now();
+    const TraceScene scene(stone, settings);
+    TraceResult result{FacetStats(stone.facets.size()), {0, settings.threads}, false};
+    const IndexRange blocks = partition(blockCount(settings.photons), comm.rank(), comm.size());
+    const bool finished =
+        traceBlocks(scene, blocks.begin, blocks.end, settings.threads, result.stats, control);
+
+    // The last element counts cancelled ranks, so a cancel anywhere is seen on rank 0.
+    std::vector<uint64_t> tallies = result.stats.tallies();
+    tallies.push_back(finished ? 0 : 1);
+    comm.sumToRoot(tallies);
+    if (comm.isRoot()) {
+        result.cancelled = tallies.back() != 0;
+        tallies.pop_back();
+        result.stats.setTallies(tallies);
+    } else {
+        result.cancelled = !finished;
+    }
+    result.timing.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace facetlight

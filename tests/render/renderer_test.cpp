@@ -1,0 +1,331 @@
+// The renderer and its pictures: determinism across thread counts, image sizes and content, PNG output,
+// colour science, photon-map irradiance against the analytic value, and render settings validation.
+#include "render/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "intersect/scene.h"
+#include "io/mesh_resolver.h"
+#include "optics/spectrum.h"
+#include "photonmap/floor_photons.h"
+#include "photonmap/photon_map.h"
+#include "pictures/angular_plot.h"
+#include "pictures/heatmap.h"
+#include "pictures/image.h"
+#include "study/study.h"
+#include "support/fixtures.h"
+#include "trace/photon_tracer.h"
+#include "util/error.h"
+
+namespace facetlight {
+namespace {
+
+using test::roundBrilliant;
+
+TraceSettings smallTrace(int threads) {
+    TraceSettings t;
+    t.photons = 20'000;
+    t.threads = threads;
+    t.seed = 7;
+    return t;
+}
+
+RenderSettings smallRender() {
+    RenderSettings r;
+    r.width = 64;
+    r.height = 48;
+    r.samples = 3;
+    r.mapPhotons = 20'000;
+    return r;
+}
+
+RenderedImage renderWith(int threads, const RenderSettings& r) {
+    const TraceSettings t = smallTrace(threads);
+    const Scene scene(roundBrilliant(), t);
+    const TraceScene traceScene(roundBrilliant(), t);
+    FloorPhotons photons = traceFloorPhotons(scene, traceScene, r.mapPhotons, threads);
+    const PhotonMap caustics(std::move(photons.caustic), threads);
+    return render(scene, caustics, r, threads, t.seed);
+}
+
+double lumaVariance(const RenderedImage& image) {
+    double sum = 0, sum2 = 0;
+    for (const Vec3& p : image.pixels) {
+        const double l = p.x + p.y + p.z;
+        sum += l;
+        sum2 += l * l;
+    }
+    const double n = double(image.pixels.size());
+    return sum2 / n - (sum / n) * (sum / n);
+}
+
+// Width and height from a PNG's IHDR chunk, after checking the signature.
+std::pair<uint32_t, uint32_t> pngSize(const std::string& png) {
+    EXPECT_GE(png.size(), 24u);
+    EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+    EXPECT_EQ(png.substr(12, 4), "IHDR");
+    auto be32 = [&](size_t at) {
+        return uint32_t(uint8_t(png[at])) << 24 | uint32_t(uint8_t(png[at + 1])) << 16 |
+               uint32_t(uint8_t(png[at + 2])) << 8 | uint32_t(uint8_t(png[at + 3]));
+    };
+    return {be32(16), be32(20)};
+}
+
+TEST(Renderer, SameBitsForOneAndTwoThreads) {
+    const RenderSettings r = smallRender();
+    const RenderedImage one = renderWith(1, r), two = renderWith(2, r);
+    ASSERT_EQ(one.pixels.size(), size_t(r.width * r.height));
+    ASSERT_EQ(two.pixels.size(), one.pixels.size());
+    for (size_t i = 0; i < one.pixels.size(); ++i) {
+        ASSERT_EQ(one.pixels[i], two.pixels[i]) << "pixel " << i;
+    }
+    EXPECT_GT(lumaVariance(one), 1e-4);
+}
+
+TEST(Renderer, FloorPhotonsDoNotDependOnThreads) {
+    const TraceSettings t = smallTrace(1);
+    const Scene scene(roundBrilliant(), t);
+    const TraceScene traceScene(roundBrilliant(), t);
+    const FloorPhotons a = traceFloorPhotons(scene, traceScene, 30'000, 1);
+    const FloorPhotons b = traceFloorPhotons(scene, traceScene, 30'000, 2);
+    ASSERT_EQ(a.caustic.size(), b.caustic.size());
+    EXPECT_GT(a.caustic.size(), 0u);
+    EXPECT_EQ(0, std::memcmp(a.caustic.data(), b.caustic.data(), a.caustic.size() * sizeof(Photon)));
+    EXPECT_EQ(a.crownExits.counts, b.crownExits.counts);
+    EXPECT_GT(a.crownExits.total, 0u);
+}
+
+TEST(Renderer, CancelledBeforeStartRendersNothing) {
+    const TraceSettings t = smallTrace(2);
+    const Scene scene(roundBrilliant(), t);
+    std::atomic<bool> cancel{true};
+    std::atomic<uint64_t> done{0};
+    const RenderedImage image = render(scene, PhotonMap(), smallRender(), 2, 1, {&done, &cancel});
+    EXPECT_TRUE(image.cancelled);
+    EXPECT_EQ(done.load(), 0u);
+}
+
+TEST(Renderer, ProgressCountsEveryPixel) {
+    const TraceSettings t = smallTrace(2);
+    const Scene scene(roundBrilliant(), t);
+    std::atomic<bool> cancel{false};
+    std::atomic<uint64_t> done{0};
+    RenderSettings r = smallRender();
+    r.width = 37;  // tiles that do not divide the image
+    const RenderedImage image = render(scene, PhotonMap(), r, 2, 1, {&done, &cancel});
+    EXPECT_FALSE(image.cancelled);
+    EXPECT_EQ(done.load(), uint64_t(37 * 48));
+}
+
+TEST(Study, WritesThreePicturesOfTheStatedSizes) {
+    StudySettings s;
+    s.trace = smallTrace(2);
+    s.render = smallRender();
+    StudyControl control;
+    const StudyResult result = runStudy(roundBrilliant(), s, control);
+    EXPECT_EQ(pngSize(result.renderPng), std::make_pair(64u, 48u));
+    EXPECT_GT(pngSize(result.heatmapPng).first, 0u);
+    EXPECT_GT(pngSize(result.angularPng).first, 0u);
+    EXPECT_EQ(result.stats["totals"]["photons"], 20'000);
+    EXPECT_NE(result.statsCsv.find("leaving_share"), std::string::npos);
+    EXPECT_EQ(control.phase.load(), StudyPhase::Done);
+}
+
+TEST(Study, StatisticsOnlyWithoutRender) {
+    StudySettings s;
+    s.trace = smallTrace(1);
+    StudyControl control;
+    const StudyResult result = runStudy(roundBrilliant(), s, control);
+    EXPECT_TRUE(result.renderPng.empty());
+    EXPECT_TRUE(result.angularPng.empty());
+    EXPECT_FALSE(result.heatmapPng.empty());
+}
+
+TEST(Study, CancelThrowsCanceled) {
+    StudySettings s;
+    s.trace = smallTrace(1);
+    s.render = smallRender();
+    StudyControl control;
+    control.cancel = true;
+    EXPECT_THROW(runStudy(roundBrilliant(), s, control), Canceled);
+}
+
+// The layout a page lays over the heat-map: every facet but the girdle's, once, inside the picture, far ones
+// first, the table around the crown diagram's centre.
+TEST(Pictures, HeatmapLayoutPlacesEveryDrawnFacet) {
+    const Stone& stone = roundBrilliant();
+    const HeatmapLayout layout = heatmapLayout(stone);
+    EXPECT_EQ(layout.facets.size(), stone.facets.size() - stone.facetCount(Region::Girdle));
+    std::vector<int> seen(stone.facets.size(), 0);
+    double lastZ[2] = {-INFINITY, INFINITY};
+    for (const HeatmapFacet& f : layout.facets) {
+        const Facet& facet = stone.facets[f.facet];
+        ++seen[f.facet];
+        EXPECT_EQ(f.side, facet.region == Region::Pavilion ? 1 : 0) << facet.name;
+        EXPECT_EQ(f.outline.size(), facet.outline.size());
+        for (const Point2& p : f.outline) {
+            EXPECT_TRUE(p[0] >= 0 && p[0] <= layout.width && p[1] >= 0 && p[1] <= layout.height)
+                << facet.name;
+        }
+        // Crown facets from the girdle up, pavilion facets from the girdle down.
+        if (f.side == 0) {
+            EXPECT_GE(facet.centroid.z, lastZ[0]) << facet.name;
+        } else {
+            EXPECT_LE(facet.centroid.z, lastZ[1]) << facet.name;
+        }
+        lastZ[f.side] = facet.centroid.z;
+    }
+    for (size_t i = 0; i < stone.facets.size(); ++i)
+        EXPECT_EQ(seen[i], stone.facets[i].region == Region::Girdle ? 0 : 1) << stone.facets[i].name;
+    // The table is drawn last on its side and its centroid is the crown diagram's centre.
+    const HeatmapFacet& table = layout.facets[stone.facets.size() - stone.facetCount(Region::Girdle) -
+                                              stone.facetCount(Region::Pavilion) - 1];
+    EXPECT_EQ(stone.facets[table.facet].region, Region::Table);
+    EXPECT_NEAR(table.centroid[0], layout.width * 0.25 + 5, 1.0);
+    const nlohmann::json doc = toJson(layout, stone);
+    ASSERT_EQ(doc["facets"].size(), layout.facets.size());
+    EXPECT_EQ(doc["facets"][0]["points"].size(), layout.facets[0].outline.size());
+    EXPECT_EQ(doc["facets"].back()["side"], "pavilion");
+}
+
+TEST(Pictures, HeatmapAndAngularPlotAreNotBlank) {
+    const TraceResult traced = trace(roundBrilliant(), smallTrace(2));
+    const Image heatmap = facetHeatmap(roundBrilliant(), traced.stats);
+    AngularHistogram h;
+    h.add(normalize(Vec3{0.3, 0.1, 1}));
+    h.add({0, 0, -1});
+    EXPECT_EQ(h.total, 2u);
+    const Image angular = angularPlot(h, "test");
+    for (const Image* image : {&heatmap, &angular}) {
+        double sum = 0, sum2 = 0;
+        for (int y = 0; y < image->height(); ++y) {
+            for (int x = 0; x < image->width(); ++x) {
+                sum += image->at(x, y).g;
+                sum2 += image->at(x, y).g * image->at(x, y).g;
+            }
+        }
+        const double n = double(image->width()) * image->height();
+        EXPECT_GT(sum2 / n - (sum / n) * (sum / n), 1e-3);
+    }
+}
+
+TEST(Pictures, PngSignatureAndSize) {
+    Image image(20, 10, {0.5f, 0.25f, 1});
+    drawText(image, 1, 1, "42%", 1, {0, 0, 0});
+    EXPECT_EQ(pngSize(encodePng(image)), std::make_pair(20u, 10u));
+}
+
+TEST(Spectrum, BandsAddUpToWhite) {
+    for (int count : {1, 3, 4, 16}) {
+        const SpectralBands bands(count);
+        Vec3 sum;
+        for (int b = 0; b < count; ++b) sum += bands.colour(b);
+        EXPECT_NEAR(sum.x, 1, 1e-9);
+        EXPECT_NEAR(sum.y, 1, 1e-9);
+        EXPECT_NEAR(sum.z, 1, 1e-9);
+        EXPECT_GE(bands.wavelength(0, 0), kMinWavelength);
+        EXPECT_LE(bands.wavelength(count - 1, 1), kMaxWavelength);
+    }
+    const SpectralBands four(4);
+    EXPECT_GT(four.colour(0).z, four.colour(0).x);  // the short-wave band is blue
+    EXPECT_GT(four.colour(3).x, four.colour(3).z);  // the long-wave band is red
+}
+
+TEST(Spectrum, MatchingFunctionsPeakWhereCieSays) {
+    // CIE 1931: y peaks at 555 nm with 1.0; x at about 600 nm with 1.06; z at about 445 nm with 1.78.
+    EXPECT_NEAR(cieXyz(555).y, 1.0, 0.02);
+    EXPECT_NEAR(cieXyz(600).x, 1.06, 0.03);
+    EXPECT_NEAR(cieXyz(445).z, 1.78, 0.06);
+    // Photons spread evenly over the visible range average to white.
+    Vec3 sum;
+    const int n = 4000;
+    for (int i = 0; i < n; ++i)
+        sum += photonColour(kMinWavelength + (i + 0.5) * (kMaxWavelength - kMinWavelength) / n);
+    EXPECT_NEAR(sum.x / n, 1, 0.01);
+    EXPECT_NEAR(sum.y / n, 1, 0.01);
+    EXPECT_NEAR(sum.z / n, 1, 0.01);
+}
+
+// A diffuse floor under a collimated beam of irradiance E and no stone: N photons of power E A / N land
+// uniformly on an area A; the k-nearest estimate at any inner point has relative standard deviation about
+// 1 / sqrt(k), so the mean over Q well-separated points lies within 4 / sqrt(k Q) of E.
+TEST(PhotonMapIrradiance, OpenFloorMatchesAnalyticValue) {
+    const double E = 2.5, side = 2, area = side * side;
+    const Vec3 beam = normalize(Vec3{0.3, 0, -1});
+    const double floorE = E * -beam.z;  // irradiance on the floor
+    const size_t n = 400'000;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-side / 2, side / 2);
+    std::vector<Photon> photons;
+    for (size_t i = 0; i < n; ++i)
+        photons.push_back(Photon::make({u(rng), u(rng), 0}, float(floorE * area / n), beam));
+    const PhotonMap map(std::move(photons), 2);
+    constexpr int k = 100;
+    std::vector<Neighbor> buffer(k);
+    GatherState state;
+    double sum = 0;
+    int queries = 0;
+    for (int i = -4; i <= 4; ++i) {
+        for (int j = -4; j <= 4; ++j) {
+            sum += map.irradiance({0.18 * i, 0.18 * j, 0}, {0, 0, 1}, buffer, state);
+            ++queries;
+        }
+    }
+    const double mean = sum / queries;
+    EXPECT_NEAR(mean / floorE, 1.0, 4 / std::sqrt(double(k) * queries));
+    // Photons arriving from below the surface do not light it.
+    EXPECT_EQ(map.irradiance({0, 0, 0}, {0, 0, -1}, buffer, state), 0.0);
+}
+
+// The scene's photon power in the units of its direct light: the photons of a collimated beam carry the
+// beam's unit irradiance over the disc they are aimed through.
+TEST(Scene, PhotonPowerMatchesTheBeam) {
+    TraceSettings t = smallTrace(1);
+    const Scene scene(roundBrilliant(), t);
+    const LightModel light(t.light, roundBrilliant());
+    EXPECT_NEAR(scene.photonPower(1000) * 1000, kPi * light.discRadius() * light.discRadius(), 1e-12);
+    // The open floor beside the stone gets the whole beam; the floor straight under it is in its shadow.
+    Rng rng(1, 2);
+    const double r = roundBrilliant().bounds.hi.x;
+    const double floorZ = roundBrilliant().bounds.lo.z;
+    EXPECT_DOUBLE_EQ(scene.directIrradiance({3 * r, 0, floorZ}, rng), 1.0);
+    EXPECT_DOUBLE_EQ(scene.directIrradiance({0.3 * r, 0.1 * r, floorZ}, rng), 0.0);
+}
+
+TEST(RenderSettings, JsonRoundTripAndStrictErrors) {
+    RenderSettings s;
+    s.width = 123;
+    s.camera.fovDeg = 33;
+    const RenderSettings back = RenderSettings::fromJson(toJson(s));
+    EXPECT_EQ(back.width, 123);
+    EXPECT_EQ(back.camera.fovDeg, 33);
+    auto message = [](const char* text) {
+        try {
+            RenderSettings::fromJson(nlohmann::json::parse(text));
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message(R"({"width": "wide"})"), "render.width must be an integer between 16 and 4096");
+    EXPECT_EQ(message(R"({"width": 8})"), "render.width must be an integer between 16 and 4096");
+    EXPECT_EQ(message(R"({"height": 40.5})"), "render.height must be an integer between 16 and 4096");
+    EXPECT_EQ(message(R"({"samples": 0})"), "render.samples must be an integer between 1 and 256");
+    EXPECT_EQ(message(R"({"colour": 1})"), "unknown field 'render.colour'");
+    EXPECT_EQ(message(R"({"camera": {"zoom": 2}})"), "unknown field 'render.camera.zoom'");
+    EXPECT_EQ(message(R"({"camera": 5})"), "render.camera must be a JSON object");
+    EXPECT_EQ(message(R"({"camera": {"fov_deg": 0}})"),
+              "render.camera.fov_deg must be a number above 0 up to 120");
+    EXPECT_EQ(message(R"({"camera": {"elevation_deg": true}})"),
+              "render.camera.elevation_deg must be a number from -90 to 90");
+    EXPECT_EQ(message(R"({"map_photons": -5})"),
+              "render.map_photons must be an integer between 1000 and 10000000000");
+    EXPECT_EQ(message(R"([1, 2])"), "render must be a JSON object");
+    EXPECT_EQ(message(R"({"width": 1e2, "max_depth": 4})"), "no error");
+}
+
+}  // namespace
+}  // namespace facetlight

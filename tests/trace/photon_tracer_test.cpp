@@ -1,0 +1,462 @@
+#include "trace/photon_tracer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "geometry/halfspace.h"
+#include "intersect/convex_intersector.h"
+#include "optics/material.h"
+#include "stone/stone.h"
+#include "util/error.h"
+#include "util/random.h"
+
+using namespace facetlight;
+using nlohmann::json;
+
+namespace {
+
+Stone cube() {
+    PolygonMesh m;
+    for (int i = 0; i < 8; ++i)
+        m.vertices.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+    m.polygons = {{{0, 2, 3, 1}, "bottom"}, {{4, 5, 7, 6}, "top"},  {{0, 1, 5, 4}, "front"},
+                  {{2, 6, 7, 3}, "back"},   {{0, 4, 6, 2}, "left"}, {{1, 3, 7, 5}, "right"}};
+    return Stone::build(m, "cube");
+}
+
+// A single cut: octagonal table, 8 bezels, 8 girdle flats and 8 pavilion mains, as half-spaces.
+Stone singleCut() {
+    std::vector<NamedPlane> planes{{{{0, 0, 1}, 0.17}, "table"}};
+    for (int k = 0; k < 8; ++k) {
+        const double a = radians(45.0 * k + 22.5);
+        const Vec3 radial{std::cos(a), std::sin(a), 0};
+        auto plane = [&](double slopeDeg, double zSign, double offset, const std::string& name) {
+            const double s = radians(slopeDeg);
+            planes.push_back(
+                {{normalize(radial * std::sin(s) + Vec3{0, 0, zSign * std::cos(s)}), offset}, name});
+        };
+        plane(34.5, 1, 0.5 * std::sin(radians(34.5)), "bezel_" + std::to_string(k));
+        plane(90, 0, 0.5, "girdle_" + std::to_string(k));
+        plane(40.75, -1, 0.5 * std::sin(radians(40.75)), "pavilion_" + std::to_string(k));
+    }
+    return Stone::build(intersectHalfSpaces(planes), "single_cut");
+}
+
+TraceSettings baseSettings(uint64_t photons) {
+    TraceSettings s;
+    s.photons = photons;
+    s.seed = 7;
+    s.dispersion = false;
+    return s;
+}
+
+void expectConservation(const FacetStats& s) {
+    EXPECT_EQ(s.entered, s.exited + s.trapped);
+    EXPECT_EQ(s.hit, s.entered + s.reflectedAtEntry);
+    uint64_t entering = 0, reflected = 0, leaving = 0;
+    for (const FacetCounts& f : s.facets) {
+        entering += f.entering;
+        reflected += f.reflected;
+        leaving += f.leaving;
+    }
+    EXPECT_EQ(entering, s.entered);
+    EXPECT_EQ(reflected, s.reflectedAtEntry);
+    EXPECT_EQ(leaving, s.exited);
+    uint64_t histogram = 0;
+    for (uint64_t c : s.histogram[0]) histogram += c;
+    EXPECT_EQ(histogram, s.exited);
+    EXPECT_LE(s.hit, s.photons);
+}
+
+const Facet& facetWithNormal(const Stone& stone, const Vec3& n) {
+    for (const Facet& f : stone.facets) {
+        if (dot(f.normal, n) > 0.999) return f;
+    }
+    throw Error("no such facet");
+}
+
+// Removes what may differ between runs of the same job with different thread counts.
+json comparable(json j) {
+    j.erase("timing");
+    j["settings"].erase("threads");
+    return j;
+}
+
+}  // namespace
+
+TEST(Fresnel, NormalIncidenceIntoDiamond) {
+    const float n = 2.4173f;
+    const FresnelResult r = fresnel(1.0f, 1.0f / n);
+    EXPECT_FALSE(r.totalInternal);
+    EXPECT_NEAR(r.reflectance, 0.1720, 1e-4);
+    EXPECT_NEAR(r.cosT, 1.0, 1e-6);
+    // The same interface seen from inside reflects as much.
+    EXPECT_NEAR(fresnel(1.0f, n).reflectance, 0.1720, 1e-4);
+}
+
+TEST(Fresnel, TotalInternalReflectionBeyondTheCriticalAngle) {
+    const float n = 2.4173f;
+    const double critical = degrees(std::asin(1.0 / n));
+    EXPECT_NEAR(critical, 24.44, 0.01);
+    const FresnelResult beyond = fresnel(float(std::cos(radians(critical + 0.1))), n);
+    EXPECT_TRUE(beyond.totalInternal);
+    EXPECT_EQ(beyond.reflectance, 1.0f);
+    const FresnelResult within = fresnel(float(std::cos(radians(critical - 0.5))), n);
+    EXPECT_FALSE(within.totalInternal);
+    EXPECT_LT(within.reflectance, 1.0f);
+    EXPECT_GT(within.reflectance, 0.1720f);  // rises toward 1 at the critical angle
+    // Snell: n sin(ti) = sin(tt).
+    const double ti = radians(critical - 0.5);
+    EXPECT_NEAR(std::acos(within.cosT), std::asin(n * std::sin(ti)), 1e-3);
+}
+
+TEST(PhotonTracer, DiamondSlabAtNormalIncidence) {
+    const Stone stone = cube();
+    TraceSettings settings = baseSettings(400'000);
+    settings.threads = 2;
+    const TraceResult r = trace(stone, settings);
+    ASSERT_FALSE(r.cancelled);
+    const FacetStats& s = r.stats;
+    expectConservation(s);
+    EXPECT_EQ(s.photons, settings.photons);
+    // The disc around the square silhouette has area pi/2; collimated light only meets the top.
+    EXPECT_NEAR(double(s.hit) / double(s.photons), 2 / kPi, 4 * std::sqrt(0.64 * 0.36 / 400'000));
+
+    const double n = Material::byName("diamond").indexD();
+    const double R = (n - 1) * (n - 1) / ((n + 1) * (n + 1));
+    ASSERT_NEAR(R, 0.1720, 1e-4);
+    const Facet& top = facetWithNormal(stone, {0, 0, 1});
+    const Facet& bottom = facetWithNormal(stone, {0, 0, -1});
+    EXPECT_EQ(s.facets[top.id].entering, s.entered);
+    const double up = double(s.facets[top.id].reflected + s.facets[top.id].leaving) / double(s.hit);
+    const double down = double(s.facets[bottom.id].leaving) / double(s.hit);
+    const double se = std::sqrt(0.2935 * 0.7065 / double(s.hit));
+    EXPECT_NEAR(up, 2 * R / (1 + R), 4 * se);
+    EXPECT_NEAR(down, (1 - R) / (1 + R), 4 * se);
+    EXPECT_EQ(s.facets[top.id].leaving + s.facets[bottom.id].leaving, s.exited)
+        << "no light reaches the sides";
+    // Straight up and straight down only.
+    EXPECT_EQ(s.histogram[0][0] + s.histogram[0][179], s.exited);
+
+    const json j = statsToJson(s, stone, settings, r.timing);
+    EXPECT_NEAR(j["totals"]["crown_return_with_reflection"].get<double>(), up, 1e-12);
+    EXPECT_NEAR(j["totals"]["weighted_return"].get<double>(), j["totals"]["crown_return"].get<double>(),
+                1e-6);
+}
+
+TEST(PhotonTracer, IdenticalForAnyThreadCount) {
+    const Stone stone = singleCut();
+    TraceSettings settings = baseSettings(3 * kPhotonBlock + 123);
+    settings.dispersion = true;
+    settings.light.model = LightModelKind::Hemisphere;
+    settings.light.headShadowDeg = 15;
+    json first;
+    for (int threads : {1, 2, 3}) {
+        settings.threads = threads;
+        const TraceResult r = trace(stone, settings);
+        expectConservation(r.stats);
+        const json j = comparable(statsToJson(r.stats, stone, settings, r.timing));
+        if (threads == 1) {
+            first = j;
+        } else {
+            EXPECT_EQ(j.dump(), first.dump()) << threads << " threads";
+        }
+    }
+    EXPECT_GT(first["totals"]["crown_return"].get<double>(), 0.1);
+}
+
+TEST(PhotonTracer, BlockRangesMergeToTheWholeRun) {
+    const Stone stone = singleCut();
+    TraceSettings settings = baseSettings(5 * kPhotonBlock + 10);
+    const TraceScene scene(stone, settings);
+    FacetStats whole(stone.facets.size()), a(stone.facets.size()), b(stone.facets.size());
+    ASSERT_TRUE(traceBlocks(scene, 0, blockCount(settings.photons), 1, whole));
+    ASSERT_TRUE(traceBlocks(scene, 0, 2, 2, a));
+    ASSERT_TRUE(traceBlocks(scene, 2, 100, 1, b));
+    b.merge(a);
+    EXPECT_TRUE(b == whole);
+    EXPECT_EQ(whole.photons, settings.photons);
+}
+
+TEST(PhotonTracer, ConvexAndEmbreeAgree) {
+    const Stone stone = singleCut();
+    ASSERT_TRUE(stone.convex);
+    TraceSettings settings = baseSettings(200'000);
+    settings.threads = 2;
+    settings.light.model = LightModelKind::Hemisphere;
+    settings.intersector = IntersectorKind::Convex;
+    const TraceResult convex = trace(stone, settings);
+    settings.intersector = IntersectorKind::Embree;
+    ASSERT_TRUE(TraceScene(stone, settings).usesEmbree());
+    const TraceResult embree = trace(stone, settings);
+    expectConservation(convex.stats);
+    expectConservation(embree.stats);
+    EXPECT_EQ(embree.stats.lost, 0u);
+    const json a = statsToJson(convex.stats, stone, settings, convex.timing)["totals"];
+    const json b = statsToJson(embree.stats, stone, settings, embree.timing)["totals"];
+    for (const char* figure : {"crown_return", "leakage", "cone_return_45", "weighted_return"}) {
+        const double se = std::hypot(a[std::string(figure) + "_stderr"].get<double>(),
+                                     b[std::string(figure) + "_stderr"].get<double>());
+        EXPECT_NEAR(a[figure].get<double>(), b[figure].get<double>(), 4 * se) << figure;
+    }
+    // Same photons and same random streams: hits differ only where a ray grazes an edge.
+    EXPECT_NEAR(double(convex.stats.hit), double(embree.stats.hit), 1e-4 * double(convex.stats.hit));
+}
+
+namespace {
+
+// The counts a trace keeps, rebuilt from tracePhoton's path of each photon in turn.
+FacetStats tallyOfPaths(const TraceScene& scene) {
+    const Stone& stone = scene.stone();
+    const TraceSettings& settings = scene.settings();
+    const double tilt = radians(settings.light.tiltDeg);
+    const Vec3f up(Vec3{0, std::sin(tilt), std::cos(tilt)});
+    const ExitAngleBins exitBin;
+    FacetStats stats(stone.facets.size());
+    uint64_t bounces = 0;
+    for (uint64_t i = 0; i < settings.photons; ++i) {
+        PhotonPath path;
+        tracePhoton(scene, i, path);
+        ++stats.photons;
+        bounces += path.bounces;
+        switch (path.outcome) {
+            case PhotonOutcome::Missed:
+                break;
+            case PhotonOutcome::ReflectedAtEntry:
+                ++stats.hit, ++stats.reflectedAtEntry, ++stats.facets[path.exitFacet].reflected;
+                break;
+            case PhotonOutcome::Trapped:
+                ++stats.hit, ++stats.entered, ++stats.facets[path.entryFacet].entering, ++stats.trapped;
+                break;
+            case PhotonOutcome::Exited: {
+                ++stats.hit, ++stats.entered, ++stats.facets[path.entryFacet].entering, ++stats.exited;
+                ++stats.facets[path.exitFacet].leaving;
+                const float cosUp = std::clamp(dot(path.exitDirection, up), -1.0f, 1.0f);
+                ++stats.histogram[0][exitBin(cosUp)];
+                const Region r = stone.facets[path.exitFacet].region;
+                if ((r == Region::Table || r == Region::Crown) && cosUp > 0) {
+                    ++stats.crownReturn;
+                    stats.weightSum += uint64_t(double(cosUp) * kWeightScale + 0.5);
+                }
+                break;
+            }
+        }
+    }
+    // Each internal reflection is a bounce of the photon that made it.
+    stats.facets[0].internalReflections = bounces;
+    return stats;
+}
+
+}  // namespace
+
+// The whole-block trace (sixteen photons per SIMD lane set where the CPU has AVX-512) and the one-photon
+// path follow each photon through the same steps with the same bits.
+TEST(PhotonTracer, TracePhotonReproducesTheTally) {
+    const Stone stone = singleCut();
+    struct Case {
+        const char* what;
+        LightModelKind light;
+        bool dispersion;
+        double tiltDeg;
+        int maxBounces;
+    };
+    for (const Case& c : {Case{"collimated", LightModelKind::Collimated, false, 0, 64},
+                          Case{"collimated, tilted, dispersion", LightModelKind::Collimated, true, 20, 64},
+                          Case{"hemisphere, dispersion", LightModelKind::Hemisphere, true, 0, 64},
+                          Case{"point, 3 bounces at most", LightModelKind::Point, false, 0, 3}}) {
+        SCOPED_TRACE(c.what);
+        TraceSettings settings = baseSettings(2 * kPhotonBlock + 1000);
+        settings.light.model = c.light;
+        settings.light.tiltDeg = c.tiltDeg;
+        settings.dispersion = c.dispersion;
+        settings.maxBounces = c.maxBounces;
+        const TraceScene scene(stone, settings);
+        FacetStats traced(stone.facets.size());
+        traceBlocks(scene, 0, blockCount(settings.photons), 1, traced);
+        const FacetStats paths = tallyOfPaths(scene);
+        EXPECT_EQ(paths.photons, traced.photons);
+        EXPECT_EQ(paths.hit, traced.hit);
+        EXPECT_EQ(paths.reflectedAtEntry, traced.reflectedAtEntry);
+        EXPECT_EQ(paths.exited, traced.exited);
+        EXPECT_EQ(paths.trapped, traced.trapped);
+        EXPECT_EQ(paths.crownReturn, traced.crownReturn);
+        EXPECT_EQ(paths.weightSum, traced.weightSum);
+        EXPECT_EQ(paths.histogram[0], traced.histogram[0]);
+        uint64_t internalReflections = 0;
+        for (size_t f = 0; f < stone.facets.size(); ++f) {
+            EXPECT_EQ(paths.facets[f].entering, traced.facets[f].entering) << f;
+            EXPECT_EQ(paths.facets[f].reflected, traced.facets[f].reflected) << f;
+            EXPECT_EQ(paths.facets[f].leaving, traced.facets[f].leaving) << f;
+            internalReflections += traced.facets[f].internalReflections;
+        }
+        EXPECT_EQ(paths.facets[0].internalReflections, internalReflections);
+        EXPECT_GT(traced.trapped, 0u);
+    }
+}
+
+TEST(PhotonTracer, ExitPathsLeaveThroughTheirFacet) {
+    const Stone stone = singleCut();
+    const TraceScene scene(stone, baseSettings(2000));
+    for (uint64_t i = 0; i < 2000; ++i) {
+        PhotonPath path;
+        tracePhoton(scene, i, path);
+        if (path.outcome != PhotonOutcome::Exited) continue;
+        EXPECT_NEAR(std::sqrt(dot(path.exitDirection, path.exitDirection)), 1.0, 1e-5);
+        const Facet& f = stone.facets[path.exitFacet];
+        EXPECT_NEAR(dot(Vec3{path.exitPosition.x, path.exitPosition.y, path.exitPosition.z}, f.normal),
+                    f.offset, 1e-4);
+        EXPECT_GT(dot(Vec3{path.exitDirection.x, path.exitDirection.y, path.exitDirection.z}, f.normal), 0);
+    }
+}
+
+TEST(PhotonTracer, LightModelsAndTiltKeepConservation) {
+    const Stone stone = singleCut();
+    for (LightModelKind model :
+         {LightModelKind::Collimated, LightModelKind::Hemisphere, LightModelKind::Point}) {
+        TraceSettings settings = baseSettings(20'000);
+        settings.light.model = model;
+        settings.light.tiltDeg = 20;
+        settings.maxBounces = 3;
+        const TraceResult r = trace(stone, settings);
+        expectConservation(r.stats);
+        EXPECT_GT(r.stats.trapped, 0u) << "a bounce limit of 3 traps some photons";
+        EXPECT_GT(r.stats.hit, r.stats.photons / 4) << "photons are aimed at the stone";
+    }
+}
+
+TEST(PhotonTracer, CollimatedStraightDownHitsAlmostEveryPhoton) {
+    const Stone stone = singleCut();
+    const TraceResult r = trace(stone, baseSettings(20'000));
+    // The disc circumscribes the octagonal girdle: cos(22.5 deg)^2 * (8 tan(22.5) / pi) of it is stone.
+    const double octagonShare = 8 * std::tan(radians(22.5)) * std::pow(std::cos(radians(22.5)), 2) / kPi;
+    EXPECT_NEAR(double(r.stats.hit) / double(r.stats.photons), octagonShare, 0.01);
+}
+
+TEST(ExitAngleBins, MatchAcosExceptAtBinBoundaries) {
+    const ExitAngleBins bin;
+    EXPECT_EQ(bin(1.0f), 0);
+    EXPECT_EQ(bin(-1.0f), kHistogramBins - 1);
+    EXPECT_EQ(bin(0.0f), 90);
+    EXPECT_EQ(bin(1.5f), 0);  // rounding past 1 clamps
+    int checked = 0;
+    for (int i = 0; i <= 400'000; ++i) {
+        const float c = -1.0f + 2.0f * float(i) / 400'000;
+        const double deg = std::acos(double(c)) * 180 / kPi;
+        if (std::abs(deg - std::round(deg)) < 1e-4) continue;  // float cosines of k degrees decide these
+        ASSERT_EQ(bin(c), std::min(kHistogramBins - 1, int(deg))) << c;
+        ++checked;
+    }
+    EXPECT_GT(checked, 399'000);
+}
+
+TEST(ConvexBeamEntry, AgreesWithTheGeneralEntrySearch) {
+    const Stone stone = singleCut();  // its girdle flats are parallel to vertical light
+    const ConvexIntersector general(stone);
+    for (const Vec3f dir : {Vec3f(0, 0, -1), Vec3f(Vec3{normalize(Vec3{0.3, -0.2, -1})})}) {
+        const ConvexBeamEntry beam(stone, dir);
+        Rng rng(1, 2);
+        int hits = 0, disagree = 0;
+        for (int i = 0; i < 20'000; ++i) {
+            const Vec3f o =
+                Vec3f(1.2f * rng.uniform() - 0.6f, 1.2f * rng.uniform() - 0.6f, 0.5f) - dir * 0.5f;
+            SurfaceHit a, b;
+            const bool ha = general.enter(o, dir, a), hb = beam.enter(o, b);
+            disagree += ha != hb;
+            if (!ha || !hb) continue;
+            ++hits;
+            EXPECT_NEAR(a.t, b.t, 1e-5);
+            disagree += a.facet != b.facet;
+        }
+        EXPECT_GT(hits, 10'000);
+        EXPECT_LE(disagree, 2);  // only rays grazing an edge may differ by a rounding error
+    }
+}
+
+TEST(PhotonTracer, CancelStopsBeforeTheEnd) {
+    const Stone stone = cube();
+    TraceControl control;
+    control.cancel = true;
+    const TraceResult r = trace(stone, baseSettings(100'000), &control);
+    EXPECT_TRUE(r.cancelled);
+    EXPECT_EQ(r.stats.photons, 0u);
+    EXPECT_EQ(control.photonsDone.load(), 0u);
+
+    TraceControl progress;
+    const TraceResult full = trace(stone, baseSettings(10'000), &progress);
+    EXPECT_FALSE(full.cancelled);
+    EXPECT_EQ(progress.photonsDone.load(), 10'000u);
+}
+
+TEST(PhotonTracer, ConvexIntersectorRefusesNonConvexRequest) {
+    Stone stone = cube();
+    stone.convex = false;
+    TraceSettings settings = baseSettings(10);
+    settings.intersector = IntersectorKind::Convex;
+    EXPECT_THROW(TraceScene(stone, settings), Error);
+    settings.intersector = IntersectorKind::Auto;
+    EXPECT_TRUE(TraceScene(stone, settings).usesEmbree());
+}
+
+TEST(TraceSettings, JsonRoundTrip) {
+    TraceSettings s = baseSettings(12345);
+    s.threads = 3;
+    s.n = 2.0;
+    s.light.model = LightModelKind::Point;
+    s.light.position = {1, 2, 30};
+    s.intersector = IntersectorKind::Embree;
+    const TraceSettings back = TraceSettings::fromJson(toJson(s));
+    EXPECT_EQ(toJson(back).dump(), toJson(s).dump());
+    EXPECT_EQ(TraceSettings::fromJson(json{{"photons", 1e6}}).photons, 1'000'000u);
+}
+
+TEST(TraceSettings, StrictJsonNamesTheField) {
+    auto expectError = [](const json& j, const std::string& fragment) {
+        try {
+            TraceSettings::fromJson(j);
+            FAIL() << j.dump();
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+        }
+    };
+    expectError(json{{"photons", 0}}, "photons");
+    expectError(json{{"photons", 2e10}}, "photons");
+    expectError(json{{"photons", 1.5}}, "photons");
+    expectError(json{{"photons", "many"}}, "photons");
+    expectError(json{{"threads", -1}}, "threads");
+    expectError(json{{"colour", "red"}}, "colour");
+    expectError(json{{"light", {{"model", "laser"}}}}, "light.model");
+    expectError(json{{"light", {{"tilt", 3}}}}, "light.tilt");
+    expectError(json{{"light", {{"head_shadow_deg", 95}}}}, "light.head_shadow_deg");
+    expectError(json{{"light", {{"direction", {0, 0}}}}}, "light.direction");
+    expectError(json{{"material", "unobtainium"}}, "material");
+    expectError(json{{"n", 0.5}}, "n must");
+    expectError(json{{"dispersion", 1}}, "dispersion");
+    expectError(json{{"intersector", "bvh"}}, "intersector");
+    expectError(json::array(), "settings");
+}
+
+TEST(FacetStats, JsonAndCsvReport) {
+    const Stone stone = cube();
+    TraceSettings settings = baseSettings(10'000);
+    const TraceResult r = trace(stone, settings);
+    const json j = statsToJson(r.stats, stone, settings, r.timing);
+    for (const char* key :
+         {"mesh", "settings", "timing", "totals", "regions", "facets", "exit_angle_histogram"}) {
+        EXPECT_TRUE(j.contains(key)) << key;
+    }
+    EXPECT_EQ(j["facets"].size(), stone.facets.size());
+    EXPECT_EQ(j["exit_angle_histogram"]["crown"].size(), 180u);
+    EXPECT_EQ(j["totals"]["hit"].get<uint64_t>(),
+              j["totals"]["entered"].get<uint64_t>() + j["totals"]["reflected_at_entry"].get<uint64_t>());
+    uint64_t regionLeaving = 0;
+    for (const auto& [name, region] : j["regions"].items())
+        regionLeaving += region["leaving"].get<uint64_t>();
+    EXPECT_EQ(regionLeaving, r.stats.exited);
+    std::ostringstream csv;
+    writeFacetCsv(csv, r.stats, stone);
+    const std::string text = csv.str();
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), long(stone.facets.size() + 1));
+    EXPECT_EQ(text.rfind("id,name,region,area", 0), 0u);
+}
