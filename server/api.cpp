@@ -124,8 +124,9 @@ void logRequest(const Request& req, const Response& res) {
 
 }  // namespace
 
-Api::Api(JobStore& store, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits)
-    : store_(store), queue_(queue), catalog_(catalog), limits_(limits) {}
+Api::Api(JobStore& store, ResultFiles& results, JobQueue& queue, MeshCatalog& catalog,
+         ServiceLimits limits)
+    : store_(store), results_(results), queue_(queue), catalog_(catalog), limits_(limits) {}
 
 std::vector<Route> Api::routes() {
     return {
@@ -330,6 +331,7 @@ void Api::deleteJob(const Request& req, Response& res) {
         return problem(res, 409, "the job is " + std::string(jobStateName(job->state)) + ": cancel it first");
     }
     store_.deleteJob(id);
+    results_.clear(id);
     res.status = 204;
 }
 
@@ -343,7 +345,7 @@ void Api::getResult(const Request& req, Response& res, const std::string& file,
             res, 409,
             "the job is " + std::string(jobStateName(job->state)) + "; results exist once it has succeeded");
     }
-    auto bytes = store_.readResult(id, file);
+    auto bytes = results_.read(id, file);
     if (!bytes) return problem(res, 404, "this job has no " + file + " (was render false?)");
     res.status = 200;
     res.set_content(std::move(*bytes), contentType.c_str());
