@@ -78,6 +78,12 @@ std::string mediaType(const Request& req) {
     return type;
 }
 
+// The most bytes a request body may have: uploads have their own limit. The one place both the check before
+// routing (Content-Length) and the handlers' readers (bytes as they arrive) take it from.
+size_t bodyLimit(const ServiceLimits& limits, const std::string& path) {
+    return path == "/api/meshes" ? limits.maxUploadBytes : limits.maxBodyBytes;
+}
+
 // Reads the whole body, refusing more than `limit` bytes; nullopt when it was too large.
 std::optional<std::string> readBody(const httplib::ContentReader& reader, size_t limit) {
     std::string body;
@@ -124,8 +130,7 @@ void logRequest(const Request& req, const Response& res) {
 
 }  // namespace
 
-Api::Api(JobStore& store, ResultFiles& results, JobQueue& queue, MeshCatalog& catalog,
-         ServiceLimits limits)
+Api::Api(JobStore& store, ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits)
     : store_(store), results_(results), queue_(queue), catalog_(catalog), limits_(limits) {}
 
 std::vector<Route> Api::routes() {
@@ -158,7 +163,13 @@ json Api::statusJson(const JobRecord& job) const {
     if (used < requested) {
         threads["note"] = "capped at the " + std::to_string(queue_.cores()) + " cores of this machine";
     }
+    // A study with pictures runs three phases (tracing, photon map, rendering), one without only the first:
+    // `step` of `steps` and `overall` say where the whole job is, so that clients need not know the phases.
+    const bool rendered = request.contains("render") && request["render"].is_object();
+    const int steps = rendered ? 3 : 1;
     json progress = {{"phase", jobStateName(job.state)}, {"done", 0}, {"total", 0}, {"fraction", 0.0}};
+    int step = 0;
+    double overall = 0;
     json doc = {{"id", job.id},
                 {"state", jobStateName(job.state)},
                 {"mesh", request.value("mesh", "")},
@@ -176,19 +187,29 @@ json Api::statusJson(const JobRecord& job) const {
         case JobState::Running:
             if (const auto live = queue_.live(job.id)) {
                 const bool queuedPhase = live->phase == StudyPhase::Queued;
+                const double fraction = live->total ? double(live->done) / double(live->total) : 0.0;
                 progress = {{"phase", queuedPhase ? "starting" : studyPhaseName(live->phase)},
                             {"done", live->done},
                             {"total", live->total},
-                            {"fraction", live->total ? double(live->done) / double(live->total) : 0.0}};
+                            {"fraction", fraction}};
+                const StudyPhase phases[] = {StudyPhase::Tracing, StudyPhase::PhotonMap,
+                                             StudyPhase::Rendering};
+                for (int i = 0; i < steps; ++i) {
+                    if (phases[i] != live->phase) continue;
+                    step = i + 1;
+                    overall = (i + std::clamp(fraction, 0.0, 1.0)) / steps;
+                }
                 doc["cancel_requested"] = live->cancelRequested;
             }
             links["cancel"] = self + "/cancel";
             break;
         case JobState::Succeeded: {
             progress = {{"phase", "done"}, {"done", 1}, {"total", 1}, {"fraction", 1.0}};
+            step = steps;
+            overall = 1;
             links["stats"] = self + "/stats";
             links["stats_csv"] = self + "/stats.csv";
-            if (request.contains("render") && request["render"].is_object()) {
+            if (rendered) {
                 links["render"] = self + "/render.png";
                 links["heatmap"] = self + "/heatmap.png";
                 links["heatmap_layout"] = self + "/heatmap.json";
@@ -202,6 +223,9 @@ json Api::statusJson(const JobRecord& job) const {
         case JobState::Canceled:
             break;
     }
+    progress["step"] = step;
+    progress["steps"] = steps;
+    progress["overall"] = overall;
     doc["progress"] = progress;
     doc["links"] = links;
     return doc;
@@ -209,10 +233,9 @@ json Api::statusJson(const JobRecord& job) const {
 
 void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
     const std::string type = mediaType(req);
-    const auto body = readBody(reader, limits_.maxBodyBytes);
-    if (!body) {
-        return problem(res, 413, "the job is larger than " + std::to_string(limits_.maxBodyBytes) + " bytes");
-    }
+    const size_t limit = bodyLimit(limits_, req.path);
+    const auto body = readBody(reader, limit);
+    if (!body) return problem(res, 413, "the job is larger than " + std::to_string(limit) + " bytes");
     if (!type.empty() && type != kJsonType && type != "application/x-www-form-urlencoded" &&
         type != "text/plain") {
         return problem(res, 415, "send the job as application/json (got " + type + ")");
@@ -243,8 +266,9 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
 void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentReader& reader) {
     std::string bytes, fileName = req.has_param("name") ? req.get_param_value("name") : "upload";
     bool tooLarge = false;
+    const size_t limit = bodyLimit(limits_, req.path);
     const auto receive = [&](const char* data, size_t n) {
-        if (bytes.size() + n > limits_.maxUploadBytes) {
+        if (bytes.size() + n > limit) {
             tooLarge = true;
             return false;
         }
@@ -264,8 +288,7 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
         reader(receive);
     }
     if (tooLarge) {
-        return problem(res, 413,
-                       "the upload is larger than " + std::to_string(limits_.maxUploadBytes) + " bytes");
+        return problem(res, 413, "the upload is larger than " + std::to_string(limit) + " bytes");
     }
     std::optional<MeshFormat> format;
     if (req.has_param("format")) {
@@ -386,7 +409,7 @@ void Api::install(httplib::Server& server, bool accessLog) {
         // `curl -X POST` sends no Content-Length: a plain handler would wait out the read timeout for a body.
         {"POST /api/jobs/{id}/cancel",
          [this](const Request& req, Response& res, const httplib::ContentReader& r) {
-             if (req.has_header("Content-Length")) readBody(r, limits_.maxBodyBytes);  // ignored
+             if (req.has_header("Content-Length")) readBody(r, bodyLimit(limits_, req.path));  // ignored
              cancelJob(req, res);
          }},
     };
@@ -411,9 +434,9 @@ void Api::install(httplib::Server& server, bool accessLog) {
     }
     if (!plain.empty() || !withReader.empty()) throw std::logic_error("handler without a route");
 
-    const size_t maxBody = limits_.maxBodyBytes, maxUpload = limits_.maxUploadBytes,
-                 maxUrl = limits_.maxUrlBytes;
-    server.set_payload_max_length(std::max(maxBody, maxUpload));
+    const ServiceLimits limits = limits_;
+    const size_t maxUrl = limits.maxUrlBytes;
+    server.set_payload_max_length(std::max(limits.maxBodyBytes, limits.maxUploadBytes));
     server.set_pre_routing_handler([=](const Request& req, Response& res) {
         using R = httplib::Server::HandlerResponse;
         if (req.target.size() > maxUrl) {
@@ -426,7 +449,7 @@ void Api::install(httplib::Server& server, bool accessLog) {
             problem(res, 411, "chunked request bodies are not accepted: send Content-Length");
             return R::Handled;
         }
-        const size_t limit = req.path == "/api/meshes" ? maxUpload : maxBody;
+        const size_t limit = bodyLimit(limits, req.path);
         if (req.has_header("Content-Length")) {
             const std::string v = req.get_header_value("Content-Length");
             if (v.size() > 15 || v.find_first_not_of("0123456789") != std::string::npos ||

@@ -119,10 +119,7 @@ async function api(path, options = {}) {
 const jobUrl = (id, tail = '') => `/api/jobs/${encodeURIComponent(id)}${tail}`;
 
 // --- progress: one bar across the study's phases ------------------------------------------------------------
-function phaseKey(phase) { return String(phase || '').toLowerCase().replace(/[^a-z]/g, ''); }
-
-// Overall fraction and a caption. The server reports the fraction of the current phase; a study with pictures
-// has three phases (tracing, photon map, rendering), one without only the first.
+// Overall fraction and a caption, from the server's progress (overall, step of steps, current phase).
 function overallProgress(job) {
   const p = job.progress || {};
   if (job.state === 'succeeded') return { fraction: 1, caption: 'Done' };
@@ -131,12 +128,9 @@ function overallProgress(job) {
   }
   if (job.state === 'failed') return { fraction: p.fraction || 0, caption: 'Failed' };
   if (job.state === 'canceled') return { fraction: p.fraction || 0, caption: 'Canceled' };
-  const rendered = job.settings && job.settings.render && typeof job.settings.render === 'object';
-  const phases = rendered ? ['tracing', 'photonmap', 'rendering'] : ['tracing'];
-  const index = phases.indexOf(phaseKey(p.phase));
   const within = Math.min(1, Math.max(0, Number(p.fraction) || 0));
-  const fraction = index < 0 ? 0 : (index + within) / phases.length;
-  const step = index < 0 ? '' : ` · step ${index + 1} of ${phases.length}`;
+  const fraction = Math.min(1, Math.max(0, Number(p.overall) || 0));
+  const step = p.step > 0 ? ` · step ${p.step} of ${p.steps}` : '';
   const detail = p.total ? ` ${Math.floor(within * 100)} %` : '';
   const cancel = job.cancel_requested ? ' · canceling' : '';
   return { fraction, caption: `${humanize(p.phase || 'starting')}${detail}${step}${cancel}` };
