@@ -6,6 +6,7 @@
 #include <map>
 #include <regex>
 
+#include "stats/facet_stats.h"
 #include "util/error.h"
 
 namespace facetlight::server {
@@ -370,6 +371,11 @@ void Api::getResult(const Request& req, Response& res, const std::string& file,
     }
     auto bytes = results_.read(id, file);
     if (!bytes) return problem(res, 404, "this job has no " + file + " (was render false?)");
+    if (file == "stats.json") {
+        json stats = json::parse(*bytes);
+        addShareStandardErrors(stats);
+        *bytes = stats.dump(2);
+    }
     res.status = 200;
     res.set_content(std::move(*bytes), contentType.c_str());
 }

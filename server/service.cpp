@@ -22,6 +22,8 @@ Service::Service(ServiceConfig config) : config_(std::move(config)) {
     api_->install(http_, config_.accessLog);
     std::error_code ec;
     if (!config_.webDir.empty() && std::filesystem::is_directory(config_.webDir, ec)) {
+        // The page's ES modules: JavaScript's media type (RFC 9239), which browsers require of module scripts.
+        http_.set_file_extension_and_mimetype_mapping("js", "text/javascript");
         http_.set_file_extension_and_mimetype_mapping("mjs", "text/javascript");
         if (!http_.set_mount_point("/", config_.webDir.string())) {
             std::cerr << "facetlight-server: cannot serve " << config_.webDir << "\n";

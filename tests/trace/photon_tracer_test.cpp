@@ -441,7 +441,8 @@ TEST(FacetStats, JsonAndCsvReport) {
     const Stone stone = cube();
     TraceSettings settings = baseSettings(10'000);
     const TraceResult r = trace(stone, settings);
-    const json j = statsToJson(r.stats, stone, settings, r.timing);
+    json j = statsToJson(r.stats, stone, settings, r.timing);
+    addShareStandardErrors(j);
     for (const char* key :
          {"mesh", "settings", "timing", "totals", "regions", "facets", "exit_angle_histogram"}) {
         EXPECT_TRUE(j.contains(key)) << key;
