@@ -80,26 +80,32 @@ std::string mediaType(const Request& req) {
 }
 
 // The most bytes a request body may have: uploads have their own limit. The one place both the check before
-// routing (Content-Length) and the handlers' readers (bytes as they arrive) take it from.
+// routing (Content-Length) and the handlers' readers (BodyCollector, bytes as they arrive) take it from.
 size_t bodyLimit(const ServiceLimits& limits, const std::string& path) {
     return path == "/api/meshes" ? limits.maxUploadBytes : limits.maxBodyBytes;
 }
 
-// Reads the whole body, refusing more than `limit` bytes; nullopt when it was too large.
-std::optional<std::string> readBody(const httplib::ContentReader& reader, size_t limit) {
-    std::string body;
-    bool tooLarge = false;
-    reader([&](const char* data, size_t n) {
-        if (body.size() + n > limit) {
-            tooLarge = true;
+// Collects a request body as it arrives, stopping the read once it passes its route's limit.
+class BodyCollector {
+  public:
+    BodyCollector(const ServiceLimits& limits, const Request& req) : limit_(bodyLimit(limits, req.path)) {}
+    bool operator()(const char* data, size_t n) {
+        if (bytes_.size() + n > limit_) {
+            tooLarge_ = true;
             return false;
         }
-        body.append(data, n);
+        bytes_.append(data, n);
         return true;
-    });
-    if (tooLarge) return std::nullopt;
-    return body;
-}
+    }
+    bool tooLarge() const { return tooLarge_; }
+    size_t limit() const { return limit_; }
+    std::string& bytes() { return bytes_; }
+
+  private:
+    size_t limit_;
+    std::string bytes_;
+    bool tooLarge_ = false;
+};
 
 // A query parameter as an integer in [lo, hi]; `fallback` when absent. Throws Error naming it.
 int64_t queryInt(const Request& req, const std::string& name, int64_t fallback, int64_t lo, int64_t hi) {
@@ -234,14 +240,15 @@ json Api::statusJson(const JobRecord& job) const {
 
 void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
     const std::string type = mediaType(req);
-    const size_t limit = bodyLimit(limits_, req.path);
-    const auto body = readBody(reader, limit);
-    if (!body) return problem(res, 413, "the job is larger than " + std::to_string(limit) + " bytes");
+    BodyCollector body(limits_, req);
+    reader(std::ref(body));
+    if (body.tooLarge())
+        return problem(res, 413, "the job is larger than " + std::to_string(body.limit()) + " bytes");
     if (!type.empty() && type != kJsonType && type != "application/x-www-form-urlencoded" &&
         type != "text/plain") {
         return problem(res, 415, "send the job as application/json (got " + type + ")");
     }
-    json j = json::parse(*body, nullptr, false);
+    json j = json::parse(body.bytes(), nullptr, false);
     if (j.is_discarded()) return problem(res, 400, "the body is not valid JSON");
     if (!j.is_object()) return problem(res, 400, "the job must be a JSON object");
     JobSpec spec;
@@ -265,17 +272,8 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
 }
 
 void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentReader& reader) {
-    std::string bytes, fileName = req.has_param("name") ? req.get_param_value("name") : "upload";
-    bool tooLarge = false;
-    const size_t limit = bodyLimit(limits_, req.path);
-    const auto receive = [&](const char* data, size_t n) {
-        if (bytes.size() + n > limit) {
-            tooLarge = true;
-            return false;
-        }
-        bytes.append(data, n);
-        return true;
-    };
+    std::string fileName = req.has_param("name") ? req.get_param_value("name") : "upload";
+    BodyCollector body(limits_, req);
     if (req.is_multipart_form_data()) {
         int files = 0;
         reader(
@@ -284,20 +282,19 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
                 if (!part.filename.empty()) fileName = part.filename;
                 return ++files == 1;
             },
-            [&](const char* data, size_t n) { return files == 1 ? receive(data, n) : true; });
+            [&](const char* data, size_t n) { return files == 1 ? body(data, n) : true; });
     } else {
-        reader(receive);
+        reader(std::ref(body));
     }
-    if (tooLarge) {
-        return problem(res, 413, "the upload is larger than " + std::to_string(limit) + " bytes");
-    }
+    if (body.tooLarge())
+        return problem(res, 413, "the upload is larger than " + std::to_string(body.limit()) + " bytes");
     std::optional<MeshFormat> format;
     if (req.has_param("format")) {
         format = parseMeshFormat(req.get_param_value("format"));
         if (!format) return problem(res, 422, "format must be one of obj, stl, asc", "format");
     }
     try {
-        const MeshRecord m = catalog_.upload(bytes, fileName, format);
+        const MeshRecord m = catalog_.upload(body.bytes(), fileName, format);
         json doc = m.summary;
         doc["mesh"] = m.id;
         doc["file_name"] = m.name;
@@ -415,7 +412,10 @@ void Api::install(httplib::Server& server, bool accessLog) {
         // `curl -X POST` sends no Content-Length: a plain handler would wait out the read timeout for a body.
         {"POST /api/jobs/{id}/cancel",
          [this](const Request& req, Response& res, const httplib::ContentReader& r) {
-             if (req.has_header("Content-Length")) readBody(r, bodyLimit(limits_, req.path));  // ignored
+             if (req.has_header("Content-Length")) {
+                 BodyCollector ignored(limits_, req);
+                 r(std::ref(ignored));
+             }
              cancelJob(req, res);
          }},
     };
