@@ -193,20 +193,20 @@ json Api::statusJson(const JobRecord& job) const {
             break;
         case JobState::Running:
             if (const auto live = queue_.live(job.id)) {
-                const bool queuedPhase = live->phase == StudyPhase::Queued;
-                const double fraction = live->total ? double(live->done) / double(live->total) : 0.0;
-                progress = {{"phase", queuedPhase ? "starting" : studyPhaseName(live->phase)},
-                            {"done", live->done},
-                            {"total", live->total},
+                const RunPhase phase = live->phase();
+                const uint64_t done = live->done(), total = live->total();
+                const double fraction = total ? double(done) / double(total) : 0.0;
+                progress = {{"phase", phase == RunPhase::Queued ? "starting" : runPhaseName(phase)},
+                            {"done", done},
+                            {"total", total},
                             {"fraction", fraction}};
-                const StudyPhase phases[] = {StudyPhase::Tracing, StudyPhase::PhotonMap,
-                                             StudyPhase::Rendering};
+                const RunPhase phases[] = {RunPhase::Tracing, RunPhase::PhotonMap, RunPhase::Rendering};
                 for (int i = 0; i < steps; ++i) {
-                    if (phases[i] != live->phase) continue;
+                    if (phases[i] != phase) continue;
                     step = i + 1;
                     overall = (i + std::clamp(fraction, 0.0, 1.0)) / steps;
                 }
-                doc["cancel_requested"] = live->cancelRequested;
+                doc["cancel_requested"] = live->cancelled();
             }
             links["cancel"] = self + "/cancel";
             break;

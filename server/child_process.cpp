@@ -41,7 +41,7 @@ bool reap(pid_t pid, int& status, std::chrono::milliseconds wait) {
 }  // namespace
 
 ChildExit runChild(const std::vector<std::string>& argv, const std::function<bool(std::string_view)>& onLine,
-                   const std::atomic<bool>& cancel, std::chrono::milliseconds cancelGrace) {
+                   const RunControl& control, std::chrono::milliseconds cancelGrace) {
     if (argv.empty()) throw Error("launcher: nothing to run");
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) throw Error(std::string("launcher: pipe: ") + std::strerror(errno));
@@ -95,7 +95,7 @@ ChildExit runChild(const std::vector<std::string>& argv, const std::function<boo
     try {
         std::array<char, 4096> buffer;
         for (bool open = true; open;) {
-            if (cancel.load() && !result.cancelled) {
+            if (control.cancelled() && !result.cancelled) {
                 result.cancelled = true;
                 kill(-pid, SIGTERM);
                 if (!reap(pid, status, cancelGrace)) {

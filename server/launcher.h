@@ -39,12 +39,12 @@ struct ChildMesh {
 };
 
 // Runs the study in a child and returns its results. Follows the child's progress into `control`; when
-// control.cancel is set, ends the child's process group (SIGTERM, then SIGKILL after the grace period) and
-// throws Canceled. A launch that fails or exits non-zero throws Error with the end of the child's output.
+// control.cancel() is called, ends the child's process group (SIGTERM, then SIGKILL after the grace period)
+// and throws Canceled. A launch that fails or exits non-zero throws Error with the end of the child's output.
 StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
-                            const StudySettings& settings, StudyControl& control);
+                            const StudySettings& settings, RunControl& control);
 
 // Reads a progress line {"phase": "tracing", "done": 1, "total": 2} into control; false if it is not one.
-bool applyProgressLine(std::string_view line, StudyControl& control);
+bool applyProgressLine(std::string_view line, RunControl& control);
 
 }  // namespace facetlight::server
