@@ -5,6 +5,7 @@
 #include <new>
 
 #include "job_spec.h"
+#include "study/result_files.h"
 #include "util/error.h"
 
 namespace facetlight::server {
@@ -114,22 +115,19 @@ void JobQueue::runJob(const std::string& id, StudyControl& control) {
     try {
         const auto job = store_.job(id);
         if (!job) return;  // deleted while queued
-        JobSpec spec = parseJobSpec(job->request, cores_);
+        StudySpec spec = parseJobSpec(job->request, cores_);
         const int threads = std::min(spec.settings.trace.threads, cores_);
         spec.settings.trace.threads = threads;
         store_.markRunning(id, threads);
         store_.clearResults(id);  // a job re-run after a crash starts from nothing
-        const Stone stone = catalog_.resolve(spec.mesh);
-        StudyResult result =
-            launch_ && useLauncher(*launch_, spec.settings)
-                ? runStudyInChild(*launch_, catalog_.locate(spec.mesh), spec.settings, control)
-                : runStudy(stone, spec.settings, control);
-        store_.writeResult(id, "stats.json", result.stats.dump(2));
-        store_.writeResult(id, "stats.csv", result.statsCsv);
-        if (!result.renderPng.empty()) store_.writeResult(id, "render.png", result.renderPng);
-        if (!result.heatmapPng.empty()) store_.writeResult(id, "heatmap.png", result.heatmapPng);
-        if (!result.heatmapLayout.empty()) store_.writeResult(id, "heatmap.json", result.heatmapLayout);
-        if (!result.angularPng.empty()) store_.writeResult(id, "angular.png", result.angularPng);
+        Stone stone = catalog_.resolve(spec.mesh);
+        ChildMesh child = catalog_.locate(spec.mesh);
+        if (!spec.name.empty()) stone.name = child.name = spec.name;
+        StudyResult result = launch_ && useLauncher(*launch_, spec.settings)
+                                 ? runStudyInChild(*launch_, child, spec.settings, control)
+                                 : runStudy(stone, spec.settings, control);
+        for (const ResultFile& f : kResultFiles)
+            if (std::string bytes = f.bytes(result); !bytes.empty()) store_.writeResult(id, std::string(f.name), bytes);
         store_.markFinished(id, JobState::Succeeded);
     } catch (const Canceled&) {
         bool shuttingDown;

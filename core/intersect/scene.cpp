@@ -21,8 +21,7 @@ double smoothstep(double lo, double hi, double x) {
 Scene::Scene(const Stone& stone, const TraceSettings& settings)
     : stone_(stone),
       settings_(settings),
-      material_((settings.validate(),
-                 settings.n ? Material::constant(*settings.n) : Material::byName(settings.material))),
+      material_(settings.n ? Material::constant(*settings.n) : Material::byName(settings.material)),
       light_(settings.light, stone) {
     if (stone.facets.empty()) throw Error("stone '" + stone.name + "' has no facets");
     dispersive_ = settings.dispersion && material_.dispersive();

@@ -72,8 +72,6 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyCon
 
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyControl& control,
                      Communicator& comm) {
-    settings.trace.validate();
-    if (settings.render) settings.render->validate();
     StudyResult result;
     const int threads = settings.trace.threads;
 
@@ -118,7 +116,7 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyCon
         result.angularPng = encodePng(
             angularPlot(photons.crownExits, std::to_string(photons.crownExits.total) + " of " +
                                                 std::to_string(r.mapPhotons) + " photons (" +
-                                                std::string(lightModelName(settings.trace.light.model)) +
+                                                std::string(kLightModelNames.name(settings.trace.light.model)) +
                                                 " light), refracted out of table and crown"));
     }
 
