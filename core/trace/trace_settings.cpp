@@ -1,7 +1,6 @@
 #include "trace/trace_settings.h"
 
 #include "optics/material.h"
-#include "util/error.h"
 
 namespace facetlight {
 namespace {
@@ -54,12 +53,7 @@ const Schema<TraceSettings>& traceSettingsSchema() {
         },
         // The material's name matters only without an `n` to override it.
         [](const TraceSettings& s, const std::string& path) {
-            if (s.n) return;
-            try {
-                Material::byName(s.material);
-            } catch (const Error& e) {
-                throw Error(fieldPath(path, "material"), e.what());
-            }
+            if (!s.n) readChoice(s.material, fieldPath(path, "material"), materialNames());
         });
     return schema;
 }
