@@ -8,10 +8,10 @@
 #include "commands.h"
 #include "io/mesh_resolver.h"
 #include "process_communicator.h"
+#include "result_folder.h"
 #include "study/study.h"
 #include "terminal_output.h"
 #include "trace_options.h"
-#include "result_folder.h"
 #include "util/error.h"
 
 namespace facetlight::cli {
@@ -53,7 +53,8 @@ void run(RenderOptions& o) {
     if (!comm.isRoot()) return;
     if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();
 
-    std::cout << "wrote " << writeResultFiles(out, result) << " to " << out.string() << " in " << seconds << " s\n";
+    std::cout << "wrote " << writeResultFiles(out, result) << " to " << out.string() << " in " << seconds
+              << " s\n";
 }
 
 }  // namespace

@@ -36,7 +36,8 @@ class SettingsFlags {
             schema.read(s, given, root_);
         } catch (const Error& e) {
             for (const Flag& f : flags_)
-                if (settings::fieldPath(root_, f.path) == e.field()) throw Error(f.field->doc.flag, message(f, e.what()));
+                if (settings::fieldPath(root_, f.path) == e.field())
+                    throw Error(f.field->doc.flag, message(f, e.what()));
             throw;
         }
     }
@@ -72,8 +73,8 @@ class SettingsFlags {
         return h;
     }
 
-    void addFields(CLI::App* cmd, const std::vector<settings::FieldInfo>& fields, const nlohmann::json& defaults,
-                   const std::string& path) {
+    void addFields(CLI::App* cmd, const std::vector<settings::FieldInfo>& fields,
+                   const nlohmann::json& defaults, const std::string& path) {
         for (const settings::FieldInfo& f : fields) {
             const std::string at = settings::fieldPath(path, f.key);
             if (f.type == settings::FieldType::Object) {
@@ -132,7 +133,8 @@ class SettingsFlags {
         const std::string field = settings::fieldPath(root_, f.path) + " ";
         std::string words;
         for (const std::string& w : f.option->results()) words += (words.empty() ? "" : " ") + w;
-        const bool quoted = f.field->type == settings::FieldType::Boolean || what.find("(got '") != std::string::npos;
+        const bool quoted =
+            f.field->type == settings::FieldType::Boolean || what.find("(got '") != std::string::npos;
         const std::string got = quoted ? "" : " (got '" + words + "')";
         if (what.rfind(field, 0) == 0) return f.field->doc.flag + " " + what.substr(field.size()) + got;
         return f.field->doc.flag + ": " + what;

@@ -70,7 +70,9 @@ void addStudyCommand(CLI::App& app) {
     auto options = std::make_shared<StudyOptions>();
     CLI::App* cmd = app.add_subcommand(
         "study", "Run a job file's study into a folder (how the service runs jobs through a launcher)");
-    cmd->add_option("--job", options->job, "JSON, as POST /api/jobs takes it: {\"mesh\", \"name\", \"photons\", ..., \"render\": {...}}")
+    cmd->add_option(
+           "--job", options->job,
+           "JSON, as POST /api/jobs takes it: {\"mesh\", \"name\", \"photons\", ..., \"render\": {...}}")
         ->required();
     cmd->add_option("--out", options->out, "Folder for stats.json, stats.csv and the PNGs (rank 0 writes)")
         ->required();

@@ -127,7 +127,8 @@ std::vector<Route> Api::routes() {
         {"DELETE", "/api/jobs/{id}"},
         {"POST", "/api/jobs/{id}/cancel"},
     };
-    for (const ResultFile& f : kResultFiles) routes.push_back({"GET", "/api/jobs/{id}/" + std::string(f.route)});
+    for (const ResultFile& f : kResultFiles)
+        routes.push_back({"GET", "/api/jobs/{id}/" + std::string(f.route)});
     routes.push_back({"GET", "/api/meshes"});
     routes.push_back({"POST", "/api/meshes"});
     return routes;
@@ -354,7 +355,8 @@ void Api::install(httplib::Server& server, bool accessLog) {
         {"GET /api/meshes", [this](const Request&, Response& res) { sendJson(res, 200, catalog_.list()); }},
     };
     for (const ResultFile& f : kResultFiles)
-        plain["GET /api/jobs/{id}/" + std::string(f.route)] = result(std::string(f.name), std::string(f.mediaType));
+        plain["GET /api/jobs/{id}/" + std::string(f.route)] =
+            result(std::string(f.name), std::string(f.mediaType));
     // Routes that take a body read it themselves: that skips httplib's 8 KiB cap on form-encoded bodies
     // (what a plain `curl -d` sends) and lets each route count the bytes against its own limit.
     std::map<std::string, WithReader> withReader = {

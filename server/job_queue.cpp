@@ -127,7 +127,8 @@ void JobQueue::runJob(const std::string& id, StudyControl& control) {
                                  ? runStudyInChild(*launch_, child, spec.settings, control)
                                  : runStudy(stone, spec.settings, control);
         for (const ResultFile& f : kResultFiles)
-            if (std::string bytes = f.bytes(result); !bytes.empty()) store_.writeResult(id, std::string(f.name), bytes);
+            if (std::string bytes = f.bytes(result); !bytes.empty())
+                store_.writeResult(id, std::string(f.name), bytes);
         store_.markFinished(id, JobState::Succeeded);
     } catch (const Canceled&) {
         bool shuttingDown;

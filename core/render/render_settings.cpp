@@ -11,7 +11,8 @@ const Schema<CameraSettings>& cameraSchema() {
     static const Schema<CameraSettings> schema({
         number("elevation_deg", &CameraSettings::elevationDeg, {.lo = -90, .hi = 90},
                {"--elevation", "Camera elevation (90: face-up)", "degrees"}),
-        number("azimuth_deg", &CameraSettings::azimuthDeg, {.lo = -360, .hi = 360}, {"--azimuth", "Camera azimuth", "degrees"}),
+        number("azimuth_deg", &CameraSettings::azimuthDeg, {.lo = -360, .hi = 360},
+               {"--azimuth", "Camera azimuth", "degrees"}),
         number("distance", &CameraSettings::distance, {.lo = 1, .hi = 1000},
                {"--distance", "Camera distance from the stone's centre", "girdle diameters"}),
         number("fov_deg", &CameraSettings::fovDeg, {.lo = 0, .hi = 120, .openLo = true},
@@ -24,7 +25,8 @@ const Schema<CameraSettings>& cameraSchema() {
 
 const Schema<RenderSettings>& renderSettingsSchema() {
     static const Schema<RenderSettings> schema({
-        count("width", &RenderSettings::width, kMinImageSide, kMaxImageSide, {"--width", "Image width", "pixels"}),
+        count("width", &RenderSettings::width, kMinImageSide, kMaxImageSide,
+              {"--width", "Image width", "pixels"}),
         count("height", &RenderSettings::height, kMinImageSide, kMaxImageSide,
               {"--height", "Image height", "pixels"}),
         count("samples", &RenderSettings::samples, 1, kMaxSamples,

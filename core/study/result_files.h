@@ -10,11 +10,11 @@
 namespace facetlight {
 
 struct ResultFile {
-    std::string_view name;       // in a results folder, e.g. "stats.json"
-    std::string_view mediaType;  // what the service sends it as
-    std::string_view route;      // under the service's /api/jobs/{id}/
-    std::string_view link;       // its name among a finished job's links
-    bool rendered;               // linked only for a job with a render
+    std::string_view name;                            // in a results folder, e.g. "stats.json"
+    std::string_view mediaType;                       // what the service sends it as
+    std::string_view route;                           // under the service's /api/jobs/{id}/
+    std::string_view link;                            // its name among a finished job's links
+    bool rendered;                                    // linked only for a job with a render
     std::string (*bytes)(const StudyResult&);         // empty: the study made none
     void (*load)(StudyResult&, std::string&& bytes);  // the inverse
 };

@@ -113,11 +113,11 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, StudyCon
     if (photons.cancelled || control.cancel.load()) throw Canceled();
     const PhotonMap caustics(std::move(photons.caustic), threads);
     if (comm.isRoot()) {
-        result.angularPng = encodePng(
-            angularPlot(photons.crownExits, std::to_string(photons.crownExits.total) + " of " +
-                                                std::to_string(r.mapPhotons) + " photons (" +
-                                                std::string(kLightModelNames.name(settings.trace.light.model)) +
-                                                " light), refracted out of table and crown"));
+        result.angularPng = encodePng(angularPlot(
+            photons.crownExits, std::to_string(photons.crownExits.total) + " of " +
+                                    std::to_string(r.mapPhotons) + " photons (" +
+                                    std::string(kLightModelNames.name(settings.trace.light.model)) +
+                                    " light), refracted out of table and crown"));
     }
 
     enterPhase(control, StudyPhase::Rendering,

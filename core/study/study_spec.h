@@ -1,7 +1,8 @@
 #pragma once
 // The one job format: what `POST /api/jobs` takes, what the service stores and hands its launcher's child,
 // and what `facetlight study --job` reads. The trace settings sit at the top level beside `mesh`:
-//   {"mesh": "round_brilliant", "name": "...", "photons": 1e6, ..., "light": {...}, "render": false | true | {...}}
+//   {"mesh": "round_brilliant", "name": "...", "photons": 1e6, ..., "light": {...}, "render": false | true |
+//   {...}}
 #include <string>
 
 #include <nlohmann/json.hpp>

@@ -17,10 +17,11 @@ enum class LightModelKind { Collimated, Hemisphere, Point };
 enum class IntersectorKind { Auto, Convex, Embree };
 
 inline constexpr NameTable<LightModelKind, 3> kLightModelNames{{{{LightModelKind::Collimated, "collimated"},
-                                                                  {LightModelKind::Hemisphere, "hemisphere"},
-                                                                  {LightModelKind::Point, "point"}}}};
-inline constexpr NameTable<IntersectorKind, 3> kIntersectorNames{
-    {{{IntersectorKind::Auto, "auto"}, {IntersectorKind::Convex, "convex"}, {IntersectorKind::Embree, "embree"}}}};
+                                                                 {LightModelKind::Hemisphere, "hemisphere"},
+                                                                 {LightModelKind::Point, "point"}}}};
+inline constexpr NameTable<IntersectorKind, 3> kIntersectorNames{{{{IntersectorKind::Auto, "auto"},
+                                                                   {IntersectorKind::Convex, "convex"},
+                                                                   {IntersectorKind::Embree, "embree"}}}};
 
 struct LightSettings {
     LightModelKind model = LightModelKind::Collimated;

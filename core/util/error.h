@@ -9,13 +9,14 @@ namespace facetlight {
 class Error : public std::runtime_error {
 public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
-    // About one setting: `field` is its dotted path ("trace.light.direction" style, e.g. "render.width"),
-    // which the message starts with; the server reports it as the problem's field.
-    Error(const std::string& field, const std::string& message) : std::runtime_error(message), field_(field) {}
+    // About one field of a job: `field` is its dotted path ("light.direction", "render.width"), which the
+    // message names; the server reports it as the problem's `field`.
+    Error(const std::string& field, const std::string& message)
+        : std::runtime_error(message), field_(field) {}
 
     const std::string& field() const { return field_; }
 
-private:
+  private:
     std::string field_;
 };
 

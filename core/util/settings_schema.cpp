@@ -43,7 +43,8 @@ uint64_t readCount(const json& j, const std::string& path, uint64_t lo, uint64_t
         if (d == std::floor(d) && d >= 0 && d < 0x1p64) v = uint64_t(d);
     }
     if (v && *v >= lo && *v <= hi) return *v;
-    throw Error(path, path + " must be an integer between " + std::to_string(lo) + " and " + std::to_string(hi));
+    throw Error(path,
+                path + " must be an integer between " + std::to_string(lo) + " and " + std::to_string(hi));
 }
 
 double readNumber(const json& j, const std::string& path, const NumberRange& r) {
@@ -84,7 +85,8 @@ Vec3 readVec3(const json& j, const std::string& path, bool nonZero) {
 }
 
 void checkObject(const json& j, const std::string& path, const std::vector<FieldInfo>& fields) {
-    if (!j.is_object()) throw Error(path, (path.empty() ? std::string("settings") : path) + " must be a JSON object");
+    if (!j.is_object())
+        throw Error(path, (path.empty() ? std::string("settings") : path) + " must be a JSON object");
     for (const auto& [key, value] : j.items()) {
         bool known = false;
         for (const FieldInfo& f : fields) known = known || f.key == key;

@@ -43,11 +43,11 @@ struct FieldInfo {
     std::string key;  // the JSON key
     FieldType type = FieldType::Integer;
     Doc doc;
-    uint64_t minCount = 0, maxCount = 0;  // Integer: whole numbers in [minCount, maxCount]
-    NumberRange range;                    // Number
-    bool nullable = false;                // Number: null means none
-    bool nonZero = false;                 // Vec3: not the zero vector
-    std::vector<std::string> choices;     // Choice: the names it takes
+    uint64_t minCount = 0, maxCount = 0;             // Integer: whole numbers in [minCount, maxCount]
+    NumberRange range;                               // Number
+    bool nullable = false;                           // Number: null means none
+    bool nonZero = false;                            // Vec3: not the zero vector
+    std::vector<std::string> choices;                // Choice: the names it takes
     const std::vector<FieldInfo>* fields = nullptr;  // Object: its own table
 };
 
@@ -68,7 +68,8 @@ uint64_t readCount(const nlohmann::json& j, const std::string& path, uint64_t lo
 double readNumber(const nlohmann::json& j, const std::string& path, const NumberRange& range);
 bool readBool(const nlohmann::json& j, const std::string& path);
 std::string readText(const nlohmann::json& j, const std::string& path);
-std::string readChoice(const nlohmann::json& j, const std::string& path, const std::vector<std::string>& choices);
+std::string readChoice(const nlohmann::json& j, const std::string& path,
+                       const std::vector<std::string>& choices);
 Vec3 readVec3(const nlohmann::json& j, const std::string& path, bool nonZero);
 // Refuses a non-object and any key not in `fields`.
 void checkObject(const nlohmann::json& j, const std::string& path, const std::vector<FieldInfo>& fields);
@@ -84,7 +85,8 @@ template <class S>
 class Schema {
   public:
     // `check`: what concerns several fields together, after they are read.
-    explicit Schema(std::vector<Field<S>> fields, std::function<void(const S&, const std::string&)> check = {})
+    explicit Schema(std::vector<Field<S>> fields,
+                    std::function<void(const S&, const std::string&)> check = {})
         : fields_(std::move(fields)), check_(std::move(check)) {
         for (const Field<S>& f : fields_) infos_.push_back(f.info);
     }
@@ -94,7 +96,8 @@ class Schema {
     void read(S& s, const nlohmann::json& j, const std::string& path = "") const {
         checkObject(j, path, infos_);
         for (const Field<S>& f : fields_)
-            if (const auto it = j.find(f.info.key); it != j.end()) f.read(s, *it, fieldPath(path, f.info.key));
+            if (const auto it = j.find(f.info.key); it != j.end())
+                f.read(s, *it, fieldPath(path, f.info.key));
         if (check_) check_(s, path);
     }
     S read(const nlohmann::json& j, const std::string& path = "") const {
@@ -125,7 +128,9 @@ Field<S> count(std::string key, T S::*member, uint64_t lo, uint64_t hi, Doc doc)
     info.minCount = lo;
     info.maxCount = hi;
     return {std::move(info),
-            [=](S& s, const nlohmann::json& j, const std::string& path) { s.*member = T(readCount(j, path, lo, hi)); },
+            [=](S& s, const nlohmann::json& j, const std::string& path) {
+                s.*member = T(readCount(j, path, lo, hi));
+            },
             [=](const S& s) { return nlohmann::json(s.*member); }};
 }
 
@@ -134,7 +139,9 @@ Field<S> number(std::string key, double S::*member, NumberRange range, Doc doc) 
     FieldInfo info = describe(std::move(key), FieldType::Number, std::move(doc));
     info.range = range;
     return {std::move(info),
-            [=](S& s, const nlohmann::json& j, const std::string& path) { s.*member = readNumber(j, path, range); },
+            [=](S& s, const nlohmann::json& j, const std::string& path) {
+                s.*member = readNumber(j, path, range);
+            },
             [=](const S& s) { return nlohmann::json(s.*member); }};
 }
 
@@ -181,7 +188,9 @@ Field<S> vec3(std::string key, Vec3 S::*member, bool nonZero, Doc doc) {
     FieldInfo info = describe(std::move(key), FieldType::Vec3, std::move(doc));
     info.nonZero = nonZero;
     return {std::move(info),
-            [=](S& s, const nlohmann::json& j, const std::string& path) { s.*member = readVec3(j, path, nonZero); },
+            [=](S& s, const nlohmann::json& j, const std::string& path) {
+                s.*member = readVec3(j, path, nonZero);
+            },
             [=](const S& s) {
                 const Vec3& v = s.*member;
                 return nlohmann::json::array({v.x, v.y, v.z});

@@ -48,7 +48,8 @@ json::json_pointer pointer(const std::string& path) {
 std::vector<json> badValues(const FieldInfo& f) {
     switch (f.type) {
         case FieldType::Integer:
-            return {"1", 1.5, double(f.maxCount) * 4 + 1e20, f.minCount > 0 ? json(f.minCount - 1) : json(-1)};
+            return {"1", 1.5, double(f.maxCount) * 4 + 1e20,
+                    f.minCount > 0 ? json(f.minCount - 1) : json(-1)};
         case FieldType::Number:
             return {"1", true, f.range.lo - 1, f.range.hi + 1};
         case FieldType::Boolean:
