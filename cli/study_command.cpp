@@ -39,7 +39,15 @@ void runStudyCommand(const StudyOptions& options) {
     Communicator& comm = processCommunicator();
     StudySpec spec;
     try {
-        spec = StudySpec::fromJson(readJob(options.job));
+        nlohmann::json job = readJob(options.job);
+        // Job files of earlier versions hold the trace settings under "trace", as scripts/same-results
+        // writes them for both builds.
+        if (job.is_object() && job.contains("trace") && job["trace"].is_object()) {
+            const nlohmann::json trace = job["trace"];
+            job.erase("trace");
+            job.update(trace);
+        }
+        spec = StudySpec::fromJson(job);
     } catch (const Error& e) {
         throw Error(e.field(), "job file " + options.job + ": " + e.what());
     }
