@@ -22,10 +22,11 @@ struct TraceOptions {
     std::string light = "collimated";
     double tilt = 0;
     double headShadow = 0;
+    std::string sky = "uniform";
     std::string material = "diamond";
     std::optional<double> n;
     bool noDispersion = false;
-    int maxBounces = 64;
+    int maxBounces = 256;
     std::string intersector = "auto";
 };
 
@@ -55,6 +56,10 @@ inline void addTraceOptions(CLI::App* cmd, TraceOptions& o) {
     cmd->add_option("--tilt", o.tilt, "Tilt of the stone about the x axis, degrees")->capture_default_str();
     cmd->add_option("--head-shadow", o.headShadow,
                     "Hemisphere: half-angle of the viewer's cone removed, degrees");
+    cmd->add_option("--sky", o.sky,
+                    "Hemisphere: uniform (a diffuse dome, the same radiance everywhere) or cosine (radiance "
+                    "falling as cos(theta) from the zenith)")
+        ->capture_default_str();
     cmd->add_option("--material", o.material, "diamond, cubic_zirconia, sapphire, fused_silica or bk7")
         ->capture_default_str();
     cmd->add_option("--n", o.n, "A constant refractive index instead of the material's");
@@ -78,6 +83,7 @@ inline TraceSettings toTraceSettings(const TraceOptions& o) {
     s.light.model = parseLightModel(o.light);
     s.light.tiltDeg = o.tilt;
     s.light.headShadowDeg = o.headShadow;
+    s.light.sky = parseSky(o.sky);
     s.validate();
     return s;
 }

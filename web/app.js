@@ -164,6 +164,7 @@ function jobSummary(settings) {
   if (settings.light) {
     let light = settings.light.model;
     if (settings.light.tilt_deg) light += `, tilt ${settings.light.tilt_deg}°`;
+    if (settings.light.model === 'hemisphere' && settings.light.sky) light += `, ${settings.light.sky} sky`;
     if (settings.light.model === 'hemisphere' && settings.light.head_shadow_deg) {
       light += `, head shadow ${settings.light.head_shadow_deg}°`;
     }
@@ -227,6 +228,7 @@ function describeMesh() {
   if (p.table_pct != null) parts.push(`table ${fmtNumber(p.table_pct, 1)} %`);
   if (p.crown_angle_deg != null) parts.push(`crown ${fmtNumber(p.crown_angle_deg, 1)}°`);
   if (p.pavilion_angle_deg != null) parts.push(`pavilion ${fmtNumber(p.pavilion_angle_deg, 1)}°`);
+  if (p.lower_half_angle_deg != null) parts.push(`lower halves ${fmtNumber(p.lower_half_angle_deg, 2)}°`);
   if (p.total_depth_pct != null) parts.push(`depth ${fmtNumber(p.total_depth_pct, 1)} %`);
   if (!m.convex) parts.push('non-convex');
   hint.textContent = parts.join(' · ');
@@ -326,6 +328,7 @@ function buildJob(form) {
   };
   if (job.light.model === 'hemisphere') {
     job.light.head_shadow_deg = readNumber(form, 'light.head_shadow_deg', errors);
+    job.light.sky = form.elements['light.sky'].value;
   }
   job.material = form.elements.material.value;
   job.dispersion = form.elements.dispersion.checked;
@@ -390,6 +393,7 @@ function syncFormControls() {
   const form = $('#job-form');
   const hemisphere = form.elements['light.model'].value === 'hemisphere';
   form.elements['light.head_shadow_deg'].disabled = !hemisphere;
+  form.elements['light.sky'].disabled = !hemisphere;
   const render = form.elements.render.checked;
   for (const input of $('#render-options').querySelectorAll('input')) input.disabled = !render;
   $('#render-options').classList.toggle('disabled', !render);
@@ -818,8 +822,12 @@ function proportionList(mesh) {
   const p = (mesh && mesh.proportions) || {};
   const rows = [
     ['Facets', mesh && mesh.facets], ['Table', p.table_pct, '%'], ['Crown height', p.crown_height_pct, '%'],
-    ['Pavilion depth', p.pavilion_depth_pct, '%'], ['Girdle', p.girdle_pct, '%'], ['Total depth', p.total_depth_pct, '%'],
+    ['Pavilion depth', p.pavilion_depth_pct, '%'], ['Girdle, thinnest', p.girdle_pct, '%'],
+    ['Girdle, thickest', p.girdle_thickest_pct, '%'], ['Total depth', p.total_depth_pct, '%'],
     ['Crown angle', p.crown_angle_deg, '°'], ['Pavilion angle', p.pavilion_angle_deg, '°'],
+    ['Star angle', p.star_angle_deg, '°'], ['Upper half angle', p.upper_half_angle_deg, '°'],
+    ['Lower half angle', p.lower_half_angle_deg, '°'], ['Star length', p.star_pct, '%'],
+    ['Lower half length', p.lower_half_pct, '%'],
   ].filter(([, v]) => v !== undefined && v !== null);
   return h('dl', { class: 'kv' }, rows.map(([k, v, unit]) => [h('dt', {}, k), h('dd', {}, unit ? `${fmtNumber(v, 2)}${unit === '%' ? ' %' : unit}` : String(v))]));
 }
@@ -853,7 +861,8 @@ function resultPage(job, stats) {
           h('dt', {}, 'Reflected at entry'), h('dd', {}, fmtInt(totals.reflected_at_entry)),
           h('dt', {}, 'Entered'), h('dd', {}, fmtInt(totals.entered)),
           h('dt', {}, 'Exited'), h('dd', {}, fmtInt(totals.exited)),
-          h('dt', {}, 'Trapped'), h('dd', {}, fmtInt(totals.trapped)),
+          h('dt', {}, 'Trapped'), h('dd', {}, totals.trapped_share == null ? fmtInt(totals.trapped)
+            : `${fmtInt(totals.trapped)} (${fmtNumber(100 * totals.trapped_share, 4)} % ± ${fmtNumber(100 * totals.trapped_share_stderr, 4)})`),
           h('dt', {}, 'Time'), h('dd', {}, `${fmtDuration(timing.seconds)} on ${timing.threads} thread${timing.threads === 1 ? '' : 's'}`),
           h('dt', {}, 'Speed'), h('dd', {}, `${fmtInt(timing.photons_per_second)} photons/s`))),
       h('section', { class: 'card', 'aria-labelledby': 'stone-title' },

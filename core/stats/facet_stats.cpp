@@ -118,6 +118,7 @@ json statsToJson(const FacetStats& s, const Stone& stone, const TraceSettings& s
         totals[name] = p;
         totals[name + "_stderr"] = stderrOf(p, n);
     };
+    figure("trapped_share", share(s.trapped, n));
     figure("crown_return", share(s.crownReturn, n));
     figure("crown_return_with_reflection", share(s.crownReturn + s.crownReflection, n));
     const double w = n ? double(s.weightSum) / kWeightScale / double(n) : 0.0;

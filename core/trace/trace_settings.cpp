@@ -38,6 +38,17 @@ LightModelKind parseLightModel(std::string_view name) {
     throw Error("light.model must be one of collimated, hemisphere, point (got '" + std::string(name) + "')");
 }
 
+std::string_view skyName(SkyKind kind) {
+    return kind == SkyKind::Cosine ? "cosine" : "uniform";
+}
+
+SkyKind parseSky(std::string_view name) {
+    for (SkyKind k : {SkyKind::Uniform, SkyKind::Cosine}) {
+        if (skyName(k) == name) return k;
+    }
+    throw Error("light.sky must be one of uniform, cosine (got '" + std::string(name) + "')");
+}
+
 std::string_view intersectorName(IntersectorKind kind) {
     switch (kind) {
         case IntersectorKind::Auto:
@@ -83,6 +94,7 @@ json toJson(const LightSettings& s) {
             {"direction", vec3Json(s.direction)},
             {"tilt_deg", s.tiltDeg},
             {"head_shadow_deg", s.headShadowDeg},
+            {"sky", skyName(s.sky)},
             {"position", vec3Json(s.position)}};
 }
 
@@ -114,13 +126,14 @@ TraceSettings TraceSettings::fromJson(const json& j) {
         s.intersector = parseIntersector(getString(j["intersector"], "intersector"));
     if (j.contains("light")) {
         const json& l = j["light"];
-        checkKeys(l, "light", {"model", "direction", "tilt_deg", "head_shadow_deg", "position"});
+        checkKeys(l, "light", {"model", "direction", "tilt_deg", "head_shadow_deg", "sky", "position"});
         if (l.contains("model")) s.light.model = parseLightModel(getString(l["model"], "light.model"));
         if (l.contains("direction")) s.light.direction = getVec3(l["direction"], "light.direction");
         if (l.contains("tilt_deg")) s.light.tiltDeg = getNumber(l["tilt_deg"], "light.tilt_deg");
         if (l.contains("head_shadow_deg")) {
             s.light.headShadowDeg = getNumber(l["head_shadow_deg"], "light.head_shadow_deg");
         }
+        if (l.contains("sky")) s.light.sky = parseSky(getString(l["sky"], "light.sky"));
         if (l.contains("position")) s.light.position = getVec3(l["position"], "light.position");
     }
     s.validate();
