@@ -44,6 +44,12 @@ void runStudyCommand(const StudyOptions& options) {
     if (job.contains("render")) settings.render = RenderSettings::fromJson(job["render"]);
     Stone stone = resolveStone(job["mesh"].get<std::string>());
     if (job.contains("name") && job["name"].is_string()) stone.name = job["name"];
+    const fs::path out(options.out);
+    if (comm.isRoot()) {  // before the work, so that a folder we cannot make costs no trace
+        std::error_code ec;
+        fs::create_directories(out, ec);
+        if (ec || !fs::is_directory(out)) throw Error("cannot create the output folder " + out.string());
+    }
 
     StudyControl control;
     StudyResult result;
@@ -59,7 +65,6 @@ void runStudyCommand(const StudyOptions& options) {
     }
     if (!comm.isRoot()) return;
     if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();
-    const fs::path out(options.out);
     // stats.json last: its presence tells the launcher the folder is complete.
     writeFile(out / "stats.csv", result.statsCsv);
     // A trace-only study still has its heat-map; the render and the angular plot come with a render.
@@ -79,7 +84,8 @@ void addStudyCommand(CLI::App& app) {
         "study", "Run a job file's study into a folder (how the service runs jobs through a launcher)");
     cmd->add_option("--job", options->job, "JSON: {\"mesh\", \"name\", \"trace\": {...}, \"render\": {...}}")
         ->required();
-    cmd->add_option("--out", options->out, "Folder for stats.json, stats.csv and the PNGs (rank 0 writes)")
+    cmd->add_option("--out", options->out,
+                    "Folder for stats.json, stats.csv and the PNGs, created if missing (rank 0 writes)")
         ->required();
     cmd->add_flag("--progress-json", options->progressJson, "Write progress as JSON lines on stderr");
     cmd->callback([options] { runStudyCommand(*options); });

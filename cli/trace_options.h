@@ -26,7 +26,7 @@ struct TraceOptions {
     std::string material = "diamond";
     std::optional<double> n;
     bool noDispersion = false;
-    int maxBounces = 256;
+    int maxBounces = 512;
     std::string intersector = "auto";
 };
 

@@ -34,7 +34,7 @@ struct TraceSettings {
     std::string material = "diamond";
     std::optional<double> n;  // overrides the material with a constant index
     bool dispersion = true;   // each photon a wavelength in 380-780 nm; false: 589.3 nm
-    int maxBounces = 256;     // internal reflections after which a photon counts as trapped (docs/optics.md)
+    int maxBounces = 512;     // internal reflections after which a photon counts as trapped (docs/optics.md)
     IntersectorKind intersector = IntersectorKind::Auto;
     LightSettings light;
 
