@@ -48,7 +48,7 @@ TEST_P(SlabUnderTheSky, FirstSurfaceReflectionMatchesTheQuadrature) {
     s.light.model = LightModelKind::Hemisphere;
     s.light.sky = c.sky;
     s.light.headShadowDeg = c.headShadowDeg;
-    const TraceResult r = trace(slab, s);
+    const TraceResult r = trace(Scene(slab, s));
     const Facet* top = nullptr;
     for (const Facet& f : slab.facets)
         if (f.name == "top") top = &f;
