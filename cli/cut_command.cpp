@@ -33,9 +33,15 @@ std::string flagOf(const std::string& name) {
 void printList() {
     for (const auto& shape : cutShapes()) {
         std::printf("%s: %s\n", shape.name.c_str(), shape.description.c_str());
-        for (const auto& p : shape.parameters)
-            std::printf("  %-17s %8g  [%g, %g] %-4s %s\n", flagOf(p.name).c_str(), p.defaultValue, p.min,
-                        p.max, p.unit.c_str(), p.help.c_str());
+        for (const auto& p : shape.parameters) {
+            std::string range = "[" + parameterText(p, p.min) + ", " + parameterText(p, p.max) + "]";
+            if (!p.choices.empty()) {
+                range.clear();
+                for (const auto& c : p.choices) range += (range.empty() ? "" : "|") + c;
+            }
+            std::printf("  %-17s %8s  %s %-4s %s\n", flagOf(p.name).c_str(),
+                        parameterText(p, p.defaultValue).c_str(), range.c_str(), p.unit.c_str(), p.help.c_str());
+        }
     }
 }
 
@@ -61,6 +67,16 @@ void addCutCommand(CLI::App& app) {
         for (const auto& p : shape.parameters) {
             if (!seen.insert(p.name).second) continue;
             const std::string name = p.name;
+            if (!p.choices.empty()) {
+                cmd->add_option_function<std::string>(
+                       flagOf(name),
+                       [options, param = p](const std::string& v) {
+                           options->values[param.name] = choiceIndex(param, v);
+                       },
+                       p.help)
+                    ->type_name("NAME");
+                continue;
+            }
             cmd->add_option_function<double>(
                    flagOf(name), [options, name](const double& v) { options->values[name] = v; }, p.help)
                 ->type_name(p.unit.empty() ? "NUMBER" : p.unit);

@@ -54,6 +54,12 @@ void runStudyCommand(const StudyOptions& options) {
     const StudySettings& settings = spec.settings;
     Stone stone = resolveStone(spec.mesh);
     if (!spec.name.empty()) stone.name = spec.name;
+    const fs::path out(options.out);
+    if (comm.isRoot()) {  // before the work, so that a folder we cannot make costs no trace
+        std::error_code ec;
+        fs::create_directories(out, ec);
+        if (ec || !fs::is_directory(out)) throw Error("cannot create the output folder " + out.string());
+    }
 
     RunControl control;
     StudyResult result;
@@ -64,7 +70,7 @@ void runStudyCommand(const StudyOptions& options) {
     }
     if (!comm.isRoot()) return;
     if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();
-    writeResultFiles(options.out, result);
+    writeResultFiles(out, result);
 }
 
 }  // namespace
@@ -77,7 +83,8 @@ void addStudyCommand(CLI::App& app) {
            "--job", options->job,
            "JSON, as POST /api/jobs takes it: {\"mesh\", \"name\", \"photons\", ..., \"render\": {...}}")
         ->required();
-    cmd->add_option("--out", options->out, "Folder for stats.json, stats.csv and the PNGs (rank 0 writes)")
+    cmd->add_option("--out", options->out,
+                    "Folder for stats.json, stats.csv and the PNGs, created if missing (rank 0 writes)")
         ->required();
     cmd->add_flag("--progress-json", options->progressJson, "Write progress as JSON lines on stderr");
     cmd->callback([options] { runStudyCommand(*options); });

@@ -25,7 +25,7 @@ inline void writeFile(const std::filesystem::path& path, std::string_view bytes)
 }
 
 // A stone's trade proportions, one per line ("-" where one does not apply), as `info` and `cut` print them
-// (scripts/make-meshes reads the second field, or the third after a two-word label).
+// (scripts/make-meshes reads the figure after the label).
 inline void printProportions(const Proportions& p) {
     auto line = [](const char* label, const std::optional<double>& v, const char* unit) {
         if (v)
@@ -36,11 +36,17 @@ inline void printProportions(const Proportions& p) {
     std::printf("  %-18s %8.3f\n", "length/width", p.length / p.width);
     line("table", p.tablePct, "%");
     line("crown height", p.crownHeightPct, "%");
-    line("girdle", p.girdlePct, "%");
+    line("girdle thinnest", p.girdlePct, "%");
+    line("girdle thickest", p.girdleThickestPct, "%");
     line("pavilion depth", p.pavilionDepthPct, "%");
     line("total depth", p.totalDepthPct, "%");
     line("crown angle", p.crownAngleDeg, "deg");
     line("pavilion angle", p.pavilionAngleDeg, "deg");
+    line("star angle", p.starAngleDeg, "deg");
+    line("upper half angle", p.upperHalfAngleDeg, "deg");
+    line("lower half angle", p.lowerHalfAngleDeg, "deg");
+    line("star length", p.starPct, "%");
+    line("lower half length", p.lowerHalfPct, "%");
 }
 
 // Redraws the run's phase and a bar of its progress on stderr every 100 ms while it lives, only when stderr

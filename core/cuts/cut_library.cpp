@@ -14,19 +14,37 @@ namespace {
 
 using Params = std::vector<CutParameter>;
 
+std::string choiceList(const CutParameter& param) {
+    std::string out;
+    for (const auto& c : param.choices) out += (out.empty() ? "" : ", ") + c;
+    return out;
+}
+
 // The round brilliant's tiers, with defaults from `d`; fancy shapes and presets share them.
 Params brilliantParameters(const RoundBrilliantParams& d) {
     return {
         {"table", "%", "table, corner to corner (fancy shapes: across the width)", d.tablePct, 20, 90},
         {"crown", "deg", "crown angle (bezels)", d.crownAngleDeg, 10, 60},
         {"pavilion", "deg", "pavilion angle (mains)", d.pavilionAngleDeg, 20, 60},
-        {"girdle", "%", "girdle thickness at the thin points; 0 = knife edge", d.girdlePct, 0, 10},
+        {"girdle", "%", "girdle thickness where thinnest (the middle of each half); 0 = knife edge", d.girdlePct,
+         0, 10},
         {"star", "%", "star length, table edge to girdle", d.starPct, 10, 90},
         {"lower_half", "%", "lower-half length, girdle to centre", d.lowerHalfPct, 10, 95},
         {"culet", "%", "culet, flat to flat; 0 = pointed", d.culetPct, 0, 30},
         {"girdle_facets", "", "0 = smooth (64 sides), else a multiple of 16", double(d.girdleFacets), 0, 400,
          true},
     };
+}
+
+// Round outlines only: the fancy shapes keep the faceters' halves, which stay in place when their planes are
+// laid on a pointed outline (the trade's construction is defined on the circle).
+Params roundParameters(const RoundBrilliantParams& d) {
+    Params params = brilliantParameters(d);
+    params.push_back({"halves", "",
+                      "trade: the trade's halves (DiamCalc, GIA reports); faceter: 3.75 deg off the mains, "
+                      "another stone",
+                      double(d.halves), 0, 1, true, {"trade", "faceter"}});
+    return params;
 }
 
 RoundBrilliantParams brilliantValues(const CutValues& v) {
@@ -39,6 +57,7 @@ RoundBrilliantParams brilliantValues(const CutValues& v) {
     p.lowerHalfPct = v.at("lower_half");
     p.culetPct = v.at("culet");
     p.girdleFacets = int(v.at("girdle_facets"));
+    p.halves = v.count("halves") ? HalvesLayout(int(v.at("halves"))) : HalvesLayout::Faceter;
     return p;
 }
 
@@ -51,7 +70,7 @@ RoundBrilliantParams withValues(double table, double crown, double pavilion, dou
 }
 
 CutShape roundShape(std::string name, std::string description, const RoundBrilliantParams& defaults) {
-    return {std::move(name), std::move(description), brilliantParameters(defaults),
+    return {std::move(name), std::move(description), roundParameters(defaults),
             [](const CutValues& v) { return makeRoundBrilliant(brilliantValues(v)); }};
 }
 
@@ -173,6 +192,18 @@ std::vector<CutShape> buildLibrary() {
 
 }  // namespace
 
+double choiceIndex(const CutParameter& param, const std::string& name) {
+    for (size_t i = 0; i < param.choices.size(); ++i)
+        if (param.choices[i] == name) return double(i);
+    throw Error(param.name + " '" + name + "': must be one of " + choiceList(param));
+}
+
+std::string parameterText(const CutParameter& param, double value) {
+    if (!param.choices.empty() && value >= 0 && value < double(param.choices.size()))
+        return param.choices[size_t(value)];
+    return formatNumber(value);
+}
+
 const std::vector<CutShape>& cutShapes() {
     static const std::vector<CutShape> shapes = buildLibrary();
     return shapes;
@@ -208,6 +239,9 @@ CutValues completeCutValues(const CutShape& shape, const CutValues& values) {
                         " and " + formatNumber(param->max) + unit);
         if (param->integer && value != std::floor(value))
             throw Error(name + " " + formatNumber(value) + ": must be a whole number");
+        if (!param->choices.empty() && !(value >= 0 && value < double(param->choices.size())))
+            throw Error(name + " " + formatNumber(value) + ": must be the index of one of " +
+                        choiceList(*param));
         out[name] = value;
     }
     return out;
@@ -224,7 +258,7 @@ std::string cutCommandLine(const CutShape& shape, const CutValues& completeValue
         std::string flag = p.name;
         for (char& c : flag)
             if (c == '_') c = '-';
-        out += " --" + flag + " " + formatNumber(completeValues.at(p.name));
+        out += " --" + flag + " " + parameterText(p, completeValues.at(p.name));
     }
     return out;
 }

@@ -16,6 +16,7 @@ struct CutParameter {
     std::string help;
     double defaultValue = 0, min = 0, max = 0;
     bool integer = false;
+    std::vector<std::string> choices = {};  // a named choice: the value is the chosen name's index
 };
 
 using CutValues = std::map<std::string, double>;
@@ -36,6 +37,11 @@ std::string knownShapeNames();  // comma-separated
 // a value outside its range or a fraction given for a count, and for proportions that cannot make the stone.
 CutValues completeCutValues(const CutShape& shape, const CutValues& values);
 PolygonMesh makeCut(const std::string& shape, const CutValues& values = {});
+
+// The index of a choice parameter's value `name`. Throws Error listing the choices.
+double choiceIndex(const CutParameter& param, const std::string& name);
+// A parameter's value as the command line writes it: a choice's name, else the number.
+std::string parameterText(const CutParameter& param, double value);
 
 // "round_brilliant --table 57 --crown 34 ...": the command-line arguments that build this design.
 std::string cutCommandLine(const CutShape& shape, const CutValues& completeValues);

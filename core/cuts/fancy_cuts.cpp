@@ -107,7 +107,8 @@ std::vector<Vec3> fancyOutline(const FancyBrilliantParams& p) {
 
 PolygonMesh makeFancyBrilliant(const FancyBrilliantParams& p) {
     const std::vector<Vec3> outline = fancyOutline(p);
-    const double R = 0.5, h = p.tiers.girdlePct / 200;
+    const double R = 0.5;
+    const GirdleRims rims = girdleRims(p.tiers);
     const bool pointed = p.outline == FancyOutline::Princess || p.outline == FancyOutline::Marquise ||
                          p.outline == FancyOutline::Heart;
     std::vector<NamedPlane> planes;
@@ -119,7 +120,7 @@ PolygonMesh makeFancyBrilliant(const FancyBrilliantParams& p) {
         } else if (std::fabs(n.z) > 1e-12) {
             // Keep the plane's height where it crosses the girdle's edge; move it out with the outline.
             const Vec3 u{n.x / slopeSin, n.y / slopeSin, 0};
-            const double z0 = n.z > 0 ? h : -h;
+            const double z0 = n.z > 0 ? rims.upper : rims.lower;
             const double reach = (round.plane.offset - n.z * z0) / slopeSin;
             // Rounded outlines move each plane out by the outline's extra reach; pointed ones scale it, which
             // keeps more of the small facets near the points.

@@ -47,42 +47,87 @@ void validate(const RoundBrilliantParams& p) {
               formatNumber(std::floor(ridgeToCulet * 100) / 100) + "% fits");
 }
 
-// The azimuth of the upper and lower halves from the main they flank: 3.75 deg (index 1 on a 96 gear, as in
-// the usual brilliant diagram), narrowed for fine girdles so that the girdle stays thinnest at the mains.
+// The azimuth of the upper and lower halves from the main they flank. Trade: the chord from the main's girdle
+// point to the 22.5-deg girdle point is horizontal, so the half faces 11.25 deg off the main. Faceter: 3.75
+// deg (index 1 on a 96 gear, as in the usual brilliant diagram), narrowed for fine girdles so that the girdle
+// stays thinnest near the mains; on a knife edge the halves meet the girdle in the 16-gon's chords.
 double halfAzimuthDeg(const RoundBrilliantParams& p, int sides) {
-    if (p.girdlePct == 0) return 11.25;  // knife edge: the halves meet the girdle in the 16-gon's chords
+    if (p.halves == HalvesLayout::Trade || p.girdlePct == 0) return 11.25;
     return std::min(3.75, 2.0 / 3.0 * 360.0 / sides);
 }
 
+// How far outside the line through a half's girdle point, across the half's azimuth (`a` deg off the main),
+// the girdle polygon reaches: a half of slope s comes tan(s) times this much closer to the girdle plane there,
+// where the girdle is thinnest. The polygon's sides lie at distance kR, its corners at 360 (k + 1/2) / sides.
+double girdleBulge(int sides, double a) {
+    if (sides == 0) return 0;  // knife edge: the outline is the halves' own chords
+    double reach = 0;
+    for (int k = 0; k < sides; ++k)
+        reach = std::max(reach, std::cos(radians(360.0 * (k + 0.5) / sides - a)));
+    return kR * (reach / std::cos(radians(180.0 / sides)) - std::cos(radians(a)));
+}
+
 }  // namespace
+
+std::string_view halvesLayoutName(HalvesLayout layout) {
+    return layout == HalvesLayout::Trade ? "trade" : "faceter";
+}
 
 int girdleSideCount(const RoundBrilliantParams& p) {
     if (p.girdlePct == 0) return 0;
     return p.girdleFacets == 0 ? 64 : p.girdleFacets;
 }
 
-std::vector<NamedPlane> roundBrilliantPlanes(const RoundBrilliantParams& p) {
-    validate(p);
-    const double T = p.tablePct / 100, h = p.girdlePct / 200, c = p.culetPct / 100;
-    const double C = radians(p.crownAngleDeg), P = radians(p.pavilionAngleDeg);
-    const int sides = girdleSideCount(p);
-    const double a = halfAzimuthDeg(p, sides);
-    const double cos225 = std::cos(radians(22.5));
+namespace {
 
-    const double tableZ = h + (kR - T / 2) * std::tan(C);
-    // Star tip: on the ridge between two bezels, star % of the way from the table edge to the girdle.
-    const double tableEdge = T / 2 * cos225;
-    const double starR = tableEdge + p.starPct / 100 * (kR - tableEdge);
-    const double starZ = h + std::tan(C) * (kR - starR * cos225);
-    const double starSlope = degrees(std::atan((tableZ - starZ) / (starR - tableEdge)));
-    const double upperSlope =
-        degrees(std::atan((starZ - h) / (kR * std::cos(radians(a)) - starR * std::cos(radians(22.5 - a)))));
-    // Lower-half point: on the ridge between two mains, lower-half % of the way from the girdle to the
-    // centre.
+// The slopes of the halves and the heights of the girdle's rims where the mains meet it.
+struct Tiers {
+    double halfAzimuthDeg, tableEdge, starR, starDrop, tanUpper, tanLower;
+    GirdleRims rims;
+};
+
+Tiers tiersOf(const RoundBrilliantParams& p) {
+    validate(p);
+    Tiers t;
+    const double T = p.tablePct / 100;
+    const double tanC = std::tan(radians(p.crownAngleDeg)), tanP = std::tan(radians(p.pavilionAngleDeg));
+    const int sides = girdleSideCount(p);
+    const double a = t.halfAzimuthDeg = halfAzimuthDeg(p, sides);
+    const double cos225 = std::cos(radians(22.5)), cosA = std::cos(radians(a));
+    const double cosRest = std::cos(radians(22.5 - a));
+    // Star tip: on the ridge between two bezels, star % of the way from the table edge to the girdle; it lies
+    // tanC (kR - starR cos 22.5) above the bezels' girdle points. The lower-half point: on the ridge between
+    // two mains, lower-half % of the way from the girdle to the centre, as far below the mains' girdle points.
+    t.tableEdge = T / 2 * cos225;
+    t.starR = t.tableEdge + p.starPct / 100 * (kR - t.tableEdge);
+    t.starDrop = tanC * (kR - t.starR * cos225);
     const double lowerR = kR * (1 - p.lowerHalfPct / 100);
-    const double lowerZ = -h - std::tan(P) * (kR - lowerR * cos225);
-    const double lowerSlope = degrees(
-        std::atan((-h - lowerZ) / (kR * std::cos(radians(a)) - lowerR * std::cos(radians(22.5 - a)))));
+    const double lowerRise = tanP * (kR - lowerR * cos225);
+    // Each half runs through its main's girdle point and the star tip (lower-half point).
+    t.tanUpper = t.starDrop / (kR * cosA - t.starR * cosRest);
+    t.tanLower = lowerRise / (kR * cosA - lowerR * cosRest);
+    // The rims sit so that the girdle is girdle % thick where the halves bring them closest together.
+    const double bulge = girdleBulge(sides, a);
+    t.rims = {p.girdlePct / 200 + t.tanUpper * bulge, -(p.girdlePct / 200 + t.tanLower * bulge)};
+    return t;
+}
+
+}  // namespace
+
+GirdleRims girdleRims(const RoundBrilliantParams& params) { return tiersOf(params).rims; }
+
+std::vector<NamedPlane> roundBrilliantPlanes(const RoundBrilliantParams& p) {
+    const Tiers t = tiersOf(p);
+    const double T = p.tablePct / 100, c = p.culetPct / 100;
+    const double tanC = std::tan(radians(p.crownAngleDeg)), tanP = std::tan(radians(p.pavilionAngleDeg));
+    const int sides = girdleSideCount(p);
+    const double a = t.halfAzimuthDeg, tanUpper = t.tanUpper, tanLower = t.tanLower;
+    const double upperRim = t.rims.upper, lowerRim = t.rims.lower;
+    const double tableEdge = t.tableEdge, starR = t.starR;
+
+    const double tableZ = upperRim + (kR - T / 2) * tanC;
+    const double starZ = upperRim + t.starDrop;
+    const double starSlope = degrees(std::atan((tableZ - starZ) / (starR - tableEdge)));
 
     std::vector<NamedPlane> planes;
     planes.push_back({{{0, 0, 1}, tableZ}, "table"});
@@ -93,28 +138,24 @@ std::vector<NamedPlane> roundBrilliantPlanes(const RoundBrilliantParams& p) {
     }
     for (int k = 0; k < 8; ++k)
         planes.push_back(facetPlane("bezel_" + std::to_string(k + 1), 45 * k, p.crownAngleDeg, true,
-                                    polar(kR, 45 * k, h)));
-    for (int k = 0; k < 16; ++k) {
-        const int main =
-            (k + 1) / 2 % 8;  // upper_half_1 is at +a from bezel_1, upper_half_2 at -a from bezel_2
-        const double az = 45 * main + (k % 2 == 0 ? a : -a);
-        planes.push_back(
-            facetPlane("upper_half_" + std::to_string(k + 1), az, upperSlope, true, polar(kR, 45 * main, h)));
-    }
+                                    polar(kR, 45 * k, upperRim)));
+    // upper_half_1 is at +a from bezel_1, upper_half_2 at -a from bezel_2, and so on; the lower halves alike.
+    auto halfAzimuth = [a](int k) { return 45 * ((k + 1) / 2 % 8) + (k % 2 == 0 ? a : -a); };
+    auto mainOf = [](int k) { return 45.0 * ((k + 1) / 2 % 8); };
+    for (int k = 0; k < 16; ++k)
+        planes.push_back(facetPlane("upper_half_" + std::to_string(k + 1), halfAzimuth(k),
+                                    degrees(std::atan(tanUpper)), true, polar(kR, mainOf(k), upperRim)));
     for (int k = 0; k < sides; ++k) {
         const double az = radians(360.0 * k / sides);
         planes.push_back({{{std::cos(az), std::sin(az), 0}, kR}, "girdle_" + std::to_string(k + 1)});
     }
     for (int k = 0; k < 8; ++k)
         planes.push_back(facetPlane("pavilion_main_" + std::to_string(k + 1), 45 * k, p.pavilionAngleDeg,
-                                    false, polar(kR, 45 * k, -h)));
-    for (int k = 0; k < 16; ++k) {
-        const int main = (k + 1) / 2 % 8;
-        const double az = 45 * main + (k % 2 == 0 ? a : -a);
-        planes.push_back(facetPlane("lower_half_" + std::to_string(k + 1), az, lowerSlope, false,
-                                    polar(kR, 45 * main, -h)));
-    }
-    if (c > 0) planes.push_back({{{0, 0, -1}, h + (kR - c / 2) * std::tan(P)}, "culet"});
+                                    false, polar(kR, 45 * k, lowerRim)));
+    for (int k = 0; k < 16; ++k)
+        planes.push_back(facetPlane("lower_half_" + std::to_string(k + 1), halfAzimuth(k),
+                                    degrees(std::atan(tanLower)), false, polar(kR, mainOf(k), lowerRim)));
+    if (c > 0) planes.push_back({{{0, 0, -1}, -lowerRim + (kR - c / 2) * tanP}, "culet"});
     return planes;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The round brilliant built from the proportions the trade grades: every facet a plane (azimuth, slope,
 // offset), the stone their intersection. Conventions in docs/optics.md, "Round brilliant".
+#include <string_view>
 #include <vector>
 
 #include "geometry/halfspace.h"
@@ -8,20 +9,36 @@
 
 namespace facetlight {
 
+// Where the upper and lower girdle halves lie. Trade: the stone DiamCalc, GIA reports and HCA-style tools
+// assume, each half through its main's (bezel's) girdle point, the 22.5-deg girdle point where it meets its
+// neighbour, and the mains' (bezels') meeting point at the lower-half (star) length. Faceter: a GemCad-style
+// diagram, each half one index of a 96 gear (3.75 deg) off its main: a different stone.
+enum class HalvesLayout { Trade, Faceter };
+
 struct RoundBrilliantParams {
     double tablePct = 57;            // corner to corner, % of the girdle diameter
     double crownAngleDeg = 34;       // bezel slope
     double pavilionAngleDeg = 40.7;  // pavilion main slope
-    double girdlePct = 2.5;          // at the thin points (bezel and main azimuths); 0 = knife edge
+    double girdlePct = 2.5;          // where the girdle is thinnest (the middle of each half); 0 = knife edge
     double starPct = 50;             // horizontal, from the table edge toward the girdle
     double lowerHalfPct = 80;        // horizontal, from the girdle toward the centre
     double culetPct = 0;             // flat to flat, % of the diameter; 0 = pointed
     int girdleFacets = 0;            // 0 = smooth girdle (64 flat sides); else a multiple of 16
+    HalvesLayout halves = HalvesLayout::Trade;
 };
+
+std::string_view halvesLayoutName(HalvesLayout layout);  // "trade", "faceter"
 
 // The facet planes of the stone with girdle diameter 1, girdle centred on z = 0. Throws Error naming the
 // input when the proportions cannot make this stone.
 std::vector<NamedPlane> roundBrilliantPlanes(const RoundBrilliantParams& params);
+
+// The heights of the girdle's top and bottom rims at the bezels' and mains' girdle points: where the girdle is
+// thickest with the trade's halves, which take it down to girdle % midway between those points.
+struct GirdleRims {
+    double upper, lower;  // z; lower is negative
+};
+GirdleRims girdleRims(const RoundBrilliantParams& params);
 
 // The intersection of those planes; also checks that every designed facet survived it.
 PolygonMesh makeRoundBrilliant(const RoundBrilliantParams& params);

@@ -76,6 +76,8 @@ LightModel::LightModel(const LightSettings& s, const Stone& stone) : kind_(s.mod
         case LightModelKind::Hemisphere: {
             const double sinShadow = std::sin(radians(s.headShadowDeg));
             sin2Shadow_ = sinShadow * sinShadow;
+            cosShadow_ = std::cos(radians(s.headShadowDeg));
+            cosineSky_ = s.sky == SkyKind::Cosine;
             break;
         }
         case LightModelKind::Point: {
@@ -100,10 +102,21 @@ LightRay LightModel::sample(Rng& rng) const {
             return {discCenter_ + u_ * (discRadius_ * q.x) + v_ * (discRadius_ * q.y), dir_};
         }
         case LightModelKind::Hemisphere: {
-            // Cosine-weighted over the upper hemisphere less the head cone: sin^2(theta) is uniform.
+            // The disc below fires each direction through the stone's projected area, which weights it by
+            // cos(theta) by itself. A uniform dome therefore draws directions uniform in solid angle over the
+            // upper hemisphere less the head cone (cos(theta) uniform); the cosine sky draws them
+            // cosine-weighted as well (sin^2(theta) uniform). The azimuth is that of the disc point a.
             const DiscPoint a = unitDisc(rng);
-            const double sin2 = sin2Shadow_ + (1 - sin2Shadow_) * a.r2, s = std::sqrt(sin2 / a.r2);
-            const Vec3 dir = -untilt({a.x * s, a.y * s, std::sqrt(1 - sin2)}, cosTilt_, sinTilt_);
+            double cosTheta, sinTheta;
+            if (cosineSky_) {
+                const double sin2 = sin2Shadow_ + (1 - sin2Shadow_) * a.r2;
+                cosTheta = std::sqrt(1 - sin2), sinTheta = std::sqrt(sin2);
+            } else {
+                cosTheta = cosShadow_ * (1 - a.r2);
+                sinTheta = std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta));
+            }
+            const double s = sinTheta / std::sqrt(a.r2);
+            const Vec3 dir = -untilt({a.x * s, a.y * s, cosTheta}, cosTilt_, sinTilt_);
             Vec3 u, v;
             basis(dir, u, v);
             const DiscPoint b = unitDisc(rng);

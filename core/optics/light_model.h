@@ -42,7 +42,9 @@ class LightModel {
     Vec3 dir_, u_, v_;       // collimated: direction and the disc's axes; point: the cone's axis
     Vec3 discCenter_;        // collimated: centre of the silhouette disc, in front of the stone
     double discRadius_ = 0;  // collimated
-    double sin2Shadow_ = 0;  // hemisphere: sin^2 of the head-shadow half-angle
+    double sin2Shadow_ = 0;  // hemisphere: sin^2 and cos of the head-shadow half-angle
+    double cosShadow_ = 1;
+    bool cosineSky_ = false;  // hemisphere: the cos(theta) sky instead of the uniform dome
     double cosTilt_ = 1, sinTilt_ = 0;
     Vec3 position_;       // point, tilted into the stone's frame
     double cosCone_ = 1;  // point: cone of directions toward the bounding sphere

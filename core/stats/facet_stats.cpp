@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "stone/stone_json.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -19,27 +20,12 @@ double stderrOf(double p, uint64_t n) {
     return n ? std::sqrt(std::max(0.0, p * (1 - p)) / double(n)) : 0.0;
 }
 
-json optionalJson(const std::optional<double>& v) {
-    return v ? json(*v) : json(nullptr);
-}
-
 json meshJson(const Stone& stone) {
-    const Proportions& p = stone.proportions;
     return {{"name", stone.name},
             {"facets", stone.facets.size()},
             {"triangles", stone.triangles.size()},
             {"convex", stone.convex},
-            {"proportions",
-             {{"length", p.length},
-              {"width", p.width},
-              {"diameter", p.diameter},
-              {"table_pct", optionalJson(p.tablePct)},
-              {"crown_height_pct", optionalJson(p.crownHeightPct)},
-              {"pavilion_depth_pct", optionalJson(p.pavilionDepthPct)},
-              {"girdle_pct", optionalJson(p.girdlePct)},
-              {"total_depth_pct", optionalJson(p.totalDepthPct)},
-              {"crown_angle_deg", optionalJson(p.crownAngleDeg)},
-              {"pavilion_angle_deg", optionalJson(p.pavilionAngleDeg)}}}};
+            {"proportions", proportionsJson(stone.proportions)}};
 }
 
 json histogramJson(const std::array<uint64_t, kHistogramBins>& h) {
@@ -132,6 +118,7 @@ json statsToJson(const FacetStats& s, const Stone& stone, const TraceSettings& s
         totals[name] = p;
         totals[name + "_stderr"] = stderrOf(p, n);
     };
+    figure("trapped_share", share(s.trapped, n));
     figure("crown_return", share(s.crownReturn, n));
     figure("crown_return_with_reflection", share(s.crownReturn + s.crownReflection, n));
     const double w = n ? double(s.weightSum) / kWeightScale / double(n) : 0.0;

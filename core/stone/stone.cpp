@@ -410,21 +410,44 @@ private:
 
     static bool isGirdleNormal(const Vec3& n) { return std::fabs(n.z) < 0.02; }  // within ~1.1 deg of vertical
 
-    // The girdle's top and bottom at its thinnest point; for a knife-edge girdle, the height of the widest
-    // horizontal section.
-    GirdleBand girdleBand() const {
-        double minTop = INFINITY, maxBottom = -INFINITY;
-        bool any = false;
+    // The girdle's vertical sections: above or below each corner of each girdle facet, that facet's bottom and
+    // top. Each facet is a convex polygon in a vertical plane, so its height is piecewise linear along it and
+    // the girdle is thinnest and thickest at such corners.
+    template <class F>
+    void forEachGirdleSection(F&& section) const {
         for (const auto& f : stone_.facets) {
             const Vec3 n = normalize(newellNormal(stone_.vertices, f.outline));
             if (!isGirdleNormal(n)) continue;
-            any = true;
-            double lo = INFINITY, hi = -INFINITY;
-            for (uint32_t v : f.outline) lo = std::min(lo, stone_.vertices[v].z), hi = std::max(hi, stone_.vertices[v].z);
-            minTop = std::min(minTop, hi);
-            maxBottom = std::max(maxBottom, lo);
+            const Vec3 along = normalize(cross(n, Vec3{0, 0, 1}));
+            const double flat = 1e-9 * scale_;
+            for (uint32_t at : f.outline) {
+                const double u = dot(stone_.vertices[at], along);
+                double lo = INFINITY, hi = -INFINITY;
+                for (size_t i = 0; i < f.outline.size(); ++i) {
+                    const Vec3& a = stone_.vertices[f.outline[i]];
+                    const Vec3& b = stone_.vertices[f.outline[(i + 1) % f.outline.size()]];
+                    const double ua = dot(a, along), ub = dot(b, along);
+                    if (std::fabs(ub - ua) <= flat) {  // an upright edge: both its ends, if it stands here
+                        if (std::fabs(u - ua) <= flat) lo = std::min({lo, a.z, b.z}), hi = std::max({hi, a.z, b.z});
+                    } else if ((u - ua) * (u - ub) <= 0) {
+                        const double z = a.z + (b.z - a.z) * (u - ua) / (ub - ua);
+                        lo = std::min(lo, z), hi = std::max(hi, z);
+                    }
+                }
+                if (lo <= hi) section(lo, hi);
+            }
         }
-        if (any && minTop >= maxBottom) return {minTop, maxBottom};
+    }
+
+    // The girdle's top and bottom at its thinnest point; for a knife-edge girdle, the height of the widest
+    // horizontal section.
+    GirdleBand girdleBand() const {
+        GirdleBand thinnest;
+        double least = INFINITY;
+        forEachGirdleSection([&](double lo, double hi) {
+            if (hi - lo < least) least = hi - lo, thinnest = {hi, lo};
+        });
+        if (least < INFINITY) return thinnest;
         double bestR = -1, z = 0;
         Bounds3 b;
         for (const auto& v : stone_.vertices) b.extend(v);
@@ -434,6 +457,12 @@ private:
             if (r > bestR + 1e-9 * scale_) bestR = r, z = v.z;
         }
         return {z, z};
+    }
+
+    double girdleThickest() const {
+        double most = 0;
+        forEachGirdleSection([&](double lo, double hi) { most = std::max(most, hi - lo); });
+        return most;
     }
 
     void classifyRegions() {
@@ -451,21 +480,30 @@ private:
         }
     }
 
-    // The slope of the main facets: those that run from the table (or culet) down to the girdle; failing
-    // that, the largest facet at the girdle. A facet reaches the girdle where it shares a vertex with a
-    // girdle facet (or, on a knife edge, with the other side) or comes down to the girdle's thinnest
-    // point: on a fancy outline the girdle's height varies, so no one height tells. Of those at the table,
-    // the largest of those that come closest to the girdle (within a tenth of the crown's height: a pear's
-    // stars touch the girdle at its point, but its bezels come much lower).
-    std::optional<double> mainAngle(Region region, double girdleZ, double apexZ) const {
-        const double eps = 1e-6 * scale_, side = region == Region::Crown ? 1 : -1;
-        const double closeEnough = 0.1 * std::fabs(apexZ - girdleZ);
+    // The vertices a facet of `region` shares with the girdle: those of the girdle facets or, on a knife edge,
+    // of the other side.
+    std::vector<bool> girdleVertices(Region region) const {
         std::vector<bool> atGirdle(stone_.vertices.size(), false);
         const Region otherSide = region == Region::Crown ? Region::Pavilion : Region::Crown;
         for (const auto& f : stone_.facets) {
             if (f.region != Region::Girdle && f.region != otherSide) continue;
             for (uint32_t v : f.outline) atGirdle[v] = true;
         }
+        return atGirdle;
+    }
+
+    static double slopeDeg(const Facet& f) { return degrees(std::acos(std::clamp(std::fabs(f.normal.z), 0.0, 1.0))); }
+
+    // The main facets: those that run from the table (or culet) down to the girdle; failing that, the largest
+    // facet at the girdle. A facet reaches the girdle where it shares a vertex with a girdle facet (or, on a
+    // knife edge, with the other side) or comes down to the girdle's thinnest point: on a fancy outline the
+    // girdle's height varies, so no one height tells. Of those at the table, the largest of those that come
+    // closest to the girdle (within a tenth of the crown's height: a pear's stars touch the girdle at its
+    // point, but its bezels come much lower).
+    const Facet* mainFacet(Region region, double girdleZ, double apexZ) const {
+        const double eps = 1e-6 * scale_, side = region == Region::Crown ? 1 : -1;
+        const double closeEnough = 0.1 * std::fabs(apexZ - girdleZ);
+        const std::vector<bool> atGirdle = girdleVertices(region);
         const Facet* best = nullptr;
         bool bestAtApex = false;
         double bestHeight = 0;  // of the facet's lowest point above the girdle (crown; below it, pavilion)
@@ -489,8 +527,61 @@ private:
             if (!outranksBest(f, touchesApex, height)) continue;
             best = &f, bestAtApex = touchesApex, bestHeight = height;
         }
-        if (!best) return std::nullopt;
-        return degrees(std::acos(std::clamp(std::fabs(best->normal.z), 0.0, 1.0)));
+        return best;
+    }
+
+    // A round brilliant's stars, upper halves and lower halves, told apart by what they touch (see
+    // Proportions); nothing when the stone has no such tier.
+    void measureMinorTiers(const Facet& table, double radius, double bottom) {
+        Proportions& p = stone_.proportions;
+        const double eps = 1e-6 * scale_;
+        std::vector<bool> atTable(stone_.vertices.size(), false);
+        for (uint32_t v : table.outline) atTable[v] = true;
+        const std::vector<bool> crownGirdle = girdleVertices(Region::Crown);
+        const std::vector<bool> pavilionGirdle = girdleVertices(Region::Pavilion);
+        auto touches = [&](const Facet& f, const std::vector<bool>& set) {
+            return std::any_of(f.outline.begin(), f.outline.end(), [&](uint32_t v) { return bool(set[v]); });
+        };
+        auto radiusOf = [&](uint32_t v) { return std::hypot(stone_.vertices[v].x, stone_.vertices[v].y); };
+        struct Mean {
+            double sum = 0;
+            int count = 0;
+            void add(double v) { sum += v, ++count; }
+            std::optional<double> value() const { return count ? std::optional<double>(sum / count) : std::nullopt; }
+        };
+        Mean star, upper, lower, starLength, lowerLength;
+        for (const auto& f : stone_.facets) {
+            if (f.region == Region::Crown) {
+                const bool atT = touches(f, atTable), atG = touches(f, crownGirdle);
+                if (atT && !atG) {
+                    star.add(slopeDeg(f));
+                    // From the star's base on the table edge (its point nearest the axis) to its tip.
+                    double tip = 0, base = INFINITY;
+                    for (size_t i = 0; i < f.outline.size(); ++i) {
+                        const Vec3& a = stone_.vertices[f.outline[i]];
+                        const Vec3& b = stone_.vertices[f.outline[(i + 1) % f.outline.size()]];
+                        tip = std::max(tip, std::hypot(a.x, a.y));
+                        const Vec3 d{b.x - a.x, b.y - a.y, 0};
+                        const double t = std::clamp(-(a.x * d.x + a.y * d.y) / std::max(dot(d, d), 1e-300), 0.0, 1.0);
+                        base = std::min(base, std::hypot(a.x + t * d.x, a.y + t * d.y));
+                    }
+                    starLength.add(100 * (tip - base) / (radius - base));
+                } else if (atG && !atT) {
+                    upper.add(slopeDeg(f));
+                }
+            } else if (f.region == Region::Pavilion && touches(f, pavilionGirdle)) {
+                const bool atApex = std::any_of(f.outline.begin(), f.outline.end(),
+                                                [&](uint32_t v) { return stone_.vertices[v].z <= bottom + eps; });
+                if (atApex) continue;
+                lower.add(slopeDeg(f));
+                double inner = INFINITY;
+                for (uint32_t v : f.outline) inner = std::min(inner, radiusOf(v));
+                lowerLength.add(100 * (radius - inner) / radius);
+            }
+        }
+        if (!star.count || !upper.count || !lower.count) return;
+        p.starAngleDeg = star.value(), p.upperHalfAngleDeg = upper.value(), p.lowerHalfAngleDeg = lower.value();
+        p.starPct = starLength.value(), p.lowerHalfPct = lowerLength.value();
     }
 
     void measureProportions() {
@@ -498,18 +589,34 @@ private:
         const Bounds3& b = stone_.bounds;
         p.length = b.extent().x;
         p.width = b.extent().y;
-        // Round: no vertex reaches beyond the circle inscribed in the extents (a square's corners do).
+        // Round: no vertex reaches much beyond the circle inscribed in the extents (a square's corners do; a
+        // 16-sided girdle's reach 1 / cos 11.25 = 1.0196 times as far).
         double maxRadius = 0;
         for (const auto& v : stone_.vertices) maxRadius = std::max(maxRadius, std::hypot(v.x, v.y));
-        const bool round = p.length <= p.width * 1.01 && maxRadius <= 0.25 * (p.length + p.width) * 1.005;
+        const bool round = p.length <= p.width * 1.01 && maxRadius <= 0.25 * (p.length + p.width) * 1.025;
         p.diameter = round ? 0.5 * (p.length + p.width) : p.width;
         const double d = p.diameter;
         const GirdleBand band = girdleBand();
         const double top = b.hi.z, bottom = b.lo.z;
         p.totalDepthPct = 100 * (top - bottom) / d;
         p.girdlePct = 100 * (band.top - band.bottom) / d;
-        p.crownHeightPct = 100 * (top - band.top) / d;
-        p.pavilionDepthPct = 100 * (band.bottom - bottom) / d;
+        p.girdleThickestPct = std::max(*p.girdlePct, 100 * girdleThickest() / d);
+        const Facet* crownMain = stone_.facetCount(Region::Crown) > 0 ? mainFacet(Region::Crown, band.top, top) : nullptr;
+        const Facet* pavilionMain =
+            stone_.facetCount(Region::Pavilion) > 0 ? mainFacet(Region::Pavilion, band.bottom, bottom) : nullptr;
+        double crownRim = band.top, pavilionRim = band.bottom;
+        if (crownMain) {
+            p.crownAngleDeg = slopeDeg(*crownMain);
+            crownRim = INFINITY;
+            for (uint32_t v : crownMain->outline) crownRim = std::min(crownRim, stone_.vertices[v].z);
+        }
+        if (pavilionMain) {
+            p.pavilionAngleDeg = slopeDeg(*pavilionMain);
+            pavilionRim = -INFINITY;
+            for (uint32_t v : pavilionMain->outline) pavilionRim = std::max(pavilionRim, stone_.vertices[v].z);
+        }
+        p.crownHeightPct = 100 * (top - crownRim) / d;
+        p.pavilionDepthPct = 100 * (pavilionRim - bottom) / d;
         const Facet* table = nullptr;
         for (const auto& f : stone_.facets)
             if (f.region == Region::Table) table = &f;
@@ -521,9 +628,8 @@ private:
                 lo = std::min(lo, q.y), hi = std::max(hi, q.y);
             }
             p.tablePct = 100 * (round ? 2 * maxR : hi - lo) / d;
+            if (round) measureMinorTiers(*table, d / 2, bottom);
         }
-        if (stone_.facetCount(Region::Crown) > 0) p.crownAngleDeg = mainAngle(Region::Crown, band.top, top);
-        if (stone_.facetCount(Region::Pavilion) > 0) p.pavilionAngleDeg = mainAngle(Region::Pavilion, band.bottom, bottom);
         if (p.crownHeightPct && *p.crownHeightPct <= 1e-9) p.crownHeightPct.reset(), p.crownAngleDeg.reset();
     }
 

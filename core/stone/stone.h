@@ -41,8 +41,15 @@ struct Proportions {
     double length = 0;  // girdle outline extent along x
     double width = 0;   // girdle outline extent along y
     double diameter = 0;  // reference size for the percentages: the width (the diameter for a round)
-    std::optional<double> tablePct, crownHeightPct, pavilionDepthPct, girdlePct, totalDepthPct;
+    // Crown height and pavilion depth run from the table and the culet to the girdle's rims where the mains
+    // meet it; girdlePct is the girdle where thinnest, girdleThickestPct where thickest.
+    std::optional<double> tablePct, crownHeightPct, pavilionDepthPct, girdlePct, girdleThickestPct, totalDepthPct;
     std::optional<double> crownAngleDeg, pavilionAngleDeg;
+    // A round brilliant's minor tiers, as a GIA report lists them: the mean slopes of the stars (crown facets
+    // at the table that miss the girdle), upper halves (at the girdle, not the table) and lower halves (at
+    // the girdle, not the culet); star % from the table edge to the girdle and lower-half % from the girdle
+    // to the centre, both horizontal, at the stars' tips and the lower halves' innermost points.
+    std::optional<double> starAngleDeg, upperHalfAngleDeg, lowerHalfAngleDeg, starPct, lowerHalfPct;
 };
 
 struct StoneOptions {

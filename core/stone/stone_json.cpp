@@ -10,10 +10,29 @@ nlohmann::json vec3Json(const Vec3& v) { return nlohmann::json::array({v.x, v.y,
 
 }  // namespace
 
+nlohmann::json proportionsJson(const Proportions& p) {
+    return {{"length", p.length},
+            {"width", p.width},
+            {"diameter", p.diameter},
+            {"length_to_width", p.width > 0 ? p.length / p.width : 0.0},
+            {"table_pct", optionalNumber(p.tablePct)},
+            {"crown_height_pct", optionalNumber(p.crownHeightPct)},
+            {"pavilion_depth_pct", optionalNumber(p.pavilionDepthPct)},
+            {"girdle_pct", optionalNumber(p.girdlePct)},
+            {"girdle_thickest_pct", optionalNumber(p.girdleThickestPct)},
+            {"total_depth_pct", optionalNumber(p.totalDepthPct)},
+            {"crown_angle_deg", optionalNumber(p.crownAngleDeg)},
+            {"pavilion_angle_deg", optionalNumber(p.pavilionAngleDeg)},
+            {"star_angle_deg", optionalNumber(p.starAngleDeg)},
+            {"upper_half_angle_deg", optionalNumber(p.upperHalfAngleDeg)},
+            {"lower_half_angle_deg", optionalNumber(p.lowerHalfAngleDeg)},
+            {"star_pct", optionalNumber(p.starPct)},
+            {"lower_half_pct", optionalNumber(p.lowerHalfPct)}};
+}
+
 nlohmann::json stoneSummaryJson(const Stone& stone) {
     nlohmann::json regions = nlohmann::json::object();
     for (int r = 0; r < kRegionCount; ++r) regions[std::string(regionName(Region(r)))] = stone.facetCount(Region(r));
-    const Proportions& p = stone.proportions;
     return {
         {"name", stone.name},
         {"facet_count", stone.facets.size()},
@@ -21,17 +40,7 @@ nlohmann::json stoneSummaryJson(const Stone& stone) {
         {"vertices", stone.vertices.size()},
         {"convex", stone.convex},
         {"regions", regions},
-        {"proportions",
-         {{"length", p.length},
-          {"width", p.width},
-          {"length_to_width", p.width > 0 ? p.length / p.width : 0.0},
-          {"table_pct", optionalNumber(p.tablePct)},
-          {"crown_height_pct", optionalNumber(p.crownHeightPct)},
-          {"pavilion_depth_pct", optionalNumber(p.pavilionDepthPct)},
-          {"girdle_pct", optionalNumber(p.girdlePct)},
-          {"total_depth_pct", optionalNumber(p.totalDepthPct)},
-          {"crown_angle_deg", optionalNumber(p.crownAngleDeg)},
-          {"pavilion_angle_deg", optionalNumber(p.pavilionAngleDeg)}}},
+        {"proportions", proportionsJson(stone.proportions)},
         {"warnings", stone.warnings},
     };
 }

@@ -6,6 +6,8 @@
 
 namespace facetlight {
 
+// length, width, diameter, length_to_width and the trade proportions (null where one does not apply).
+nlohmann::json proportionsJson(const Proportions& p);
 // name, facet and triangle counts, convex, regions (facet count per region), proportions, warnings.
 nlohmann::json stoneSummaryJson(const Stone& stone);
 // The summary plus `facets`: id, name, region, area, normal, centroid.

@@ -16,6 +16,9 @@ const Schema<LightSettings>& lightSchema() {
                {"--tilt", "Tilt of the stone about the x axis", "degrees"}),
         number("head_shadow_deg", &LightSettings::headShadowDeg, {.lo = 0, .hi = 90, .openHi = true},
                {"--head-shadow", "Hemisphere: half-angle of the viewer's cone removed", "degrees"}),
+        choice("sky", &LightSettings::sky, kSkyNames,
+               {"--sky", "Hemisphere: uniform (a diffuse dome, the same radiance everywhere) or cosine "
+                         "(radiance falling as cos(theta) from the zenith)"}),
         vec3("position", &LightSettings::position, false,
              {"--light-position", "Point: the source position (x y z), outside the stone"}),
     });

@@ -14,6 +14,9 @@
 namespace facetlight {
 
 enum class LightModelKind { Collimated, Hemisphere, Point };
+// The hemisphere's sky: uniform radiance (a diffuse dome, directions uniform in solid angle), or radiance
+// falling as cos(theta) from the zenith (directions cosine-weighted: darker toward the horizon).
+enum class SkyKind { Uniform, Cosine };
 enum class IntersectorKind { Auto, Convex, Embree };
 
 inline constexpr NameTable<LightModelKind, 3> kLightModelNames{{{{LightModelKind::Collimated, "collimated"},
@@ -22,12 +25,14 @@ inline constexpr NameTable<LightModelKind, 3> kLightModelNames{{{{LightModelKind
 inline constexpr NameTable<IntersectorKind, 3> kIntersectorNames{{{{IntersectorKind::Auto, "auto"},
                                                                    {IntersectorKind::Convex, "convex"},
                                                                    {IntersectorKind::Embree, "embree"}}}};
+inline constexpr NameTable<SkyKind, 2> kSkyNames{{{{SkyKind::Uniform, "uniform"}, {SkyKind::Cosine, "cosine"}}}};
 
 struct LightSettings {
     LightModelKind model = LightModelKind::Collimated;
     Vec3 direction{0, 0, -1};  // collimated: direction of travel of the light (default straight down)
     double tiltDeg = 0;        // the stone tilted about the x axis by this angle (light rotated by -tilt)
     double headShadowDeg = 0;  // hemisphere: half-angle of the observer's cone removed around the vertical
+    SkyKind sky = SkyKind::Uniform;  // hemisphere
     Vec3 position{0, 0, 10};   // point: the source position, outside the stone's bounding sphere
 };
 
@@ -38,7 +43,7 @@ struct TraceSettings {
     std::string material = "diamond";
     std::optional<double> n;  // overrides the material with a constant index
     bool dispersion = true;   // each photon a wavelength in 380-780 nm; false: 589.3 nm
-    int maxBounces = 64;      // internal reflections after which a photon counts as trapped
+    int maxBounces = 512;     // internal reflections after which a photon counts as trapped (docs/optics.md)
     IntersectorKind intersector = IntersectorKind::Auto;
     LightSettings light;
 

@@ -56,6 +56,25 @@ std::string errorOf(F&& f) {
     return "(no error)";
 }
 
+
+// The trade's halves, computed independently of the generator: each half holds the horizontal chord from its
+// main's girdle point to the 22.5-deg girdle point (so it faces 11.25 deg off the main) and the mains' meeting
+// point on the 22.5-deg ridge, `lengthPct` of the way from the girdle (lower halves: toward the centre; upper
+// halves: the star tip, from the table edge outward).
+double tradeLowerHalfDeg(double pavilionDeg, double lowerHalfPct) {
+    const double r = 0.5 * (1 - lowerHalfPct / 100);
+    return degrees(std::atan(std::tan(radians(pavilionDeg)) * (0.5 - r * std::cos(radians(22.5))) /
+                             ((0.5 - r) * std::cos(radians(11.25)))));
+}
+double tradeUpperHalfDeg(double tablePct, double crownDeg, double starPct) {
+    const double edge = tablePct / 200 * std::cos(radians(22.5)), tip = edge + starPct / 100 * (0.5 - edge);
+    return degrees(std::atan(std::tan(radians(crownDeg)) * (0.5 - tip * std::cos(radians(22.5))) /
+                             ((0.5 - tip) * std::cos(radians(11.25)))));
+}
+
+double slopeOf(const Facet& f) { return degrees(std::acos(std::fabs(f.normal.z))); }
+double azimuthOf(const Facet& f) { return degrees(std::atan2(f.normal.y, f.normal.x)); }
+
 }  // namespace
 
 TEST(RoundBrilliant, GiaReferenceMatchesPublishedFigures) {
@@ -64,12 +83,19 @@ TEST(RoundBrilliant, GiaReferenceMatchesPublishedFigures) {
     EXPECT_NEAR(*p.tablePct, 57, 0.05);
     EXPECT_NEAR(*p.crownAngleDeg, 34.0, 0.01);
     EXPECT_NEAR(*p.pavilionAngleDeg, 40.7, 0.01);
-    EXPECT_NEAR(*p.girdlePct, 2.5, 0.05);
+    EXPECT_NEAR(*p.girdlePct, 2.5, 0.01);  // where thinnest
     EXPECT_NEAR(*p.crownHeightPct, 14.5, 0.05);
     EXPECT_NEAR(*p.pavilionDepthPct, 43.0, 0.05);
-    EXPECT_NEAR(*p.totalDepthPct, 60.0, 0.05);
+    // The halves take the girdle down by tan(half) (1 - cos 11.25) / 2 each side between the mains' points.
+    const double dip = 50 * (1 - std::cos(radians(11.25)));
+    const double thickest = 2.5 + dip * (std::tan(radians(tradeUpperHalfDeg(57, 34, 50))) +
+                                         std::tan(radians(tradeLowerHalfDeg(40.7, 80))));
+    EXPECT_NEAR(*p.girdleThickestPct, thickest, 0.01);
+    EXPECT_NEAR(*p.totalDepthPct, *p.crownHeightPct + thickest + *p.pavilionDepthPct, 0.01);
     EXPECT_NEAR(measuredStarPct(s, 57), 50, 0.05);
     EXPECT_NEAR(measuredLowerHalfPct(s), 80, 0.05);
+    EXPECT_NEAR(*p.starPct, 50, 0.05);
+    EXPECT_NEAR(*p.lowerHalfPct, 80, 0.05);
     EXPECT_TRUE(s.convex);
     EXPECT_EQ(s.facetCount(Region::Table), 1);
     EXPECT_EQ(s.facetCount(Region::Crown), 32);
@@ -78,6 +104,57 @@ TEST(RoundBrilliant, GiaReferenceMatchesPublishedFigures) {
     for (const char* name :
          {"table", "star_8", "bezel_1", "upper_half_16", "girdle_64", "pavilion_main_8", "lower_half_16"})
         EXPECT_NO_THROW(facetNamed(s, name)) << name;
+}
+
+// DiamCalc gives 42.24 deg for these proportions (PriceScope cut study; shared optics reference); read off the
+// built mesh, every lower half must agree. The faceters' layout (3.75 deg off the mains) gave 41.39.
+TEST(RoundBrilliant, TradeHalvesMeasuredBackFromTheMesh) {
+    RoundBrilliantParams in;
+    in.tablePct = 56, in.crownAngleDeg = 35, in.pavilionAngleDeg = 41.15, in.lowerHalfPct = 80;
+    const Stone s = buildRound(in);
+    int lower = 0, upper = 0;
+    for (const auto& f : s.facets) {
+        const double offMain = std::fabs(std::remainder(azimuthOf(f), 45.0));
+        if (f.name.rfind("lower_half_", 0) == 0) {
+            ++lower;
+            EXPECT_NEAR(slopeOf(f), 42.24, 0.02) << f.name;
+            EXPECT_NEAR(slopeOf(f), 42.2385, 1e-3) << f.name;
+            EXPECT_NEAR(offMain, 11.25, 1e-6) << f.name;
+        } else if (f.name.rfind("upper_half_", 0) == 0) {
+            ++upper;
+            EXPECT_NEAR(slopeOf(f), tradeUpperHalfDeg(56, 35, 50), 1e-6) << f.name;
+            EXPECT_NEAR(offMain, 11.25, 1e-6) << f.name;
+        }
+    }
+    EXPECT_EQ(lower, 16);
+    EXPECT_EQ(upper, 16);
+    EXPECT_NEAR(*s.proportions.lowerHalfAngleDeg, 42.24, 0.02);
+    EXPECT_NEAR(*s.proportions.upperHalfAngleDeg, tradeUpperHalfDeg(56, 35, 50), 1e-6);
+    EXPECT_NEAR(*s.proportions.girdlePct, 2.5, 1e-6);
+    EXPECT_GT(*s.proportions.girdleThickestPct, 4.0);  // at the mains' points and the halves' junctions
+}
+
+TEST(RoundBrilliant, FaceterHalvesAreAnotherStone) {
+    RoundBrilliantParams in;
+    in.tablePct = 56, in.crownAngleDeg = 35, in.pavilionAngleDeg = 41.15, in.lowerHalfPct = 80;
+    in.halves = HalvesLayout::Faceter;
+    const Stone s = buildRound(in);
+    const Facet& half = facetNamed(s, "lower_half_1");
+    EXPECT_NEAR(azimuthOf(half), 3.75, 1e-6);
+    EXPECT_NEAR(slopeOf(half), 41.39, 0.01);
+    EXPECT_NEAR(*s.proportions.girdlePct, 2.5, 1e-6);
+    EXPECT_NEAR(*s.proportions.lowerHalfPct, 80, 0.05);
+    EXPECT_EQ(makeCut("round_brilliant", {{"halves", 1}}).polygons.size(),
+              makeRoundBrilliant([] {
+                  RoundBrilliantParams f;
+                  f.halves = HalvesLayout::Faceter;
+                  return f;
+              }()).polygons.size());
+    EXPECT_THAT(cutCommandLine(findCutShape("round_brilliant"),
+                               completeCutValues(findCutShape("round_brilliant"), {{"halves", 1}})),
+                HasSubstr("--halves faceter"));
+    EXPECT_THAT(errorOf([] { choiceIndex(findCutShape("round_brilliant").parameters.back(), "gemcad"); }),
+                HasSubstr("halves 'gemcad': must be one of trade, faceter"));
 }
 
 TEST(RoundBrilliant, TolkowskyKnifeEdge) {
@@ -112,7 +189,10 @@ TEST_P(RoundBrilliantSweep, ProportionsMeasuredBackMatchInputs) {
     EXPECT_NEAR(*p.tablePct, w.table, 0.05);
     EXPECT_NEAR(*p.crownAngleDeg, w.crown, 0.01);
     EXPECT_NEAR(*p.pavilionAngleDeg, w.pavilion, 0.01);
-    EXPECT_NEAR(*p.girdlePct, w.girdle, 0.05);
+    EXPECT_NEAR(*p.girdlePct, w.girdle, 1e-6);
+    EXPECT_GT(*p.girdleThickestPct, w.girdle);
+    EXPECT_NEAR(*p.lowerHalfAngleDeg, tradeLowerHalfDeg(w.pavilion, w.lowerHalf), 1e-6);
+    EXPECT_NEAR(*p.upperHalfAngleDeg, tradeUpperHalfDeg(w.table, w.crown, w.star), 1e-6);
     EXPECT_NEAR(*p.crownHeightPct, 100 * (1 - T) / 2 * std::tan(radians(w.crown)), 0.05);
     EXPECT_NEAR(*p.pavilionDepthPct, 100 * (1 - c) / 2 * std::tan(radians(w.pavilion)), 0.05);
     EXPECT_NEAR(measuredStarPct(s, w.table), w.star, 0.05);

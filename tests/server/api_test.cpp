@@ -186,7 +186,8 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     std::ifstream storedFile(dir_ / "data" / "jobs" / id / "stats.json");
     const std::string stored{std::istreambuf_iterator<char>(storedFile), {}};
     EXPECT_NE(stored.find("\"leaving_share\""), std::string::npos);
-    EXPECT_EQ(stored.find("share_stderr"), std::string::npos);
+    EXPECT_EQ(stored.find("\"share_stderr\""), std::string::npos);  // (totals' trapped_share_stderr is the CLI's)
+    EXPECT_EQ(stored.find("leaving_share_stderr"), std::string::npos);
     auto csv = client_->Get("/api/jobs/" + id + "/stats.csv");
     ASSERT_TRUE(csv && csv->status == 200);
     EXPECT_EQ(csv->get_header_value("Content-Type"), "text/csv");

@@ -262,14 +262,17 @@ TEST(PhotonTracer, TracePhotonReproducesTheTally) {
         bool dispersion;
         double tiltDeg;
         int maxBounces;
+        SkyKind sky = SkyKind::Uniform;
     };
     for (const Case& c : {Case{"collimated", LightModelKind::Collimated, false, 0, 64},
                           Case{"collimated, tilted, dispersion", LightModelKind::Collimated, true, 20, 64},
                           Case{"hemisphere, dispersion", LightModelKind::Hemisphere, true, 0, 64},
+                          Case{"hemisphere, cosine sky", LightModelKind::Hemisphere, false, 0, 64, SkyKind::Cosine},
                           Case{"point, 3 bounces at most", LightModelKind::Point, false, 0, 3}}) {
         SCOPED_TRACE(c.what);
         TraceSettings settings = baseSettings(2 * kPhotonBlock + 1000);
         settings.light.model = c.light;
+        settings.light.sky = c.sky;
         settings.light.tiltDeg = c.tiltDeg;
         settings.dispersion = c.dispersion;
         settings.maxBounces = c.maxBounces;
@@ -295,6 +298,40 @@ TEST(PhotonTracer, TracePhotonReproducesTheTally) {
         EXPECT_EQ(paths.facets[0].internalReflections, internalReflections);
         EXPECT_GT(traced.trapped, 0u);
     }
+}
+
+// Tolkowsky's second reflection in 2-D: a long trough (a table over two pavilion facets at slope P) under
+// vertical light. A photon that enters the table, reflects totally off one pavilion facet (incidence P) and
+// then the other (incidence 180 - 3P) meets the table at 180 - 4P from the vertical, and stays in by total
+// reflection while that exceeds the critical angle: P < (180 - 24.44) / 4 = 38.89 deg (docs/optics.md).
+TEST(PhotonTracer, SecondReflectionLeavesTheTableOnlyAboveTheThreshold) {
+    auto tableExitsAfterTwoReflections = [](double pavilionDeg, double& exitAngleDeg) {
+        const double p = radians(pavilionDeg);
+        std::vector<NamedPlane> planes{{{{0, 0, 1}, 0}, "table"},
+                                       {{{std::sin(p), 0, -std::cos(p)}, 0.5 * std::sin(p)}, "pavilion_a"},
+                                       {{{-std::sin(p), 0, -std::cos(p)}, 0.5 * std::sin(p)}, "pavilion_b"},
+                                       {{{0, 1, 0}, 1}, "end_a"},
+                                       {{{0, -1, 0}, 1}, "end_b"}};  // vertical light never meets the ends
+        const Stone trough = Stone::build(intersectHalfSpaces(planes), "trough");
+        TraceSettings settings = baseSettings(20'000);
+        settings.n = 2.4173;
+        const Scene scene(trough, settings);
+        int count = 0;
+        exitAngleDeg = 0;
+        for (uint64_t i = 0; i < settings.photons; ++i) {
+            PhotonPath path;
+            tracePhoton(scene, i, path);
+            if (path.outcome != PhotonOutcome::Exited || path.bounces != 2) continue;
+            if (trough.facets[path.exitFacet].region != Region::Table) continue;
+            ++count;
+            exitAngleDeg = degrees(std::acos(std::clamp(double(path.exitDirection.z), -1.0, 1.0)));
+        }
+        return count;
+    };
+    double angle = 0;
+    EXPECT_EQ(tableExitsAfterTwoReflections(38.75, angle), 0) << "180 - 4P = 25 deg: totally reflected";
+    EXPECT_GT(tableExitsAfterTwoReflections(39.0, angle), 1000) << "180 - 4P = 24 deg: out through the table";
+    EXPECT_NEAR(angle, degrees(std::asin(2.4173 * std::sin(radians(24.0)))), 0.01);  // Snell at the table
 }
 
 TEST(PhotonTracer, ExitPathsLeaveThroughTheirFacet) {

@@ -70,6 +70,7 @@ function buildJob(form) {
   };
   if (job.light.model === 'hemisphere') {
     job.light.head_shadow_deg = readNumber(form, 'light.head_shadow_deg', errors);
+    job.light.sky = form.elements['light.sky'].value;
   }
   job.material = form.elements.material.value;
   job.dispersion = form.elements.dispersion.checked;
@@ -134,6 +135,7 @@ export function syncFormControls() {
   const form = $('#job-form');
   const hemisphere = form.elements['light.model'].value === 'hemisphere';
   form.elements['light.head_shadow_deg'].disabled = !hemisphere;
+  form.elements['light.sky'].disabled = !hemisphere;
   const render = form.elements.render.checked;
   for (const input of $('#render-options').querySelectorAll('input')) input.disabled = !render;
   $('#render-options').classList.toggle('disabled', !render);

@@ -57,6 +57,7 @@ export function describeMesh() {
   if (p.table_pct != null) parts.push(`table ${fmtNumber(p.table_pct, 1)} %`);
   if (p.crown_angle_deg != null) parts.push(`crown ${fmtNumber(p.crown_angle_deg, 1)}°`);
   if (p.pavilion_angle_deg != null) parts.push(`pavilion ${fmtNumber(p.pavilion_angle_deg, 1)}°`);
+  if (p.lower_half_angle_deg != null) parts.push(`lower halves ${fmtNumber(p.lower_half_angle_deg, 2)}°`);
   if (p.total_depth_pct != null) parts.push(`depth ${fmtNumber(p.total_depth_pct, 1)} %`);
   if (!m.convex) parts.push('non-convex');
   hint.textContent = parts.join(' · ');

@@ -42,6 +42,7 @@ export function jobSummary(settings) {
   if (settings.light) {
     let light = settings.light.model;
     if (settings.light.tilt_deg) light += `, tilt ${settings.light.tilt_deg}°`;
+    if (settings.light.model === 'hemisphere' && settings.light.sky) light += `, ${settings.light.sky} sky`;
     if (settings.light.model === 'hemisphere' && settings.light.head_shadow_deg) {
       light += `, head shadow ${settings.light.head_shadow_deg}°`;
     }

@@ -125,8 +125,12 @@ function proportionList(mesh) {
   const p = (mesh && mesh.proportions) || {};
   const rows = [
     ['Facets', mesh && mesh.facets], ['Table', p.table_pct, '%'], ['Crown height', p.crown_height_pct, '%'],
-    ['Pavilion depth', p.pavilion_depth_pct, '%'], ['Girdle', p.girdle_pct, '%'], ['Total depth', p.total_depth_pct, '%'],
+    ['Pavilion depth', p.pavilion_depth_pct, '%'], ['Girdle, thinnest', p.girdle_pct, '%'],
+    ['Girdle, thickest', p.girdle_thickest_pct, '%'], ['Total depth', p.total_depth_pct, '%'],
     ['Crown angle', p.crown_angle_deg, '°'], ['Pavilion angle', p.pavilion_angle_deg, '°'],
+    ['Star angle', p.star_angle_deg, '°'], ['Upper half angle', p.upper_half_angle_deg, '°'],
+    ['Lower half angle', p.lower_half_angle_deg, '°'], ['Star length', p.star_pct, '%'],
+    ['Lower half length', p.lower_half_pct, '%'],
   ].filter(([, v]) => v !== undefined && v !== null);
   return h('dl', { class: 'kv' }, rows.map(([k, v, unit]) => [h('dt', {}, k), h('dd', {}, unit ? `${fmtNumber(v, 2)}${unit === '%' ? ' %' : unit}` : String(v))]));
 }
@@ -160,7 +164,8 @@ function resultPage(job, stats) {
           h('dt', {}, 'Reflected at entry'), h('dd', {}, fmtInt(totals.reflected_at_entry)),
           h('dt', {}, 'Entered'), h('dd', {}, fmtInt(totals.entered)),
           h('dt', {}, 'Exited'), h('dd', {}, fmtInt(totals.exited)),
-          h('dt', {}, 'Trapped'), h('dd', {}, fmtInt(totals.trapped)),
+          h('dt', {}, 'Trapped'), h('dd', {}, totals.trapped_share == null ? fmtInt(totals.trapped)
+            : `${fmtInt(totals.trapped)} (${fmtNumber(100 * totals.trapped_share, 4)} % ± ${fmtNumber(100 * totals.trapped_share_stderr, 4)})`),
           h('dt', {}, 'Time'), h('dd', {}, `${fmtDuration(timing.seconds)} on ${timing.threads} thread${timing.threads === 1 ? '' : 's'}`),
           h('dt', {}, 'Speed'), h('dd', {}, `${fmtInt(timing.photons_per_second)} photons/s`))),
       h('section', { class: 'card', 'aria-labelledby': 'stone-title' },
