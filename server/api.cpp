@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "util/error.h"
+#include "util/simd_target.h"
 
 namespace facetlight::server {
 namespace {
@@ -359,7 +360,10 @@ void Api::install(httplib::Server& server, bool accessLog) {
         {"GET /healthz",
          [this](const Request&, Response& res) {
              sendJson(res, 200,
-                      {{"status", "ok"}, {"queued", queue_.queuedCount()}, {"cores", queue_.cores()}});
+                      {{"status", "ok"},
+                       {"queued", queue_.queuedCount()},
+                       {"cores", queue_.cores()},
+                       {"simd", simdTarget()}});
          }},
         {"GET /api/openapi.json",
          [](const Request&, Response& res) { res.set_content(std::string(openApiDocument()), kJsonType); }},

@@ -45,7 +45,9 @@ std::vector<std::string> simdTargets() {
 void limitSimdTarget(std::string_view name) {
     for (int64_t t : usable()) {
         if (folded(nameOf(t)) == folded(name) || folded(hwy::TargetName(t)) == folded(name)) {
-            hwy::DisableTargets(t - 1);  // every better target has a lower bit
+            // Every better target has a lower bit. Highway 1.0.3's SupportedTargets() re-picks the best target
+            // whenever it runs without a mock, undoing DisableTargets(): the mock is what keeps the limit.
+            hwy::SetSupportedTargetsForTest(hwy::SupportedTargets() & ~(t - 1));
             return;
         }
     }
