@@ -50,7 +50,8 @@ ConvexIntersector::ConvexIntersector(const Stone& stone) : kernels_(HWY_DYNAMIC_
     if (!stone.convex)
         throw Error("the convex intersector needs a convex stone; '" + stone.name + "' is not");
     if (stone.facets.empty()) throw Error("stone '" + stone.name + "' has no facets");
-    const size_t n = stone.facets.size(), padded = (n + Planes::kPadding - 1) / Planes::kPadding * Planes::kPadding;
+    const size_t n = stone.facets.size(),
+                 padded = (n + Planes::kPadding - 1) / Planes::kPadding * Planes::kPadding;
     planes_.count = n;
     planes_.nx.assign(padded, 0.0f);
     planes_.ny.assign(padded, 0.0f);

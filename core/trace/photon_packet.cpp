@@ -7,7 +7,6 @@
 // once per SIMD target; the CPU's best is picked once per block of photons.
 #include <algorithm>
 #include <bit>
-#include <cstring>
 
 #include "trace/detail/photon_walker.h"
 
@@ -105,7 +104,8 @@ HWY_INLINE Normals gatherNormals(const std::vector<Vec3f>& normal, Facets facet)
 
 // LightModel::sample() for a collimated beam, lane-wise: the disc point drawn by rejection in each lane's
 // stream, the origin worked out in double and rounded to float as Vec3f does.
-HWY_INLINE void sampleBeam(const LightModel::Disc& disc, uint64_t* state, Floats& ox, Floats& oy, Floats& oz) {
+HWY_INLINE void sampleBeam(const LightModel::Disc& disc, uint64_t* state, Floats& ox, Floats& oy,
+                           Floats& oz) {
     const HalfTag dh;
     const size_t half = hn::Lanes(StreamTag());
     const Doubles one(1.0), two(2.0), zero(0.0), radius(disc.radius);
@@ -118,8 +118,8 @@ HWY_INLINE void sampleBeam(const LightModel::Disc& disc, uint64_t* state, Floats
             const Doubles cx = two * uniformDoubleOf(s, pending) - one;
             const Doubles cy = two * uniformDoubleOf(s, pending) - one;
             const Doubles r2 = cx * cx + cy * cy;
-            const auto inside =
-                hn::RebindMask(StreamTag(), hn::And(hn::RebindMask(DoubleTag(), pending), hn::And(r2 < one, zero < r2)));
+            const auto inside = hn::RebindMask(
+                StreamTag(), hn::And(hn::RebindMask(DoubleTag(), pending), hn::And(r2 < one, zero < r2)));
             x = select(hn::RebindMask(DoubleTag(), inside), cx, x);
             y = select(hn::RebindMask(DoubleTag(), inside), cy, y);
             pending = hn::AndNot(inside, pending);
@@ -213,7 +213,8 @@ void stepPacket(const Scene& s, Packet& lanes, Tally& tally) {
     forEachLane(exits, [&](int k) {
         const uint32_t f = hit.facet[k];
         const Vec3f d{lanes.dx[k], lanes.dy[k], lanes.dz[k]};
-        tally.exited(f, hit.p(k), PhotonWalker::refractOut(d, s.normal[f], lanes.n[k], hit.cosI[k], hit.cosT[k]),
+        tally.exited(f, hit.p(k),
+                     PhotonWalker::refractOut(d, s.normal[f], lanes.n[k], hit.cosI[k], hit.cosT[k]),
                      lanes.bounces[k]);
     });
 
@@ -236,7 +237,8 @@ void stepPacket(const Scene& s, Packet& lanes, Tally& tally) {
 
 // Photons [begin, end) of a convex stone, a packet at a time. Each photon takes exactly the steps walk()
 // takes, so the tally has the same bits.
-void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end, PhotonWalker::Tally& tally) {
+void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                 PhotonWalker::Tally& tally) {
     const LaneBits all = laneCount() == 64 ? ~LaneBits(0) : (LaneBits(1) << laneCount()) - 1;
     Packet lanes, started;  // started: photons inside the stone, waiting for a lane
     uint64_t next = begin;
@@ -258,7 +260,8 @@ void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t en
 }
 #else
 // Highway's one-lane fallback (x86 CPUs without SSE4): one photon at a time.
-void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end, PhotonWalker::Tally& tally) {
+void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                 PhotonWalker::Tally& tally) {
     for (uint64_t i = begin; i < end; ++i) PhotonWalker::walk(s.scene, s.convex, i, tally);
 }
 #endif
@@ -273,16 +276,9 @@ namespace facetlight {
 HWY_EXPORT(walkPackets);
 
 void PhotonWalker::packets(const TraceScene& s, uint64_t begin, uint64_t end, Tally& tally) {
-    const PacketScene scene{s,
-                            *s.convex_,
-                            s.beam_.get(),
-                            s.light_,
-                            s.material_,
-                            s.normal_,
-                            s.fixedIndex_,
-                            s.perPhotonIndex(),
-                            s.settings_.seed,
-                            uint32_t(s.settings_.maxBounces)};
+    const PacketScene scene{
+        s,         *s.convex_,    s.beam_.get(),      s.light_,         s.material_,
+        s.normal_, s.fixedIndex_, s.perPhotonIndex(), s.settings_.seed, uint32_t(s.settings_.maxBounces)};
     HWY_DYNAMIC_DISPATCH(walkPackets)(scene, begin, end, tally);
 }
 

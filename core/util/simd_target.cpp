@@ -25,7 +25,8 @@ std::vector<int64_t> usable() {
 std::string folded(std::string_view s) {
     std::string out;
     for (char c : s) {
-        if (std::isalnum(static_cast<unsigned char>(c))) out += char(std::toupper(static_cast<unsigned char>(c)));
+        if (std::isalnum(static_cast<unsigned char>(c)))
+            out += char(std::toupper(static_cast<unsigned char>(c)));
     }
     return out;
 }
@@ -45,8 +46,9 @@ std::vector<std::string> simdTargets() {
 void limitSimdTarget(std::string_view name) {
     for (int64_t t : usable()) {
         if (folded(nameOf(t)) == folded(name) || folded(hwy::TargetName(t)) == folded(name)) {
-            // Every better target has a lower bit. Highway 1.0.3's SupportedTargets() re-picks the best target
-            // whenever it runs without a mock, undoing DisableTargets(): the mock is what keeps the limit.
+            // Every better target has a lower bit. Highway 1.0.3's SupportedTargets() re-picks the best
+            // target whenever it runs without a mock, undoing DisableTargets(): the mock is what keeps the
+            // limit.
             hwy::SetSupportedTargetsForTest(hwy::SupportedTargets() & ~(t - 1));
             return;
         }

@@ -1,6 +1,7 @@
 #pragma once
 // The SIMD target the photon walk and the convex intersectors run on: the best of those compiled in (SSE4,
-// AVX2, AVX-512, and Highway's portable EMU128 fallback on x86) that the CPU supports, picked at run time.
+// AVX2, AVX-512, and Highway's one-lane fallback, SCALAR with GCC before 12.3 and EMU128 after) that the CPU
+// supports, picked at run time.
 // Every target computes the same bits (docs/performance.md, "Portable speed").
 #include <string>
 #include <string_view>

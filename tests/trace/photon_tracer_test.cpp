@@ -259,7 +259,7 @@ FacetStats tallyOfPaths(const TraceScene& scene) {
 template <class F>
 void forEachSimdTarget(F&& f) {
     const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
-    ASSERT_GE(targets.size(), 2u);  // at least one SIMD target and the fallback
+    ASSERT_FALSE(targets.empty());  // a FACETLIGHT_NATIVE build compiles only the building machine's target
     for (const int64_t target : targets) {
         SCOPED_TRACE(hwy::TargetName(target));
         hwy::SetSupportedTargetsForTest(target);

@@ -58,7 +58,24 @@ HWY_INLINE uint32_t lowestFacetAt(PlaneLanes t, hn::Vec<PlaneTag> best, hn::Vec<
     return uint32_t(hn::GetLane(hn::MinOfLanes(di, hn::IfThenElse(at, facet, hn::Set(di, INT32_MAX)))));
 }
 
-HWY_INLINE bool LeaveRay(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
+// The ray's crossings of planes [i, i + lanes).
+HWY_INLINE PlaneCrossing<PlaneLanes> crossings(const ConvexIntersector::Planes& p, size_t i, PlaneLanes ox,
+                                               PlaneLanes oy, PlaneLanes oz, PlaneLanes dx, PlaneLanes dy,
+                                               PlaneLanes dz) {
+    return {ox,
+            oy,
+            oz,
+            dx,
+            dy,
+            dz,
+            PlaneLanes::load(&p.nx[i]),
+            PlaneLanes::load(&p.ny[i]),
+            PlaneLanes::load(&p.nz[i]),
+            PlaneLanes::load(&p.offset[i])};
+}
+
+HWY_INLINE bool LeaveRay(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d,
+                         SurfaceHit& hit) {
     const PlaneTag df;
     const PlaneIndexTag di;
     const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z), zero(0.0f);
@@ -66,9 +83,7 @@ HWY_INLINE bool LeaveRay(const ConvexIntersector::Planes& p, const Vec3f& o, con
     auto bestFacet = hn::Zero(di), facet = hn::Iota(di, 0);
     const auto step = hn::Set(di, int32_t(hn::Lanes(df)));
     for (size_t i = 0; i < p.count; i += hn::Lanes(df)) {
-        const PlaneCrossing<PlaneLanes> c(ox, oy, oz, dx, dy, dz, PlaneLanes::load(&p.nx[i]),
-                                          PlaneLanes::load(&p.ny[i]), PlaneLanes::load(&p.nz[i]),
-                                          PlaneLanes::load(&p.offset[i]));
+        const PlaneCrossing<PlaneLanes> c = crossings(p, i, ox, oy, oz, dx, dy, dz);
         const PlaneLanes t = leavingT(c);
         const auto better = hn::And(zero < c.den, t < best);
         best = select(better, t, best);
@@ -80,7 +95,8 @@ HWY_INLINE bool LeaveRay(const ConvexIntersector::Planes& p, const Vec3f& o, con
     return hit.t < kInf;
 }
 
-HWY_INLINE bool EnterRay(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
+HWY_INLINE bool EnterRay(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d,
+                         SurfaceHit& hit) {
     const PlaneTag df;
     const PlaneIndexTag di;
     const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z), zero(0.0f);
@@ -89,9 +105,7 @@ HWY_INLINE bool EnterRay(const ConvexIntersector::Planes& p, const Vec3f& o, con
     auto inFacet = hn::Zero(di), facet = hn::Iota(di, 0);
     const auto step = hn::Set(di, int32_t(hn::Lanes(df)));
     for (size_t i = 0; i < p.count; i += hn::Lanes(df)) {
-        const PlaneCrossing<PlaneLanes> c(ox, oy, oz, dx, dy, dz, PlaneLanes::load(&p.nx[i]),
-                                          PlaneLanes::load(&p.ny[i]), PlaneLanes::load(&p.nz[i]),
-                                          PlaneLanes::load(&p.offset[i]));
+        const PlaneCrossing<PlaneLanes> c = crossings(p, i, ox, oy, oz, dx, dy, dz);
         const PlaneLanes t = c.num / c.den;
         tOut = select(hn::And(zero < c.den, t < tOut), t, tOut);
         const auto better = hn::And(c.den < zero, tIn < t);
@@ -156,37 +170,42 @@ HWY_INLINE void LeavePacket(const ConvexIntersector::Planes& p, Floats ox, Float
     const Floats zero(0.0f);
     Floats best[2] = {Floats(kInf), Floats(kInf)};
     Facets bestFacet[2] = {hn::Zero(di), hn::Zero(di)};
+    Facets plane[2] = {hn::Set(di, 0), hn::Set(di, 1)};  // i in lanes, kept by adding rather than broadcast
+    const Facets two = hn::Set(di, 2);
     auto visit = [&](size_t i, int chain) HWY_ATTR {
-        const PlaneCrossing<Floats> c(ox, oy, oz, dx, dy, dz, Floats(p.nx[i]), Floats(p.ny[i]), Floats(p.nz[i]),
-                                      Floats(p.offset[i]));
+        const PlaneCrossing<Floats> c(ox, oy, oz, dx, dy, dz, Floats(p.nx[i]), Floats(p.ny[i]),
+                                      Floats(p.nz[i]), Floats(p.offset[i]));
         const Floats t = leavingT(c);
         const auto better = hn::And(zero < c.den, t < best[chain]);
         best[chain] = select(better, t, best[chain]);
-        bestFacet[chain] = hn::IfThenElse(hn::RebindMask(di, better), hn::Set(di, int32_t(i)), bestFacet[chain]);
+        bestFacet[chain] = hn::IfThenElse(hn::RebindMask(di, better), plane[chain], bestFacet[chain]);
     };
     size_t i = 0;
     for (; i + 1 < p.count; i += 2) {
         visit(i, 0);
         visit(i + 1, 1);
+        plane[0] = hn::Add(plane[0], two), plane[1] = hn::Add(plane[1], two);
     }
     if (i < p.count) visit(i, 0);
     // The nearer of the two, and on a tie the lower plane, as LeaveRay picks.
-    const auto odd = hn::Or(best[1] < best[0], hn::And(hn::Eq(best[1].v, best[0].v),
-                                                       hn::RebindMask(FloatTag(), hn::Lt(bestFacet[1], bestFacet[0]))));
+    const auto odd =
+        hn::Or(best[1] < best[0], hn::And(hn::Eq(best[1].v, best[0].v),
+                                          hn::RebindMask(FloatTag(), hn::Lt(bestFacet[1], bestFacet[0]))));
     tOut = select(odd, best[1], best[0]);
     facetOut = hn::IfThenElse(hn::RebindMask(di, odd), bestFacet[1], bestFacet[0]);
 }
 
 // EnterBeamRay for each lane's origin: the lanes that enter, each with its t and facet.
-HWY_INLINE FloatMask EnterBeamPacket(const ConvexBeamEntry& beam, Floats ox, Floats oy, Floats oz, Floats& tOut,
-                                     Facets& facetOut) {
+HWY_INLINE FloatMask EnterBeamPacket(const ConvexBeamEntry& beam, Floats ox, Floats oy, Floats oz,
+                                     Floats& tOut, Facets& facetOut) {
     const IndexTag di;
     const ConvexBeamEntry::Planes& in = beam.in();
     const ConvexBeamEntry::Planes& out = beam.out();
     Floats tIn(-kInf), tExit(kInf);
     Facets inFacet = hn::Zero(di);
     for (size_t i = 0; i < in.count; ++i) {
-        const Floats t = beamT(Floats(in.a[i]), Floats(in.mx[i]), Floats(in.my[i]), Floats(in.mz[i]), ox, oy, oz);
+        const Floats t =
+            beamT(Floats(in.a[i]), Floats(in.mx[i]), Floats(in.my[i]), Floats(in.mz[i]), ox, oy, oz);
         const auto better = tIn < t;
         tIn = select(better, t, tIn);
         inFacet = hn::IfThenElse(hn::RebindMask(di, better), hn::Set(di, int32_t(in.facet[i])), inFacet);

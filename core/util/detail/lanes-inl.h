@@ -7,7 +7,8 @@
 //
 // The shared templates (fresnelTerms, Material::indexOf, mix64) are compiled without the target's options and
 // always inlined into the per-target caller; the operators here are plain inline functions with the target's
-// options, which the compiler then inlines into that caller (it may not inline them into the template itself).
+// options, which the compiler then inlines into that caller (it may not inline them into the template
+// itself).
 #if defined(FACETLIGHT_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FACETLIGHT_LANES_INL_H_
 #undef FACETLIGHT_LANES_INL_H_
@@ -108,18 +109,12 @@ using Streams = Lanes<StreamTag>;
 using FloatMask = hn::Mask<FloatTag>;
 
 // The lanes of a packet's float mask, split into the two halves its 64-bit lanes hold.
-HWY_INLINE hn::Mask<StreamTag> lowerHalf(FloatMask m) {
+template <bool kUpper>
+HWY_INLINE hn::Mask<StreamTag> halfOf(FloatMask m) {
     const hn::Repartition<int64_t, FloatTag> d64;
     const hn::Half<IndexTag> dh;
-    const auto wide =
-        hn::PromoteTo(d64, hn::LowerHalf(dh, hn::BitCast(IndexTag(), hn::VecFromMask(FloatTag(), m))));
-    return hn::MaskFromVec(hn::BitCast(StreamTag(), wide));
-}
-HWY_INLINE hn::Mask<StreamTag> upperHalf(FloatMask m) {
-    const hn::Repartition<int64_t, FloatTag> d64;
-    const hn::Half<IndexTag> dh;
-    const auto wide =
-        hn::PromoteTo(d64, hn::UpperHalf(dh, hn::BitCast(IndexTag(), hn::VecFromMask(FloatTag(), m))));
+    const auto lanes = hn::BitCast(IndexTag(), hn::VecFromMask(FloatTag(), m));
+    const auto wide = hn::PromoteTo(d64, kUpper ? hn::UpperHalf(dh, lanes) : hn::LowerHalf(dh, lanes));
     return hn::MaskFromVec(hn::BitCast(StreamTag(), wide));
 }
 
@@ -141,7 +136,8 @@ HWY_INLINE Doubles uniformDoubleOf(Streams& state, hn::Mask<StreamTag> draw) {
 HWY_INLINE Floats uniformOf(uint64_t* state, FloatMask draw) {
     const size_t half = hn::Lanes(StreamTag());
     Streams lo = Streams::load(state), hi = Streams::load(state + half);
-    const Streams bitsLo = nextOf(lo, lowerHalf(draw)) >> 40, bitsHi = nextOf(hi, upperHalf(draw)) >> 40;
+    const Streams bitsLo = nextOf(lo, halfOf<false>(draw)) >> 40,
+                  bitsHi = nextOf(hi, halfOf<true>(draw)) >> 40;
     lo.store(state), hi.store(state + half);
     // Each lane holds 24 bits: its low 32-bit half, converted exactly.
     const hn::Repartition<uint32_t, FloatTag> d32;
