@@ -138,12 +138,12 @@ HWY_INLINE void sampleBeam(const LightModel::Disc& disc, uint64_t* state, Floats
     oz = hn::Combine(FloatTag(), origin[2][1], origin[2][0]);
 }
 
-using Scene = PhotonWalker::PacketScene;
+using Packets = PhotonWalker::PacketScene;
 using Tally = PhotonWalker::Tally;
 
 // PhotonWalker::start() for photons [first, min(first + lanes, end)): tallies those that miss or reflect off
 // the stone and makes those that get in live lanes of `started`, which has none live before.
-void startPacket(const Scene& s, uint64_t first, uint64_t end, Tally& tally, Packet& started) {
+void startPacket(const Packets& s, uint64_t first, uint64_t end, Tally& tally, Packet& started) {
     const size_t count = std::min<uint64_t>(laneCount(), end - first);
     if (!s.beam) {
         int k = 0;
@@ -160,7 +160,7 @@ void startPacket(const Scene& s, uint64_t first, uint64_t end, Tally& tally, Pac
     Floats ox, oy, oz;
     sampleBeam(s.light.disc(), started.rng, ox, oy, oz);
     Floats n(s.fixedIndex);
-    if (s.perPhotonIndex) {
+    if (s.dispersive) {
         const Floats wavelength = Floats(380.0f) + Floats(400.0f) * uniformOf(started.rng, lanes);
         n = viaDoubles(wavelength, [&](Doubles w) HWY_ATTR { return s.material.indexOf(w); });
     }
@@ -192,7 +192,7 @@ void startPacket(const Scene& s, uint64_t first, uint64_t end, Tally& tally, Pac
 }
 
 // PhotonWalker::step() for every live lane of the packet; the lanes whose photon is done are no longer live.
-void stepPacket(const Scene& s, Packet& lanes, Tally& tally) {
+void stepPacket(const Packets& s, Packet& lanes, Tally& tally) {
     const Floats ox = Floats::load(lanes.px), oy = Floats::load(lanes.py), oz = Floats::load(lanes.pz);
     const Floats dx = Floats::load(lanes.dx), dy = Floats::load(lanes.dy), dz = Floats::load(lanes.dz);
     Floats t;
@@ -275,10 +275,10 @@ namespace facetlight {
 
 HWY_EXPORT(walkPackets);
 
-void PhotonWalker::packets(const TraceScene& s, uint64_t begin, uint64_t end, Tally& tally) {
+void PhotonWalker::packets(const Scene& s, uint64_t begin, uint64_t end, Tally& tally) {
     const PacketScene scene{
         s,         *s.convex_,    s.beam_.get(),      s.light_,         s.material_,
-        s.normal_, s.fixedIndex_, s.perPhotonIndex(), s.settings_.seed, uint32_t(s.settings_.maxBounces)};
+        s.normal_, s.fixedIndex_, s.dispersive(), s.settings_.seed, uint32_t(s.settings_.maxBounces)};
     HWY_DYNAMIC_DISPATCH(walkPackets)(scene, begin, end, tally);
 }
 

@@ -7,6 +7,7 @@
 
 #include "intersect/convex_intersector.h"
 #include "intersect/embree_intersector.h"
+#include "optics/fresnel.h"
 #include "trace/photon_tracer.h"
 #include "util/random.h"
 
@@ -28,14 +29,14 @@ class PhotonWalker {
 
     // Draws photon `index` and takes it to the stone; true when it is inside and has to be stepped on.
     template <class Intersector, class Visitor>
-    static bool start(const TraceScene& s, const Intersector& isect, uint64_t index, Visitor& visit,
+    static bool start(const Scene& s, const Intersector& isect, uint64_t index, Visitor& visit,
                       Photon& ph) {
         ph.rng = Rng(s.settings_.seed, index);
         ph.bounces = 0;
         const LightRay ray = s.light_.sample(ph.rng);
         float wavelength = float(Material::kSodiumD);
         ph.n = s.fixedIndex_;
-        if (s.perPhotonIndex()) {
+        if (s.dispersive()) {
             wavelength = 380.0f + 400.0f * ph.rng.uniform();
             ph.n = float(s.material_.index(wavelength));
         }
@@ -49,7 +50,7 @@ class PhotonWalker {
         }
         p = p + d * hit.t;
         if (!s.fixedEntry_.empty()) {
-            const TraceScene::FixedEntry& e = s.fixedEntry_[hit.facet];
+            const Scene::FixedEntry& e = s.fixedEntry_[hit.facet];
             if (ph.rng.uniform() < e.reflectance) {
                 visit.reflectedAtEntry(hit.facet, p, e.reflected);
                 return false;
@@ -74,7 +75,7 @@ class PhotonWalker {
 
     // The photon's next interaction inside; true while it stays inside.
     template <class Intersector, class Visitor>
-    static bool step(const TraceScene& s, const Intersector& isect, Visitor& visit, Photon& ph) {
+    static bool step(const Scene& s, const Intersector& isect, Visitor& visit, Photon& ph) {
         SurfaceHit hit;
         if (!isect.leave(ph.p, ph.d, hit)) {
             visit.lost(ph.bounces);
@@ -112,7 +113,7 @@ class PhotonWalker {
     }
 
     template <class Intersector, class Visitor>
-    static void walk(const TraceScene& s, const Intersector& isect, uint64_t index, Visitor& visit) {
+    static void walk(const Scene& s, const Intersector& isect, uint64_t index, Visitor& visit) {
         Photon ph;
         if (start(s, isect, index, visit, ph)) {
             while (step(s, isect, visit, ph)) {
@@ -122,23 +123,23 @@ class PhotonWalker {
 
     // What the packet walk (photon_packet.cpp, compiled once per SIMD target) reads of the scene.
     struct PacketScene {
-        const TraceScene& scene;
+        const Scene& scene;
         const ConvexIntersector& convex;
         const ConvexBeamEntry* beam;  // null unless the light is one collimated beam
         const LightModel& light;
         const Material& material;
         const std::vector<Vec3f>& normal;
         float fixedIndex;
-        bool perPhotonIndex;
+        bool dispersive;
         uint64_t seed;
         uint32_t maxBounces;
     };
     // Photons [begin, end) of a convex stone a packet at a time, one per SIMD lane, on the CPU's best
     // target. Each photon takes exactly the steps walk() takes, so the tally has the same bits.
-    static void packets(const TraceScene& s, uint64_t begin, uint64_t end, Tally& t);
+    static void packets(const Scene& s, uint64_t begin, uint64_t end, Tally& t);
 
     // Photons [begin, end) into one thread's tally.
-    static void tally(const TraceScene& s, uint64_t begin, uint64_t end, FacetStats& stats) {
+    static void tally(const Scene& s, uint64_t begin, uint64_t end, FacetStats& stats) {
         Tally t{s, stats};
         if (s.convex_) {
             packets(s, begin, end, t);
@@ -148,7 +149,7 @@ class PhotonWalker {
         stats.photons += end - begin;
     }
 
-    static void path(const TraceScene& s, uint64_t index, PhotonPath& out) {
+    static void path(const Scene& s, uint64_t index, PhotonPath& out) {
         out = PhotonPath{};
         Recorder r{out};
         if (s.convex_) {
@@ -159,7 +160,7 @@ class PhotonWalker {
     }
 
     struct Tally {
-        const TraceScene& s;
+        const Scene& s;
         FacetStats& st;
 
         bool crownSide(uint32_t facet) const {
