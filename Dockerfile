@@ -6,7 +6,7 @@ COPY scripts/deps scripts/deps
 RUN bash -c 'source scripts/deps && facetlight_install_deps "${FACETLIGHT_BUILD_DEPS[@]}" python3' \
     && rm -rf /var/lib/apt/lists/*
 COPY . .
-RUN rm -rf build && cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DFACETLIGHT_NATIVE=OFF \
+RUN rm -rf build && cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
     && cmake --build build --parallel "$(nproc)" \
     && cd build && ctest --output-on-failure --parallel "$(nproc)" --timeout 900 -LE browser
 RUN useradd --system --create-home facetlight && mkdir -p /data && chown facetlight /data

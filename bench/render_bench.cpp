@@ -1,7 +1,8 @@
 // Render time against thread count: the 400 x 400 face-up picture of the default round brilliant with
 // caustics and dispersion (200 000 map photons, 4 samples per pixel), each phase timed separately and the
 // whole job as the `render` command runs it after the statistics trace. Medians of 5 runs, side by side.
-//   render_bench [runs]
+// A SIMD target (e.g. AVX2) limits the dispatch to it, to measure a lower target on a better CPU.
+//   render_bench [runs] [simd target]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "photonmap/photon_map.h"
 #include "render/renderer.h"
 #include "trace/photon_tracer.h"
+#include "util/simd_target.h"
 
 using namespace facetlight;
 
@@ -33,6 +35,8 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
     const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+    if (argc > 2) limitSimdTarget(argv[2]);
+    std::printf("SIMD target: %s\n", simdTarget().c_str());
     const Stone stone = resolveStone("round_brilliant");
     const RenderSettings settings;  // 400 x 400, 4 samples, 200 000 map photons, face-up
     std::printf("round brilliant, %d x %d, %d samples, %llu map photons, dispersion on; median of %d runs\n",

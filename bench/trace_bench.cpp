@@ -1,17 +1,21 @@
 // Stats-only photon tracing of a 57-facet round brilliant (collimated light straight down, no dispersion),
 // in photons per second for 1 and 2 threads; the same with dispersion, and the shipped 121-facet brilliant.
-// Figures go to docs/performance.md ("Photon tracing").
-//   build-*/bin/bench_trace --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// Figures go to docs/performance.md ("Photon tracing"). --simd=NAME (e.g. AVX2, SSE4) limits the dispatch to
+// that SIMD target, to measure a lower target on a better CPU.
+//   build-*/bin/bench_trace [--simd=AVX2] --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "geometry/halfspace.h"
 #include "io/mesh_io.h"
 #include "trace/photon_tracer.h"
+#include "util/simd_target.h"
 
 using namespace facetlight;
 
@@ -118,4 +122,21 @@ BENCHMARK(BM_TraceShippedBrilliant)
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    std::vector<char*> args;
+    for (int i = 0; i < argc; ++i) {
+        const std::string_view arg = argv[i];
+        if (arg.starts_with("--simd=")) {
+            limitSimdTarget(arg.substr(7));
+        } else {
+            args.push_back(argv[i]);
+        }
+    }
+    int count = int(args.size());
+    benchmark::Initialize(&count, args.data());
+    if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
+    benchmark::AddCustomContext("simd", simdTarget());
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

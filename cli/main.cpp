@@ -4,12 +4,13 @@
 #include "commands.h"
 #include "process_communicator.h"
 #include "util/error.h"
+#include "util/simd_target.h"
 
 int main(int argc, char** argv) {
     facetlight::cli::processCommunicator();  // under mpirun, every rank starts MPI before anything else
     CLI::App app{"facetlight: how light moves through cut gemstones"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "facetlight 0.1.0");
+    app.set_version_flag("--version", "facetlight 0.1.0 (SIMD: " + facetlight::simdTarget() + ")");
     facetlight::cli::addInfoCommand(app);
     facetlight::cli::addCutCommand(app);
     facetlight::cli::addTraceCommand(app);

@@ -8,6 +8,7 @@
 #include "stats/facet_stats.h"
 #include "study/result_files.h"
 #include "util/error.h"
+#include "util/simd_target.h"
 
 namespace facetlight::server {
 namespace {
@@ -373,7 +374,10 @@ void Api::install(httplib::Server& server, bool accessLog) {
         {"GET /healthz",
          [this](const Request&, Response& res) {
              sendJson(res, 200,
-                      {{"status", "ok"}, {"queued", queue_.queuedCount()}, {"cores", queue_.cores()}});
+                      {{"status", "ok"},
+                       {"queued", queue_.queuedCount()},
+                       {"cores", queue_.cores()},
+                       {"simd", simdTarget()}});
          }},
         {"GET /api/openapi.json",
          [](const Request&, Response& res) { res.set_content(std::string(openApiDocument()), kJsonType); }},

@@ -5,7 +5,6 @@
 #include <cstdint>
 
 #include "geometry/geometry.h"
-#include "util/simd.h"
 
 namespace facetlight {
 
@@ -32,12 +31,5 @@ struct SurfaceHit {
     float t = 0;
     uint32_t facet = 0;
 };
-
-#if FACETLIGHT_PACKETS
-// Sixteen rays, one per lane.
-struct RayPacket {
-    Floats16 ox, oy, oz, dx, dy, dz;
-};
-#endif
 
 }  // namespace facetlight

@@ -10,7 +10,7 @@ inline float select(bool mask, float a, float b) {
 }
 
 // For rays with cos(incidence) cosI in [0, 1] going from index n1 to n2, eta = n1 / n2. Mask is bool for a
-// float and LaneMask for Floats16.
+// float and the lane mask for lanes of floats (util/detail/lanes-inl.h).
 template <class F, class Mask = decltype(F{} < F{})>
 struct FresnelTerms {
     Mask totalInternal;
@@ -18,8 +18,10 @@ struct FresnelTerms {
     F cosT;         // cos of the refraction angle; 0 under total internal reflection
 };
 
+// Always inlined, so that lanes of a SIMD target are computed with that target's instructions
+// (util/detail/lanes-inl.h).
 template <class F>
-inline FresnelTerms<F> fresnelTerms(F cosI, F eta) {
+[[gnu::always_inline]] inline FresnelTerms<F> fresnelTerms(F cosI, F eta) {
     using std::sqrt;
     const F zero(0.0f), one(1.0f), two(2.0f);
     const F cos2I = one - cosI * cosI;

@@ -130,39 +130,5 @@ LightRay LightModel::sample(Rng& rng) const {
     return {};
 }
 
-#if FACETLIGHT_PACKETS
-void LightModel::sampleBeam(uint64_t* state, Floats16& ox, Floats16& oy, Floats16& oz) const {
-    const __m512d one = _mm512_set1_pd(1.0), two = _mm512_set1_pd(2.0), zero = _mm512_setzero_pd();
-    __m256 origin[3][2];
-    for (int h = 0; h < 2; ++h) {
-        // unitDisc() lane-wise: each lane draws pairs until its own point falls inside the disc.
-        __m512i s = _mm512_load_si512(state + 8 * h);
-        __m512d x = zero, y = zero;
-        for (__mmask8 pending = 0xff; pending;) {
-            const __m512d cx = _mm512_sub_pd(_mm512_mul_pd(two, uniformDoubleOf(s, pending)), one);
-            const __m512d cy = _mm512_sub_pd(_mm512_mul_pd(two, uniformDoubleOf(s, pending)), one);
-            const __m512d r2 = _mm512_add_pd(_mm512_mul_pd(cx, cx), _mm512_mul_pd(cy, cy));
-            const __mmask8 inside = _mm512_mask_cmp_pd_mask(
-                _mm512_mask_cmp_pd_mask(pending, r2, one, _CMP_LT_OQ), r2, zero, _CMP_GT_OQ);
-            x = _mm512_mask_mov_pd(x, inside, cx);
-            y = _mm512_mask_mov_pd(y, inside, cy);
-            pending &= __mmask8(~inside);
-        }
-        _mm512_store_si512(state + 8 * h, s);
-        const __m512d sx = _mm512_mul_pd(_mm512_set1_pd(discRadius_), x);
-        const __m512d sy = _mm512_mul_pd(_mm512_set1_pd(discRadius_), y);
-        auto component = [&](double c, double u, double v) {
-            const __m512d cu = _mm512_add_pd(_mm512_set1_pd(c), _mm512_mul_pd(_mm512_set1_pd(u), sx));
-            return _mm512_cvtpd_ps(_mm512_add_pd(cu, _mm512_mul_pd(_mm512_set1_pd(v), sy)));
-        };
-        origin[0][h] = component(discCenter_.x, u_.x, v_.x);
-        origin[1][h] = component(discCenter_.y, u_.y, v_.y);
-        origin[2][h] = component(discCenter_.z, u_.z, v_.z);
-    }
-    ox = Floats16::join(origin[0][0], origin[0][1]);
-    oy = Floats16::join(origin[1][0], origin[1][1]);
-    oz = Floats16::join(origin[2][0], origin[2][1]);
-}
-#endif
 
 }  // namespace facetlight

@@ -29,11 +29,13 @@ class LightModel {
     // Collimated: the one direction every photon travels in.
     bool collimated() const { return kind_ == LightModelKind::Collimated; }
     Vec3 direction() const { return dir_; }
-#if FACETLIGHT_PACKETS
-    // Collimated only: sample() for sixteen streams at once (their Rng::state()s, advanced as sample()
-    // advances them), each lane's origin rounded to float as Vec3f does; every direction is direction().
-    void sampleBeam(uint64_t* state, Floats16& ox, Floats16& oy, Floats16& oz) const;
-#endif
+    // Collimated: the disc the photons start on; sample() draws a uniform point q of the unit disc and
+    // starts at center + u * (radius * q.x) + v * (radius * q.y), in that order of operations.
+    struct Disc {
+        Vec3 center, u, v;
+        double radius;
+    };
+    Disc disc() const { return {discCenter_, u_, v_, discRadius_}; }
 
   private:
     LightModelKind kind_;

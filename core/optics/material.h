@@ -7,8 +7,6 @@
 #include <string_view>
 #include <vector>
 
-#include "util/simd.h"
-
 namespace facetlight {
 
 class Material {
@@ -27,14 +25,16 @@ class Material {
     bool dispersive() const { return terms_ > 0; }
 
     static constexpr double kSodiumD = 589.3;
-#if FACETLIGHT_PACKETS
-    // index() of eight wavelengths at once, with the same bits.
-    Doubles8 index(Doubles8 wavelengthNm) const;
-#endif
+    // index() for any number type with the operators of double (lanes of a packet): the same bits per lane.
+    // Always inlined, so that lanes are computed with their SIMD target's instructions.
+    template <class D>
+    [[gnu::always_inline]] D indexOf(D wavelengthNm) const {
+        return sellmeier(wavelengthNm);
+    }
 
   private:
     template <class D>
-    D sellmeier(D wavelengthNm) const;
+    [[gnu::always_inline]] D sellmeier(D wavelengthNm) const;
 
     std::string name_;
     int terms_ = 0;  // Sellmeier terms; 0 means the constant index n0_
@@ -46,7 +46,7 @@ std::vector<std::string> materialNames();
 
 // n^2 - 1 = sum B L^2 / (L^2 - C^2), L in micrometres (docs/optics.md).
 template <class D>
-D Material::sellmeier(D wavelengthNm) const {
+inline D Material::sellmeier(D wavelengthNm) const {
     if (terms_ == 0) return D(n0_);
     using std::sqrt;
     const D l = wavelengthNm * D(1e-3), l2 = l * l;
@@ -54,11 +54,5 @@ D Material::sellmeier(D wavelengthNm) const {
     for (int i = 0; i < terms_; ++i) n2 = n2 + D(b_[i]) * l2 / (l2 - D(c2_[i]));
     return sqrt(n2);
 }
-
-#if FACETLIGHT_PACKETS
-inline Doubles8 Material::index(Doubles8 wavelengthNm) const {
-    return sellmeier(wavelengthNm);
-}
-#endif
 
 }  // namespace facetlight

@@ -1,29 +1,59 @@
-// The packet walk: sixteen photons inside a convex stone, one per AVX-512 lane, stepped together. A step is
-// the one-photon step() done lane-wise (the same operations in the same order, so the same bits), with
-// masks where step() branches: the reflect-or-refract draw no longer costs a mispredicted branch per
-// interaction, and the exit search tests one plane against sixteen rays at a time. Photons are started
-// sixteen at a time too where the light is one collimated beam at one index of refraction. A lane whose
-// photon is done takes the next started photon, so the lanes stay full until the block runs out.
+// The packet walk: photons inside a convex stone, one per SIMD lane (4 with SSE4, 8 with AVX2, 16 with
+// AVX-512), stepped together. A step is the one-photon step() done lane-wise (the same operations in the
+// same order, so the same bits), with masks where step() branches: the reflect-or-refract draw no longer
+// costs a mispredicted branch per interaction, and the exit search tests one plane against a packet of rays
+// at a time. Photons are started a packet at a time too where the light is one collimated beam. A lane whose
+// photon is done takes the next started photon, so the lanes stay full until the block runs out. Compiled
+// once per SIMD target; the CPU's best is picked once per block of photons.
+#include <algorithm>
+#include <bit>
+
 #include "trace/detail/photon_walker.h"
 
-#if FACETLIGHT_PACKETS
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "trace/photon_packet.cpp"
+#include "hwy/foreach_target.h"  // IWYU pragma: keep
 
-#include <array>
-#include <bit>
-#include <limits>
+#include "hwy/highway.h"
+#include "intersect/detail/convex_search-inl.h"
+#include "util/detail/lanes-inl.h"
 
+HWY_BEFORE_NAMESPACE();
 namespace facetlight {
+namespace HWY_NAMESPACE {
+#if HWY_TARGET != HWY_SCALAR
+namespace {
 
-constexpr int kLanes = 16;
+constexpr size_t kMaxLanes = HWY_LANES(float);
+using LaneBits = uint64_t;  // bit k: lane k
+static_assert(kMaxLanes <= 64, "lane masks are 64-bit");
+
+HWY_INLINE size_t laneCount() {
+    return hn::Lanes(FloatTag());
+}
+HWY_INLINE LaneBits bitsOf(FloatMask m) {
+    LaneBits bits = 0;
+    hn::StoreMaskBits(FloatTag(), m, reinterpret_cast<uint8_t*>(&bits));
+    return bits;
+}
+HWY_INLINE FloatMask maskOf(LaneBits bits) {
+    return hn::LoadMaskBits(FloatTag(), reinterpret_cast<const uint8_t*>(&bits));
+}
+
+// Calls f(lane) for each lane set in the mask.
+template <class F>
+HWY_INLINE void forEachLane(LaneBits bits, F&& f) {
+    for (; bits; bits &= bits - 1) f(std::countr_zero(bits));
+}
 
 // Photons inside the stone, one per lane, as a structure of arrays.
-struct alignas(64) PhotonWalker::Packet {
-    float px[kLanes]{}, py[kLanes]{}, pz[kLanes]{};
-    float dx[kLanes]{}, dy[kLanes]{}, dz[kLanes]{};
-    float n[kLanes]{};
-    uint64_t rng[kLanes]{};
-    uint32_t bounces[kLanes]{};
-    LaneMask live = 0;
+struct alignas(64) Packet {
+    float px[kMaxLanes]{}, py[kMaxLanes]{}, pz[kMaxLanes]{};
+    float dx[kMaxLanes]{}, dy[kMaxLanes]{}, dz[kMaxLanes]{};
+    float n[kMaxLanes]{};
+    uint64_t rng[kMaxLanes]{};
+    uint32_t bounces[kMaxLanes]{};
+    LaneBits live = 0;
 
     void put(int k, const Vec3f& p, const Vec3f& d, float index, uint64_t rngState) {
         px[k] = p.x, py[k] = p.y, pz[k] = p.z;
@@ -31,7 +61,7 @@ struct alignas(64) PhotonWalker::Packet {
         n[k] = index;
         rng[k] = rngState;
         bounces[k] = 0;
-        live |= LaneMask(1u << k);
+        live |= LaneBits(1) << k;
     }
     // Lane k takes the photon in lane j of another packet.
     void take(int k, const Packet& from, int j) {
@@ -40,51 +70,187 @@ struct alignas(64) PhotonWalker::Packet {
     }
 };
 
-namespace {
-
 // What one step found, per lane, for the tallies that follow it.
 struct alignas(64) StepResult {
-    float px[kLanes], py[kLanes], pz[kLanes];
-    float cosI[kLanes], cosT[kLanes];
-    uint32_t facet[kLanes];
+    float px[kMaxLanes], py[kMaxLanes], pz[kMaxLanes];
+    float cosI[kMaxLanes], cosT[kMaxLanes];
+    int32_t facet[kMaxLanes];
+
+    void store(Floats x, Floats y, Floats z, Floats cosIncidence, Floats cosRefracted, Facets f) {
+        x.store(px), y.store(py), z.store(pz);
+        cosIncidence.store(cosI), cosRefracted.store(cosT);
+        hn::StoreU(f, IndexTag(), facet);
+    }
+    Vec3f p(int k) const { return {px[k], py[k], pz[k]}; }
 };
 
-// Calls f(lane) for each lane set in the mask.
-template <class F>
-inline void forEachLane(LaneMask mask, F&& f) {
-    for (unsigned m = mask; m; m &= m - 1) f(std::countr_zero(m));
-}
-
 // std::clamp(v, 0, 1) lane-wise, NaN kept as it is.
-inline Floats16 clampUnit(Floats16 v) {
-    const Floats16 zero(0.0f), one(1.0f);
+HWY_INLINE Floats clampUnit(Floats v) {
+    const Floats zero(0.0f), one(1.0f);
     return select(v < zero, zero, select(one < v, one, v));
 }
 
 // The normal of each lane's facet.
-inline std::array<Floats16, 3> gatherNormals(const std::vector<Vec3f>& normal, __m512i facet) {
+struct Normals {
+    Floats x, y, z;
+};
+HWY_INLINE Normals gatherNormals(const std::vector<Vec3f>& normal, Facets facet) {
+    const IndexTag di;
     const float* x = &normal[0].x;
-    const __m512i at = _mm512_add_epi32(facet, _mm512_slli_epi32(facet, 1));  // 3 floats per normal
-    return {_mm512_i32gather_ps(at, x, 4), _mm512_i32gather_ps(at, x + 1, 4),
-            _mm512_i32gather_ps(at, x + 2, 4)};
+    const Facets at = hn::Mul(facet, hn::Set(di, 3));  // 3 floats per normal
+    return {hn::GatherIndex(FloatTag(), x, at), hn::GatherIndex(FloatTag(), x + 1, at),
+            hn::GatherIndex(FloatTag(), x + 2, at)};
 }
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+// LightModel::sample() for a collimated beam, lane-wise: the disc point drawn by rejection in each lane's
+// stream, the origin worked out in double and rounded to float as Vec3f does.
+HWY_INLINE void sampleBeam(const LightModel::Disc& disc, uint64_t* state, Floats& ox, Floats& oy,
+                           Floats& oz) {
+    const HalfTag dh;
+    const size_t half = hn::Lanes(StreamTag());
+    const Doubles one(1.0), two(2.0), zero(0.0), radius(disc.radius);
+    hn::Vec<HalfTag> origin[3][2];
+    for (size_t h = 0; h < 2; ++h) {
+        // unitDisc() lane-wise: each lane draws pairs until its own point falls inside the disc.
+        Streams s = Streams::load(state + h * half);
+        Doubles x = zero, y = zero;
+        for (auto pending = hn::FirstN(StreamTag(), half); !hn::AllFalse(StreamTag(), pending);) {
+            const Doubles cx = two * uniformDoubleOf(s, pending) - one;
+            const Doubles cy = two * uniformDoubleOf(s, pending) - one;
+            const Doubles r2 = cx * cx + cy * cy;
+            const auto inside = hn::RebindMask(
+                StreamTag(), hn::And(hn::RebindMask(DoubleTag(), pending), hn::And(r2 < one, zero < r2)));
+            x = select(hn::RebindMask(DoubleTag(), inside), cx, x);
+            y = select(hn::RebindMask(DoubleTag(), inside), cy, y);
+            pending = hn::AndNot(inside, pending);
+        }
+        s.store(state + h * half);
+        const Doubles sx = radius * x, sy = radius * y;
+        auto component = [&](double c, double u, double v) HWY_ATTR {
+            return hn::DemoteTo(dh, (Doubles(c) + Doubles(u) * sx + Doubles(v) * sy).v);
+        };
+        origin[0][h] = component(disc.center.x, disc.u.x, disc.v.x);
+        origin[1][h] = component(disc.center.y, disc.u.y, disc.v.y);
+        origin[2][h] = component(disc.center.z, disc.u.z, disc.v.z);
+    }
+    ox = hn::Combine(FloatTag(), origin[0][1], origin[0][0]);
+    oy = hn::Combine(FloatTag(), origin[1][1], origin[1][0]);
+    oz = hn::Combine(FloatTag(), origin[2][1], origin[2][0]);
+}
+
+using Packets = PhotonWalker::PacketScene;
+using Tally = PhotonWalker::Tally;
+
+// PhotonWalker::start() for photons [first, min(first + lanes, end)): tallies those that miss or reflect off
+// the stone and makes those that get in live lanes of `started`, which has none live before.
+void startPacket(const Packets& s, uint64_t first, uint64_t end, Tally& tally, Packet& started) {
+    const size_t count = std::min<uint64_t>(laneCount(), end - first);
+    if (!s.beam) {
+        int k = 0;
+        for (uint64_t i = first; i < first + count; ++i) {
+            PhotonWalker::Photon ph;
+            if (PhotonWalker::start(s.scene, s.convex, i, tally, ph))
+                started.put(k++, ph.p, ph.d, ph.n, ph.rng.state());
+        }
+        return;
+    }
+    // One collimated beam: start() lane-wise.
+    const FloatMask lanes = hn::FirstN(FloatTag(), count);
+    seedOf(s.seed, first, started.rng);
+    Floats ox, oy, oz;
+    sampleBeam(s.light.disc(), started.rng, ox, oy, oz);
+    Floats n(s.fixedIndex);
+    if (s.dispersive) {
+        const Floats wavelength = Floats(380.0f) + Floats(400.0f) * uniformOf(started.rng, lanes);
+        n = viaDoubles(wavelength, [&](Doubles w) HWY_ATTR { return s.material.indexOf(w); });
+    }
+    Floats t;
+    Facets facet;
+    const FloatMask hits = hn::And(lanes, EnterBeamPacket(*s.beam, ox, oy, oz, t, facet));
+    const Vec3f d(s.light.direction());
+    const Floats dx(d.x), dy(d.y), dz(d.z);
+    const Normals normal = gatherNormals(s.normal, facet);
+    const Floats cosI = clampUnit(-dot3(dx, dy, dz, normal.x, normal.y, normal.z)), eta = Floats(1.0f) / n;
+    const FresnelTerms<Floats> fr = fresnelTerms(cosI, eta);
+    const LaneBits hitBits = bitsOf(hits);
+    const LaneBits reflects = bitsOf(hn::And(hits, uniformOf(started.rng, hits) < fr.reflectance));
+
+    StepResult hit;
+    hit.store(ox + dx * t, oy + dy * t, oz + dz * t, cosI, fr.cosT, facet);
+    alignas(64) float index[kMaxLanes], etas[kMaxLanes];
+    n.store(index), eta.store(etas);
+    forEachLane(reflects, [&](int k) {
+        const uint32_t f = hit.facet[k];
+        tally.reflectedAtEntry(f, hit.p(k), PhotonWalker::reflectOff(d, s.normal[f], hit.cosI[k]));
+    });
+    forEachLane(hitBits & ~reflects, [&](int k) {
+        const uint32_t f = hit.facet[k];
+        tally.entered(f);
+        started.put(k, hit.p(k), PhotonWalker::refractIn(d, s.normal[f], etas[k], hit.cosI[k], hit.cosT[k]),
+                    index[k], started.rng[k]);
+    });
+}
+
+// PhotonWalker::step() for every live lane of the packet; the lanes whose photon is done are no longer live.
+void stepPacket(const Packets& s, Packet& lanes, Tally& tally) {
+    const Floats ox = Floats::load(lanes.px), oy = Floats::load(lanes.py), oz = Floats::load(lanes.pz);
+    const Floats dx = Floats::load(lanes.dx), dy = Floats::load(lanes.dy), dz = Floats::load(lanes.dz);
+    Floats t;
+    Facets facet;
+    LeavePacket(s.convex.planes(), ox, oy, oz, dx, dy, dz, t, facet);
+    const FloatMask inside = hn::And(maskOf(lanes.live), t < Floats(kInf));
+    const Floats px = ox + dx * t, py = oy + dy * t, pz = oz + dz * t;
+    const Normals normal = gatherNormals(s.normal, facet);
+    const Floats cosI = clampUnit(dot3(dx, dy, dz, normal.x, normal.y, normal.z));
+    const FresnelTerms<Floats> fr = fresnelTerms(cosI, Floats::load(lanes.n));
+    const FloatMask draw = hn::AndNot(fr.totalInternal, inside);
+    const LaneBits exits = bitsOf(hn::And(draw, uniformOf(lanes.rng, draw) >= fr.reflectance));
+    const LaneBits live = lanes.live, reflects = bitsOf(inside) & ~exits;
+
+    StepResult hit;
+    hit.store(px, py, pz, cosI, fr.cosT, facet);
+    forEachLane(live & ~bitsOf(inside), [&](int k) { tally.lost(lanes.bounces[k]); });
+    forEachLane(exits, [&](int k) {
+        const uint32_t f = hit.facet[k];
+        const Vec3f d{lanes.dx[k], lanes.dy[k], lanes.dz[k]};
+        tally.exited(f, hit.p(k),
+                     PhotonWalker::refractOut(d, s.normal[f], lanes.n[k], hit.cosI[k], hit.cosT[k]),
+                     lanes.bounces[k]);
+    });
+
+    // The reflected photons go on from the hit point; each counts a bounce.
+    const Floats twoCos = Floats(2.0f) * cosI;
+    (dx - normal.x * twoCos).store(lanes.dx), (dy - normal.y * twoCos).store(lanes.dy);
+    (dz - normal.z * twoCos).store(lanes.dz);
+    px.store(lanes.px), py.store(lanes.py), pz.store(lanes.pz);
+    LaneBits trapped = 0;
+    forEachLane(reflects, [&](int k) {
+        tally.internalReflection(hit.facet[k]);
+        if (++lanes.bounces[k] < s.maxBounces) return;
+        tally.trapped(lanes.bounces[k]);
+        trapped |= LaneBits(1) << k;
+    });
+    lanes.live = reflects & ~trapped;
+}
 
 }  // namespace
 
-void PhotonWalker::packets(const Scene& s, uint64_t begin, uint64_t end, Tally& tally) {
+// Photons [begin, end) of a convex stone, a packet at a time. Each photon takes exactly the steps walk()
+// takes, so the tally has the same bits.
+void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                 PhotonWalker::Tally& tally) {
+    const LaneBits all = laneCount() == 64 ? ~LaneBits(0) : (LaneBits(1) << laneCount()) - 1;
     Packet lanes, started;  // started: photons inside the stone, waiting for a lane
     uint64_t next = begin;
     for (;;) {
-        for (unsigned empty = LaneMask(~lanes.live); empty;) {
+        for (LaneBits empty = all & ~lanes.live; empty;) {
             if (!started.live) {
                 if (next >= end) break;
                 startPacket(s, next, end, tally, started);
-                next += kLanes;
+                next += laneCount();
                 continue;
             }
-            lanes.take(std::countr_zero(empty), started, std::countr_zero(unsigned(started.live)));
+            lanes.take(std::countr_zero(empty), started, std::countr_zero(started.live));
             started.live &= started.live - 1;
             empty &= empty - 1;
         }
@@ -92,99 +258,29 @@ void PhotonWalker::packets(const Scene& s, uint64_t begin, uint64_t end, Tally& 
         stepPacket(s, lanes, tally);
     }
 }
-
-void PhotonWalker::startPacket(const Scene& s, uint64_t first, uint64_t end, Tally& tally,
-                               Packet& started) {
-    const uint64_t count = std::min<uint64_t>(kLanes, end - first);
-    if (!s.beam_) {
-        int k = 0;
-        for (uint64_t i = first; i < first + count; ++i) {
-            Photon ph;
-            if (start(s, *s.convex_, i, tally, ph)) started.put(k++, ph.p, ph.d, ph.n, ph.rng.state());
-        }
-        return;
-    }
-    // One collimated beam: start() lane-wise.
-    const LaneMask lanes = count == kLanes ? LaneMask(0xffff) : LaneMask((1u << count) - 1);
-    seedOf(s.settings_.seed, first, started.rng);
-    Floats16 ox, oy, oz;
-    s.light_.sampleBeam(started.rng, ox, oy, oz);
-    Floats16 n(s.fixedIndex_);
-    if (s.dispersive()) {
-        const Floats16 wavelength = Floats16(380.0f) + Floats16(400.0f) * uniformOf(started.rng, lanes);
-        n = viaDoubles(wavelength, [&](Doubles8 w) { return s.material_.index(w); });
-    }
-    Floats16 t;
-    __m512i facet;
-    const LaneMask hits = lanes & s.beam_->enter(ox, oy, oz, t, facet);
-    const Vec3f d(s.light_.direction());
-    const Floats16 dx(d.x), dy(d.y), dz(d.z);
-    const auto [nx, ny, nz] = gatherNormals(s.normal_, facet);
-    const Floats16 cosI = clampUnit(-(dx * nx + dy * ny + dz * nz)), eta = Floats16(1.0f) / n;
-    const FresnelTerms<Floats16> fr = fresnelTerms(cosI, eta);
-    const LaneMask reflects = hits & (uniformOf(started.rng, hits) < fr.reflectance);
-
-    StepResult hit;
-    (ox + dx * t).store(hit.px), (oy + dy * t).store(hit.py), (oz + dz * t).store(hit.pz);
-    cosI.store(hit.cosI), fr.cosT.store(hit.cosT);
-    _mm512_store_si512(hit.facet, facet);
-    alignas(64) float index[kLanes], etas[kLanes];
-    n.store(index), eta.store(etas);
-    forEachLane(reflects, [&](int k) {
-        const uint32_t f = hit.facet[k];
-        tally.reflectedAtEntry(f, {hit.px[k], hit.py[k], hit.pz[k]},
-                               reflectOff(d, s.normal_[f], hit.cosI[k]));
-    });
-    forEachLane(hits & LaneMask(~reflects), [&](int k) {
-        const uint32_t f = hit.facet[k];
-        tally.entered(f);
-        started.put(k, {hit.px[k], hit.py[k], hit.pz[k]},
-                    refractIn(d, s.normal_[f], etas[k], hit.cosI[k], hit.cosT[k]), index[k], started.rng[k]);
-    });
+#else
+// Highway's one-lane fallback (x86 CPUs without SSE4): one photon at a time.
+void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                 PhotonWalker::Tally& tally) {
+    for (uint64_t i = begin; i < end; ++i) PhotonWalker::walk(s.scene, s.convex, i, tally);
 }
+#endif
 
-void PhotonWalker::stepPacket(const Scene& s, Packet& lanes, Tally& tally) {
-    const RayPacket ray{Floats16::load(lanes.px), Floats16::load(lanes.py), Floats16::load(lanes.pz),
-                        Floats16::load(lanes.dx), Floats16::load(lanes.dy), Floats16::load(lanes.dz)};
-    Floats16 t;
-    __m512i facet;
-    s.convex_->leave(ray, t, facet);
-    const LaneMask live = lanes.live, inside = live & (t < Floats16(kInf));
-    const Floats16 px = ray.ox + ray.dx * t, py = ray.oy + ray.dy * t, pz = ray.oz + ray.dz * t;
-    const auto [nx, ny, nz] = gatherNormals(s.normal_, facet);
-    const Floats16 cosI = clampUnit(ray.dx * nx + ray.dy * ny + ray.dz * nz);
-    const FresnelTerms<Floats16> fr = fresnelTerms(cosI, Floats16::load(lanes.n));
-    const LaneMask draw = inside & LaneMask(~fr.totalInternal);
-    const LaneMask exits = draw & (uniformOf(lanes.rng, draw) >= fr.reflectance);
-    const LaneMask reflects = inside & LaneMask(~exits);
+}  // namespace HWY_NAMESPACE
+}  // namespace facetlight
+HWY_AFTER_NAMESPACE();
 
-    StepResult hit;
-    px.store(hit.px), py.store(hit.py), pz.store(hit.pz);
-    cosI.store(hit.cosI), fr.cosT.store(hit.cosT);
-    _mm512_store_si512(hit.facet, facet);
-    forEachLane(live & LaneMask(~inside), [&](int k) { tally.lost(lanes.bounces[k]); });
-    forEachLane(exits, [&](int k) {
-        const uint32_t f = hit.facet[k];
-        const Vec3f d{lanes.dx[k], lanes.dy[k], lanes.dz[k]};
-        tally.exited(f, {hit.px[k], hit.py[k], hit.pz[k]},
-                     refractOut(d, s.normal_[f], lanes.n[k], hit.cosI[k], hit.cosT[k]), lanes.bounces[k]);
-    });
+#if HWY_ONCE
+namespace facetlight {
 
-    // The reflected photons go on from the hit point; each counts a bounce.
-    const Floats16 twoCos = Floats16(2.0f) * cosI;
-    (ray.dx - nx * twoCos).store(lanes.dx), (ray.dy - ny * twoCos).store(lanes.dy);
-    (ray.dz - nz * twoCos).store(lanes.dz);
-    px.store(lanes.px), py.store(lanes.py), pz.store(lanes.pz);
-    __m512i bounces = _mm512_load_si512(lanes.bounces);
-    bounces = _mm512_mask_add_epi32(bounces, reflects, bounces, _mm512_set1_epi32(1));
-    _mm512_store_si512(lanes.bounces, bounces);
-    const LaneMask trapped =
-        _mm512_mask_cmpge_epu32_mask(reflects, bounces, _mm512_set1_epi32(s.settings_.maxBounces));
-    forEachLane(reflects, [&](int k) { tally.internalReflection(hit.facet[k]); });
-    forEachLane(trapped, [&](int k) { tally.trapped(lanes.bounces[k]); });
-    lanes.live = reflects & LaneMask(~trapped);
+HWY_EXPORT(walkPackets);
+
+void PhotonWalker::packets(const Scene& s, uint64_t begin, uint64_t end, Tally& tally) {
+    const PacketScene scene{
+        s,         *s.convex_,    s.beam_.get(),      s.light_,         s.material_,
+        s.normal_, s.fixedIndex_, s.dispersive(), s.settings_.seed, uint32_t(s.settings_.maxBounces)};
+    HWY_DYNAMIC_DISPATCH(walkPackets)(scene, begin, end, tally);
 }
 
 }  // namespace facetlight
-
 #endif

@@ -16,6 +16,7 @@
 #include <httplib.h>
 
 #include "service.h"
+#include "util/simd_target.h"
 
 namespace facetlight::server {
 namespace {
@@ -136,6 +137,7 @@ TEST_F(ServiceTest, HealthAndOpenApiDescribeEveryRoute) {
     ASSERT_TRUE(h);
     EXPECT_EQ(h->status, 200);
     EXPECT_EQ(json::parse(h->body)["status"], "ok");
+    EXPECT_EQ(json::parse(h->body)["simd"], simdTarget());
 
     auto r = client_->Get("/api/openapi.json");
     ASSERT_TRUE(r);

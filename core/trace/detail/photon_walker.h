@@ -1,6 +1,6 @@
 #pragma once
 // Inside the tracer (not for use outside core/): the walk of photons through a stone, shared by the
-// per-photon path, the interleaved walk and the packet walk of photon_packet.cpp.
+// per-photon path and the packet walk of photon_packet.cpp.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -10,16 +10,15 @@
 #include "optics/fresnel.h"
 #include "trace/photon_tracer.h"
 #include "util/random.h"
-#include "util/simd.h"
 
 namespace facetlight {
 
 // The walk of one photon, written once and specialised by intersector (no virtual call per ray) and by what
 // is recorded (a tally for statistics, a path for the renderer).
 class PhotonWalker {
+  public:
     struct Tally;
 
-  public:
     // A photon inside the stone, between two interactions.
     struct Photon {
         Rng rng{0, 0};
@@ -122,55 +121,28 @@ class PhotonWalker {
         }
     }
 
-    // Photons [begin, end) with a few in flight at once, where packets are not built (no AVX-512): their
-    // interactions are independent chains of dependent operations, which the core overlaps. Each photon
-    // takes exactly the steps walk() takes.
-    template <class Intersector>
-    static void interleave(const Scene& s, const Intersector& isect, uint64_t begin, uint64_t end,
-                           Tally& t) {
-        constexpr int kLanes = 4;
-        Photon lane[kLanes];
-        bool live[kLanes];
-        uint64_t next = begin;
-        auto refill = [&](int k) {
-            live[k] = false;
-            while (!live[k] && next < end) live[k] = start(s, isect, next++, t, lane[k]);
-        };
-        int active = 0;
-        for (int k = 0; k < kLanes; ++k) {
-            refill(k);
-            active += live[k];
-        }
-        while (active > 0) {
-            for (int k = 0; k < kLanes; ++k) {
-                if (!live[k] || step(s, isect, t, lane[k])) continue;
-                refill(k);
-                active -= !live[k];
-            }
-        }
-    }
-
-#if FACETLIGHT_PACKETS
-    // Photons [begin, end) of a convex stone sixteen at a time, one per SIMD lane (photon_packet.cpp).
-    // Each photon takes exactly the steps walk() takes, so the tally has the same bits.
+    // What the packet walk (photon_packet.cpp, compiled once per SIMD target) reads of the scene.
+    struct PacketScene {
+        const Scene& scene;
+        const ConvexIntersector& convex;
+        const ConvexBeamEntry* beam;  // null unless the light is one collimated beam
+        const LightModel& light;
+        const Material& material;
+        const std::vector<Vec3f>& normal;
+        float fixedIndex;
+        bool dispersive;
+        uint64_t seed;
+        uint32_t maxBounces;
+    };
+    // Photons [begin, end) of a convex stone a packet at a time, one per SIMD lane, on the CPU's best
+    // target. Each photon takes exactly the steps walk() takes, so the tally has the same bits.
     static void packets(const Scene& s, uint64_t begin, uint64_t end, Tally& t);
-    struct Packet;
-    // start() for photons [first, min(first + 16, end)): tallies those that miss or reflect off the stone
-    // and makes those that get in live lanes of `started`, which has none live before.
-    static void startPacket(const Scene& s, uint64_t first, uint64_t end, Tally& t, Packet& started);
-    // step() for every live lane of the packet; the lanes whose photon is done are no longer live.
-    static void stepPacket(const Scene& s, Packet& lanes, Tally& t);
-#endif
 
     // Photons [begin, end) into one thread's tally.
     static void tally(const Scene& s, uint64_t begin, uint64_t end, FacetStats& stats) {
         Tally t{s, stats};
         if (s.convex_) {
-#if FACETLIGHT_PACKETS
             packets(s, begin, end, t);
-#else
-            interleave(s, *s.convex_, begin, end, t);
-#endif
         } else {
             for (uint64_t i = begin; i < end; ++i) walk(s, *s.embree_, i, t);
         }
@@ -187,7 +159,6 @@ class PhotonWalker {
         }
     }
 
-  private:
     struct Tally {
         const Scene& s;
         FacetStats& st;
@@ -233,6 +204,8 @@ class PhotonWalker {
         }
     };
     static_assert(kWeightScale == double(1ULL << 30), "weightSquareSum's shift assumes a 2^30 scale");
+
+  private:
 
     struct Recorder {
         PhotonPath& out;
