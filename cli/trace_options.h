@@ -45,8 +45,10 @@ inline uint64_t parseCount(const std::string& text, const std::string& flag, uin
     return uint64_t(v);
 }
 
-inline void addTraceOptions(CLI::App* cmd, TraceOptions& o) {
-    cmd->add_option("--mesh", o.mesh, "OBJ, STL or GemCad .asc file, or a shipped shape name")->required();
+// `withMesh` false: the subcommand makes its own stones (a sweep) and takes no --mesh.
+inline void addTraceOptions(CLI::App* cmd, TraceOptions& o, bool withMesh = true) {
+    if (withMesh)
+        cmd->add_option("--mesh", o.mesh, "OBJ, STL or GemCad .asc file, or a shipped shape name")->required();
     cmd->add_option("--photons", o.photons, "Photons to shoot, e.g. 1e6 or 1000000")->capture_default_str();
     cmd->add_option("--threads", o.threads, "Worker threads")->capture_default_str();
     cmd->add_option("--seed", o.seed, "Random seed; the same seed gives the same results")
