@@ -78,10 +78,12 @@ SweepAxis parseSweepAxis(const std::string& text) {
         }
     } else if (range.find(':') != std::string::npos) {
         const std::vector<std::string> parts = splitText(range, ':');
-        if (parts.size() != 3) throw Error("sweep axis " + axis.name + ": a range is LO:HI:STEP, got '" + range + "'");
+        if (parts.size() != 3)
+            throw Error("sweep axis " + axis.name + ": a range is LO:HI:STEP, got '" + range + "'");
         const double lo = axisNumber(axis.name, parts[0]), hi = axisNumber(axis.name, parts[1]),
                      step = axisNumber(axis.name, parts[2]);
-        if (!(step > 0)) throw Error("sweep axis " + axis.name + ": the step must be above 0, got " + parts[2]);
+        if (!(step > 0))
+            throw Error("sweep axis " + axis.name + ": the step must be above 0, got " + parts[2]);
         if (hi < lo)
             throw Error("sweep axis " + axis.name + ": the range " + range + " is inverted (HI below LO)");
         const double steps = std::floor((hi - lo) / step + 1e-9);
@@ -95,7 +97,8 @@ SweepAxis parseSweepAxis(const std::string& text) {
             axis.values.push_back(axisNumber(axis.name, token));
     }
     if (axis.size() > kMaxSweepPoints)
-        throw Error("sweep axis " + axis.name + " has more than " + std::to_string(kMaxSweepPoints) + " values");
+        throw Error("sweep axis " + axis.name + " has more than " + std::to_string(kMaxSweepPoints) +
+                    " values");
     return axis;
 }
 
@@ -152,9 +155,10 @@ void SweepSpec::validate() const {
 }
 
 const std::vector<std::string>& sweepFigureNames() {
-    static const std::vector<std::string> names{
-        "crown_return", "crown_return_with_reflection", "weighted_return", "cone_return_30",
-        "cone_return_45", "cone_return_60", "leakage"};
+    static const std::vector<std::string> names{"crown_return",    "crown_return_with_reflection",
+                                                "weighted_return", "cone_return_30",
+                                                "cone_return_45",  "cone_return_60",
+                                                "leakage"};
     return names;
 }
 
@@ -273,7 +277,8 @@ nlohmann::json sweepToJson(const SweepResult& result) {
         nlohmann::json values = nlohmann::json::object();
         for (size_t a = 0; a < spec.axes.size(); ++a) {
             const SweepAxis& axis = spec.axes[a];
-            values[axis.name] = axis.numeric() ? nlohmann::json(axis.values[p.at[a]]) : nlohmann::json(axis.choices[p.at[a]]);
+            values[axis.name] =
+                axis.numeric() ? nlohmann::json(axis.values[p.at[a]]) : nlohmann::json(axis.choices[p.at[a]]);
         }
         nlohmann::json point = {{"at", p.at}, {"values", values}};
         if (p.ok()) {

@@ -48,8 +48,8 @@ struct SweepSpec {
     std::vector<SweepAxis> axes;
     TraceSettings trace;  // every point's settings; `threads` is the whole sweep's worker count
 
-    // Throws Error naming the fault: an unknown shape, parameter or axis, an axis given twice, a value outside
-    // its parameter's range, no axis or more than kMaxSweepAxes, more than kMaxSweepPoints points.
+    // Throws Error naming the fault: an unknown shape, parameter or axis, an axis given twice, a value
+    // outside its parameter's range, no axis or more than kMaxSweepAxes, more than kMaxSweepPoints points.
     void validate() const;
     size_t pointCount() const;
     // The unit of an axis: the parameter's ("deg", "%", ""), "deg" for tilt and head shadow.
@@ -67,10 +67,10 @@ struct SweepPoint {
     std::vector<size_t> at;  // index along each axis
     CutValues cut;           // every parameter of the shape
     TraceSettings trace;
-    std::string error;       // why this point could not be traced (proportions that cannot make the stone)
+    std::string error;  // why this point could not be traced (proportions that cannot make the stone)
     FacetStats stats;
     nlohmann::json proportions;  // the stone's trade proportions, as the statistics' `mesh.proportions`
-    nlohmann::json totals;   // the statistics' `totals`: counts, figures and their standard errors
+    nlohmann::json totals;       // the statistics' `totals`: counts, figures and their standard errors
 
     bool ok() const { return error.empty(); }
     double figure(const std::string& name) const { return totals.at(name).get<double>(); }

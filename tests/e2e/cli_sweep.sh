@@ -10,6 +10,7 @@ trap 'rm -rf "$dir"' EXIT
   --out "$dir/map" >/dev/null
 test "$(wc -l <"$dir/map/sweep.csv")" -eq 9
 grep -q '"weighted_return_stderr"' "$dir/map/sweep.json"
+test -s "$dir/map/map_weighted_return.png"
 
 fails() {  # fails EXPECTED-MESSAGE ARGS...: the tool must exit non-zero and say EXPECTED-MESSAGE
   local expected=$1

@@ -85,7 +85,8 @@ TEST(Sweep, PointEqualsSingleTrace) {
     EXPECT_EQ(p.cut.at("crown"), 33);
     EXPECT_EQ(p.trace.light.tiltDeg, 10);
 
-    const Stone stone = Stone::build(makeCut("round_brilliant", {{"pavilion", 41.25}, {"crown", 33}}), "alone");
+    const Stone stone =
+        Stone::build(makeCut("round_brilliant", {{"pavilion", 41.25}, {"crown", 33}}), "alone");
     TraceSettings settings = spec.trace;
     settings.light.tiltDeg = 10;
     settings.threads = 1;
