@@ -1,6 +1,7 @@
 #pragma once
 // A sweep's pictures: its figures against one varied quantity, or a figure's map over two with the best point
 // and the shipped reference designs (GIA reference, Tolkowsky) marked.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
