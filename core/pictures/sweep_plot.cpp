@@ -196,7 +196,10 @@ Image contourMap(const PlotAxis& x, const PlotAxis& y, const PlotSeries& grid, c
     if (grid.value.size() != x.size() * y.size() || grid.valid.size() != grid.value.size())
         throw Error("contour map: the grid does not match its axes");
     Image image(900, 720, kWhite);
-    const Frame f{110, 80, 740, 590, axisRange(x), axisRange(y)};
+    // Room on the left for the longest category name.
+    double names = 0;
+    for (const std::string& c : y.choices) names = std::max(names, textWidth(c, 2));
+    const Frame f{std::max(110.0, names + 24), 80, 740, 590, axisRange(x), axisRange(y)};
     Range vr;
     for (size_t k = 0; k < grid.value.size(); ++k)
         if (grid.valid[k]) vr.add(grid.value[k]);
@@ -235,8 +238,10 @@ Image contourMap(const PlotAxis& x, const PlotAxis& y, const PlotSeries& grid, c
                 const Point2 dot[4] = {{cx - 1.2, cy}, {cx, cy - 1.2}, {cx + 1.2, cy}, {cx, cy + 1.2}};
                 fillPolygon(image, dot, kInk, 0.35f);
             }
+    bool references = false;
     for (const PlotMarker& m : markers) {
         if (m.x < f.x.lo || m.x > f.x.hi || m.y < f.y.lo || m.y > f.y.hi) continue;
+        references = references || !m.best;
         const double cx = f.px(m.x), cy = f.py(m.y);
         drawMarker(image, cx, cy, m.best);
         const double w = textWidth(m.label, 1.8);
@@ -270,8 +275,8 @@ Image contourMap(const PlotAxis& x, const PlotAxis& y, const PlotSeries& grid, c
              1.8, kInk);
     const bool gaps = std::find(grid.valid.begin(), grid.valid.end(), false) != grid.valid.end();
     drawText(image, f.left, f.bottom + 96,
-             std::string("star: highest point; rings: reference designs; dots: points traced") +
-                 (gaps ? "; grey: no stone" : ""),
+             std::string("star: highest point") + (references ? "; rings: reference designs" : "") +
+                 "; dots: points traced" + (gaps ? "; grey: no stone" : ""),
              1.8, kInk);
     return image;
 }
