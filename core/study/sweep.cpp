@@ -222,7 +222,8 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control,
     if (control.cancelled()) throw Canceled();
 
     // Several points at once; the threads left over trace within each (a trace's bits do not depend on them).
-    control.startPhase(RunPhase::Tracing, result.points.size());
+    // Progress counts photons, so that a cancel stops a point within a block of them.
+    control.startPhase(RunPhase::Tracing, result.points.size() * spec.trace.photons);
     const BlockLoop loop{0, result.points.size(), 1, threads};
     const int inner = std::max(1, threads / loop.workers());
     const bool finished = parallelForBlocks(loop, &control, [&](int, uint64_t first, uint64_t last) {
@@ -235,7 +236,8 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control,
                     TraceSettings settings = p.trace;
                     settings.threads = inner;
                     const Scene scene(*stone, settings);
-                    TraceResult traced = trace(scene);
+                    TraceResult traced = trace(scene, &control);
+                    if (traced.cancelled) return uint64_t(0);
                     nlohmann::json stats = statsToJson(traced.stats, *stone, p.trace, traced.timing);
                     p.totals = std::move(stats["totals"]);
                     p.proportions = std::move(stats["mesh"]["proportions"]);
@@ -244,9 +246,10 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control,
                     p.error = e.what();
                 }
             }
+            if (!p.ok()) control.advance(p.trace.photons);
             if (onPoint) onPoint(p);
         }
-        return last - first;
+        return uint64_t(0);
     });
     if (!finished || control.cancelled()) throw Canceled();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -87,9 +87,9 @@ struct SweepResult {
 };
 
 // Builds each design once, then traces the points on spec.trace.threads workers (several points at once, the
-// threads left over shared within each point), reporting to `control` in points (RunPhase::Tracing, then
-// Done). `onPoint`, when given, is called for each point as it finishes, from the worker that traced it.
-// Throws Canceled when control.cancel() stops it, Error on a bad spec.
+// threads left over shared within each point), reporting to `control` in photons over all points
+// (RunPhase::Tracing, then Done). `onPoint`, when given, is called for each point as it finishes, from the
+// worker that traced it. Throws Canceled when control.cancel() stops it, Error on a bad spec.
 SweepResult runSweep(const SweepSpec& spec, RunControl& control,
                      const std::function<void(const SweepPoint&)>& onPoint = {});
 

@@ -75,7 +75,10 @@ TEST(Sweep, PointEqualsSingleTrace) {
     spec.fixed = {{"crown", 33}};
     RunControl control;
     std::atomic<int> finished{0};
-    const SweepResult result = runSweep(spec, control, [&](const SweepPoint&) { ++finished; });
+    const SweepResult result = runSweep(spec, control, [&](const SweepPoint&) {
+        ++finished;
+        EXPECT_EQ(control.total(), 4 * spec.trace.photons);  // progress in photons over all points
+    });
     ASSERT_EQ(result.points.size(), 4u);
     EXPECT_EQ(finished, 4);
     EXPECT_EQ(control.phase(), RunPhase::Done);
@@ -153,4 +156,14 @@ TEST(Sweep, CancelStopsIt) {
     RunControl control;
     control.cancel();
     EXPECT_THROW(runSweep(pavilionSweep("36:46:1", 1000, 1), control), Canceled);
+    // Asked while it runs: no point after the one that asked is finished.
+    RunControl running;
+    int finished = 0;
+    EXPECT_THROW(runSweep(pavilionSweep("36:46:1", 1000, 1), running,
+                          [&](const SweepPoint&) {
+                              ++finished;
+                              running.cancel();
+                          }),
+                 Canceled);
+    EXPECT_EQ(finished, 1);
 }
