@@ -143,7 +143,7 @@ void runSweepCommand(const SweepOptions& o) {
 
 void addSweepCommand(CLI::App& app) {
     auto o = std::make_shared<SweepOptions>();
-    o->trace.photons = "2e5";
+    o->trace.defaults.photons = 200000;
     CLI::App* cmd = app.add_subcommand(
         "sweep",
         "Trace a shape of the cut library over a grid of its proportions; write sweep.json and sweep.csv");

@@ -23,6 +23,11 @@ bool isTraceAxis(const std::string& name) {
     return std::find(kTraceAxes.begin(), kTraceAxes.end(), name) != kTraceAxes.end();
 }
 
+// Throws Error naming the field when the settings' table refuses them.
+void checkTraceSettings(const TraceSettings& t) {
+    TraceSettings::fromJson(toJson(t));
+}
+
 bool isChoiceAxis(const std::string& name) {
     return name == "material" || name == "light";
 }
@@ -52,7 +57,9 @@ void applyAxis(const SweepAxis& axis, size_t i, CutValues& cut, TraceSettings& t
     } else if (axis.name == "material") {
         trace.material = axis.choices[i];
     } else if (axis.name == "light") {
-        trace.light.model = parseLightModel(axis.choices[i]);
+        const std::optional<LightModelKind> model = kLightModelNames.find(axis.choices[i]);
+        if (!model) throw Error("sweep axis light: no light model '" + axis.choices[i] + "'");
+        trace.light.model = *model;
     } else {
         cut[axis.name] = axis.values[i];
     }
@@ -119,7 +126,7 @@ std::string SweepSpec::unit(const SweepAxis& axis) const {
 void SweepSpec::validate() const {
     const CutShape& s = findCutShape(shape);
     completeCutValues(s, fixed);
-    trace.validate();
+    checkTraceSettings(trace);
     if (axes.empty() || axes.size() > kMaxSweepAxes)
         throw Error("a sweep varies 1 or 2 quantities, got " + std::to_string(axes.size()));
     std::set<std::string> seen;
@@ -145,7 +152,7 @@ void SweepSpec::validate() const {
             if (param) {
                 completeCutValues(s, cut);
             } else {
-                t.validate();
+                checkTraceSettings(t);
             }
         }
     }

@@ -40,7 +40,7 @@ PlotSeries figureSeries(const SweepResult& result, const std::string& figure) {
 
 std::string settingsLine(const SweepResult& result) {
     const TraceSettings& t = result.spec.trace;
-    return result.spec.shape + ", " + std::string(lightModelName(t.light.model)) + " light, " +
+    return result.spec.shape + ", " + std::string(kLightModelNames.name(t.light.model)) + " light, " +
            std::to_string(t.photons) + " photons a point";
 }
 
