@@ -9,5 +9,6 @@ void addCutCommand(CLI::App& app);
 void addTraceCommand(CLI::App& app);
 void addStudyCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
+void addSweepCommand(CLI::App& app);
 
 }  // namespace facetlight::cli

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     facetlight::cli::addTraceCommand(app);
     facetlight::cli::addStudyCommand(app);
     facetlight::cli::addRenderCommand(app);
+    facetlight::cli::addSweepCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

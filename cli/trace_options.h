@@ -13,11 +13,6 @@
 
 namespace facetlight::cli {
 
-struct TraceOptions {
-    std::string mesh;
-    SettingsFlags flags;
-};
-
 // The CLI's defaults: the core's, with a thread per core.
 inline TraceSettings defaultTraceSettings() {
     TraceSettings s;
@@ -25,14 +20,22 @@ inline TraceSettings defaultTraceSettings() {
     return s;
 }
 
-inline void addTraceOptions(CLI::App* cmd, TraceOptions& o) {
-    cmd->add_option("--mesh", o.mesh, "OBJ, STL or GemCad .asc file, or a shipped shape name")->required();
-    o.flags.add(cmd, traceSettingsSchema().fields(), toJson(defaultTraceSettings()));
+struct TraceOptions {
+    std::string mesh;
+    SettingsFlags flags;
+    TraceSettings defaults = defaultTraceSettings();  // what the flags not given take (a sweep: fewer photons)
+};
+
+// `withMesh` false: the subcommand makes its own stones (a sweep) and takes no --mesh.
+inline void addTraceOptions(CLI::App* cmd, TraceOptions& o, bool withMesh = true) {
+    if (withMesh)
+        cmd->add_option("--mesh", o.mesh, "OBJ, STL or GemCad .asc file, or a shipped shape name")->required();
+    o.flags.add(cmd, traceSettingsSchema().fields(), toJson(o.defaults));
 }
 
 // Throws Error naming the flag at fault.
 inline TraceSettings toTraceSettings(const TraceOptions& o) {
-    TraceSettings s = defaultTraceSettings();
+    TraceSettings s = o.defaults;
     o.flags.apply(traceSettingsSchema(), s);
     return s;
 }

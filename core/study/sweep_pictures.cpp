@@ -1,0 +1,107 @@
+#include "study/sweep_pictures.h"
+
+#include <cstdio>
+
+#include "pictures/sweep_plot.h"
+#include "util/error.h"
+
+namespace facetlight {
+namespace {
+
+std::string spaced(std::string name) {
+    for (char& c : name)
+        if (c == '_') c = ' ';
+    return name;
+}
+
+PlotAxis plotAxis(const SweepSpec& spec, const SweepAxis& axis) {
+    const std::string unit = spec.unit(axis);
+    return {spaced(axis.name) + (unit.empty() ? "" : " (" + unit + ")"), axis.values, axis.choices};
+}
+
+// The axes that take more than one value.
+std::vector<size_t> variedAxes(const SweepSpec& spec) {
+    std::vector<size_t> out;
+    for (size_t a = 0; a < spec.axes.size(); ++a)
+        if (spec.axes[a].size() > 1) out.push_back(a);
+    return out;
+}
+
+PlotSeries figureSeries(const SweepResult& result, const std::string& figure) {
+    checkSweepFigure(figure);
+    PlotSeries s{spaced(figure), {}, {}, {}};
+    for (const SweepPoint& p : result.points) {
+        s.valid.push_back(p.ok());
+        s.value.push_back(p.ok() ? p.figure(figure) : 0.0);
+        s.sigma.push_back(p.ok() ? p.stderrOf(figure) : 0.0);
+    }
+    return s;
+}
+
+std::string settingsLine(const SweepResult& result) {
+    const TraceSettings& t = result.spec.trace;
+    return result.spec.shape + ", " + std::string(kLightModelNames.name(t.light.model)) + " light, " +
+           std::to_string(t.photons) + " photons a point";
+}
+
+}  // namespace
+
+std::optional<size_t> highestPoint(const SweepResult& result, const std::string& figure) {
+    checkSweepFigure(figure);
+    std::optional<size_t> best;
+    for (size_t k = 0; k < result.points.size(); ++k) {
+        const SweepPoint& p = result.points[k];
+        if (p.ok() && (!best || p.figure(figure) > result.points[*best].figure(figure))) best = k;
+    }
+    return best;
+}
+
+Image sweepCurves(const SweepResult& result, const std::vector<std::string>& figures) {
+    const std::vector<size_t> varied = variedAxes(result.spec);
+    if (varied.size() > 1) throw Error("a sweep over two quantities is drawn as maps, not curves");
+    const SweepAxis& axis = result.spec.axes[varied.empty() ? 0 : varied[0]];
+    std::vector<PlotSeries> series;
+    for (const std::string& f : figures) series.push_back(figureSeries(result, f));
+    return seriesPlot(plotAxis(result.spec, axis), series, "share of the photons hitting the stone",
+                      settingsLine(result));
+}
+
+Image sweepMap(const SweepResult& result, const std::string& figure) {
+    const SweepSpec& spec = result.spec;
+    if (spec.axes.size() != 2) throw Error("a map needs a sweep over two quantities");
+    const SweepAxis &ax = spec.axes[0], &ay = spec.axes[1];
+    std::vector<PlotMarker> markers;
+    if (const std::optional<size_t> best = highestPoint(result, figure)) {
+        const SweepPoint& p = result.points[*best];
+        char value[64];
+        std::snprintf(value, sizeof value, "%.4f +- %.4f", p.figure(figure), p.stderrOf(figure));
+        markers.push_back({plotAxis(spec, ax).position(p.at[0]), plotAxis(spec, ay).position(p.at[1]),
+                           "highest " + std::string(value) + " at " + ax.name + " " + ax.label(p.at[0]) +
+                               ", " + ay.name + " " + ay.label(p.at[1]),
+                           true});
+    }
+    // The shipped reference designs, where both axes are parameters they have.
+    if (ax.numeric() && ay.numeric())
+        for (const auto& [shape, label] : {std::pair{"round_brilliant", "GIA reference"},
+                                           std::pair{"round_brilliant_tolkowsky", "Tolkowsky 1919"}}) {
+            const CutValues values = completeCutValues(findCutShape(shape), {});
+            if (values.count(ax.name) && values.count(ay.name))
+                markers.push_back({values.at(ax.name), values.at(ay.name), label, false});
+        }
+    return contourMap(plotAxis(spec, ax), plotAxis(spec, ay), figureSeries(result, figure), spaced(figure),
+                      markers, spaced(figure) + ", " + settingsLine(result));
+}
+
+std::vector<std::pair<std::string, Image>> sweepPictures(const SweepResult& result,
+                                                         const std::vector<std::string>& figures) {
+    for (const std::string& f : figures) checkSweepFigure(f);
+    std::vector<std::pair<std::string, Image>> out;
+    if (variedAxes(result.spec).size() < 2) {
+        out.emplace_back("curves.png", sweepCurves(result, figures));
+        return out;
+    }
+    for (const std::string& f : figures) out.emplace_back("map_" + f + ".png", sweepMap(result, f));
+    return out;
+}
+
+}  // namespace facetlight

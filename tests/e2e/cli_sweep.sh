@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# facetlight sweep end to end: a small grid writes sweep.json and sweep.csv with a row a point, and bad input
+# ends with a message naming the fault and a non-zero exit.
+set -euo pipefail
+tool=$1
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+
+"$tool" sweep round_brilliant --vary pavilion=39:42:1 --vary crown=33,35 --photons 2000 --threads 2 \
+  --out "$dir/map" >/dev/null
+test "$(wc -l <"$dir/map/sweep.csv")" -eq 9
+grep -q '"weighted_return_stderr"' "$dir/map/sweep.json"
+test -s "$dir/map/map_weighted_return.png"
+
+"$tool" sweep round_brilliant --vary pavilion=38:43:1 --photons 2000 --threads 2 --maximize weighted_return \
+  --constraint total_depth\<=61 --refine-rounds 1 --out "$dir/best" >/dev/null
+grep -q '"interval"' "$dir/best/best.json"
+grep -q '^# facetlight cut round_brilliant' "$dir/best/best.obj"
+test -s "$dir/best/curves.png"
+
+fails() {  # fails EXPECTED-MESSAGE ARGS...: the tool must exit non-zero and say EXPECTED-MESSAGE
+  local expected=$1
+  shift
+  if "$tool" sweep "$@" --photons 1000 --out "$dir/bad" 2>"$dir/err" >/dev/null; then
+    echo "accepted: $*" >&2
+    exit 1
+  fi
+  grep -q "$expected" "$dir/err" || { echo "for '$*' expected '$expected', got: $(cat "$dir/err")" >&2; exit 1; }
+}
+fails "unknown shape" round_brillant --vary pavilion=37:45:1
+fails "neither a parameter" round_brilliant --vary pavillion=37:45:1
+fails "inverted" round_brilliant --vary pavilion=45:37:1
+fails "must be above 0" round_brilliant --vary pavilion=37:45:0
+fails "at most 10000" round_brilliant --vary pavilion=30:59:0.01 --vary crown=10:59:0.01
+fails "say what to vary" round_brilliant
+fails "has no parameter" round_brilliant --vary pavilion=40,41 --set tabel=55
+fails "no quantity 'depth'" round_brilliant --vary pavilion=40,41 --maximize weighted_return --constraint depth\<=62
+fails "unknown figure" round_brilliant --vary pavilion=40,41 --maximize sparkle
+echo "cli sweep: ok"

@@ -1,0 +1,80 @@
+#include "study/sweep_pictures.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <tuple>
+
+#include "util/error.h"
+
+using namespace facetlight;
+
+namespace {
+
+SweepResult smallSweep(std::vector<std::string> axes) {
+    SweepSpec spec;
+    spec.shape = "round_brilliant";
+    for (const std::string& a : axes) spec.axes.push_back(parseSweepAxis(a));
+    spec.trace.photons = 3000;
+    spec.trace.threads = 2;
+    RunControl control;
+    return runSweep(spec, control);
+}
+
+bool dark(const Rgb& c) {
+    return c.r < 0.45f && c.g < 0.45f && c.b < 0.45f;
+}
+
+// What a picture with a plot in it has and a blank or frameless one lacks: many colours, and long dark lines
+// (the frame) across at least `lines` rows and columns, with text (tick labels) under the lowest.
+void expectPlotWithAxes(const Image& image, size_t minColours) {
+    std::set<std::tuple<int, int, int>> colours;
+    std::vector<int> darkInRow(image.height()), darkInColumn(image.width());
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const Rgb& c = image.at(x, y);
+            colours.insert({int(c.r * 255), int(c.g * 255), int(c.b * 255)});
+            if (dark(c)) ++darkInRow[y], ++darkInColumn[x];
+        }
+    EXPECT_GE(colours.size(), minColours);
+    std::vector<int> frameRows, frameColumns;
+    for (int y = 0; y < image.height(); ++y)
+        if (darkInRow[y] > image.width() / 2) frameRows.push_back(y);
+    for (int x = 0; x < image.width(); ++x)
+        if (darkInColumn[x] > image.height() / 2) frameColumns.push_back(x);
+    ASSERT_GE(frameRows.size(), 2u);  // top and bottom of the frame
+    EXPECT_GE(frameColumns.size(), 2u);
+    int labelInk = 0;  // tick labels and the axis label under the frame
+    for (int y = frameRows.back() + 8; y < std::min(image.height(), frameRows.back() + 50); ++y)
+        labelInk += darkInRow[y];
+    EXPECT_GT(labelInk, 200);
+}
+
+}  // namespace
+
+TEST(SweepPictures, MapIsFilledAndCarriesAxesAndScale) {
+    const SweepResult result = smallSweep({"pavilion=39:42:1", "crown=32:36:2"});
+    const auto pictures = sweepPictures(result, {"weighted_return"});
+    ASSERT_EQ(pictures.size(), 1u);
+    EXPECT_EQ(pictures[0].first, "map_weighted_return.png");
+    const Image& map = pictures[0].second;
+    expectPlotWithAxes(map, 12);
+    // The contour bands fill the frame: most of its middle row is neither white nor grey.
+    int coloured = 0;
+    const int y = map.height() / 2;
+    for (int x = 0; x < map.width(); ++x) {
+        const Rgb& c = map.at(x, y);
+        coloured += std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) > 0.2f;
+    }
+    EXPECT_GT(coloured, map.width() / 2);
+    EXPECT_EQ(*highestPoint(result, "weighted_return") < result.points.size(), true);
+}
+
+TEST(SweepPictures, CurvesCarryEachFigureAndAxes) {
+    const SweepResult result = smallSweep({"pavilion=38:43:0.5"});
+    const auto pictures = sweepPictures(result, {"weighted_return", "leakage"});
+    ASSERT_EQ(pictures.size(), 1u);
+    EXPECT_EQ(pictures[0].first, "curves.png");
+    expectPlotWithAxes(pictures[0].second, 8);
+    EXPECT_THROW(sweepPictures(result, {"sparkle"}), Error);
+}

@@ -1,0 +1,169 @@
+#include "study/sweep.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+
+#include "intersect/scene.h"
+#include "study/study.h"
+#include "trace/photon_tracer.h"
+#include "util/error.h"
+
+using namespace facetlight;
+
+namespace {
+
+SweepSpec pavilionSweep(const std::string& range, uint64_t photons, int threads) {
+    SweepSpec spec;
+    spec.shape = "round_brilliant";
+    spec.axes = {parseSweepAxis("pavilion=" + range)};
+    spec.trace.photons = photons;
+    spec.trace.threads = threads;
+    return spec;
+}
+
+nlohmann::json withoutTiming(const SweepResult& result) {
+    nlohmann::json j = sweepToJson(result);
+    j.erase("timing");
+    j["settings"].erase("threads");
+    return j;
+}
+
+}  // namespace
+
+TEST(Sweep, ParsesRangesAndLists) {
+    const SweepAxis range = parseSweepAxis("pavilion=37:38:0.1");
+    ASSERT_EQ(range.values.size(), 11u);
+    EXPECT_EQ(range.values[3], 37.3);  // the number a user typing 37.3 gets
+    EXPECT_EQ(range.values.back(), 38.0);
+    EXPECT_EQ(parseSweepAxis("crown=30,32.5").values, (std::vector<double>{30, 32.5}));
+    EXPECT_EQ(parseSweepAxis("material=diamond,cubic_zirconia").choices,
+              (std::vector<std::string>{"diamond", "cubic_zirconia"}));
+}
+
+TEST(Sweep, RefusesBadAxes) {
+    EXPECT_THROW(parseSweepAxis("pavilion"), Error);
+    EXPECT_THROW(parseSweepAxis("pavilion=45:37:1"), Error);  // inverted
+    EXPECT_THROW(parseSweepAxis("pavilion=37:45:0"), Error);
+    EXPECT_THROW(parseSweepAxis("pavilion=37:45"), Error);
+    EXPECT_THROW(parseSweepAxis("pavilion=37,,45"), Error);
+    EXPECT_THROW(parseSweepAxis("pavilion=a:45:1"), Error);
+    EXPECT_THROW(parseSweepAxis("pavilion=0:1:1e-6"), Error);  // too many values
+
+    SweepSpec spec = pavilionSweep("37:45:1", 1000, 1);
+    EXPECT_NO_THROW(spec.validate());
+    spec.axes = {parseSweepAxis("pavillion=37:45:1")};
+    EXPECT_THROW(spec.validate(), Error);  // not a parameter
+    spec.axes = {parseSweepAxis("pavilion=10:45:1")};
+    EXPECT_THROW(spec.validate(), Error);  // below the parameter's range
+    spec.axes = {parseSweepAxis("pavilion=37:45:1"), parseSweepAxis("pavilion=38,39")};
+    EXPECT_THROW(spec.validate(), Error);  // twice
+    spec.axes = {parseSweepAxis("pavilion=30:59:0.01"), parseSweepAxis("crown=10:59:0.01")};
+    EXPECT_THROW(spec.validate(), Error);  // too many points
+    spec.axes = {parseSweepAxis("material=diamond,unobtainium")};
+    EXPECT_THROW(spec.validate(), Error);
+    spec.shape = "round_brillant";
+    EXPECT_THROW(spec.validate(), Error);
+}
+
+// A point of a sweep is an ordinary trace: a design traced alone with the point's settings gives the same
+// tallies, bit for bit, whether its stone is shared with other points (the tilt axis) or not.
+TEST(Sweep, PointEqualsSingleTrace) {
+    SweepSpec spec = pavilionSweep("39.5,41.25", 20000, 2);
+    spec.axes.push_back(parseSweepAxis("tilt=0,10"));
+    spec.fixed = {{"crown", 33}};
+    RunControl control;
+    std::atomic<int> finished{0};
+    const SweepResult result = runSweep(spec, control, [&](const SweepPoint&) {
+        ++finished;
+        EXPECT_EQ(control.total(), 4 * spec.trace.photons);  // progress in photons over all points
+    });
+    ASSERT_EQ(result.points.size(), 4u);
+    EXPECT_EQ(finished, 4);
+    EXPECT_EQ(control.phase(), RunPhase::Done);
+    const SweepPoint& p = result.points[3];
+    ASSERT_TRUE(p.ok()) << p.error;
+    EXPECT_EQ(p.cut.at("pavilion"), 41.25);
+    EXPECT_EQ(p.cut.at("crown"), 33);
+    EXPECT_EQ(p.trace.light.tiltDeg, 10);
+
+    const Stone stone =
+        Stone::build(makeCut("round_brilliant", {{"pavilion", 41.25}, {"crown", 33}}), "alone");
+    TraceSettings settings = spec.trace;
+    settings.light.tiltDeg = 10;
+    settings.threads = 1;
+    const Scene scene(stone, settings);
+    const TraceResult alone = trace(scene);
+    EXPECT_TRUE(alone.stats == p.stats);
+    EXPECT_EQ(statsToJson(alone.stats, stone, settings, alone.timing)["totals"], p.totals);
+    EXPECT_FALSE(result.points[2].stats == p.stats);  // the tilt changes the answer
+}
+
+// Under light straight down the weighted return peaks inside the usual pavilion angles and falls on both
+// sides: toward the shallow fish-eye, where light leaks through the pavilion, and toward the deep nail-head
+// (docs/optics.md).
+TEST(Sweep, PavilionSweepPeaksBetweenFishEyeAndNailHead) {
+    RunControl control;
+    const SweepResult result = runSweep(pavilionSweep("36:46:1", 40000, 2), control);
+    std::vector<double> w;
+    for (const SweepPoint& p : result.points) {
+        ASSERT_TRUE(p.ok()) << p.error;
+        w.push_back(p.figure("weighted_return"));
+    }
+    const size_t peak = size_t(std::max_element(w.begin(), w.end()) - w.begin());
+    const double peakPavilion = result.spec.axes[0].values[peak];
+    EXPECT_GE(peakPavilion, 38);
+    EXPECT_LE(peakPavilion, 43);
+    const double sigma = result.points[peak].stderrOf("weighted_return");
+    EXPECT_GT(w[peak] - w.front(), 5 * sigma);  // fish-eye side
+    EXPECT_GT(w[peak] - w.back(), 5 * sigma);   // nail-head side
+}
+
+TEST(Sweep, SameBitsAtAnyThreadCount) {
+    SweepSpec spec = pavilionSweep("39:42:1.5", 10000, 1);
+    spec.axes.push_back(parseSweepAxis("material=diamond,cubic_zirconia"));
+    RunControl one, two, five;
+    const SweepResult a = runSweep(spec, one);
+    spec.trace.threads = 2;
+    const SweepResult b = runSweep(spec, two);
+    spec.trace.threads = 5;  // fewer points than threads: the rest trace within points
+    spec.axes.pop_back();
+    const SweepResult c = runSweep(spec, five);
+    EXPECT_EQ(withoutTiming(a), withoutTiming(b));
+    EXPECT_EQ(sweepCsv(a), sweepCsv(b));
+    for (size_t k = 0; k < c.points.size(); ++k) EXPECT_TRUE(c.points[k].stats == a.points[2 * k].stats);
+}
+
+TEST(Sweep, JsonAndCsvCarryEveryPointWithErrors) {
+    SweepSpec spec = pavilionSweep("40,41", 5000, 1);
+    RunControl control;
+    const SweepResult result = runSweep(spec, control);
+    const nlohmann::json j = sweepToJson(result);
+    EXPECT_EQ(j["axes"][0]["unit"], "deg");
+    EXPECT_EQ(j["points"].size(), 2u);
+    EXPECT_EQ(j["points"][1]["values"]["pavilion"], 41.0);
+    EXPECT_GT(j["points"][1]["totals"]["weighted_return_stderr"].get<double>(), 0);
+    EXPECT_FALSE(j["fixed"].contains("pavilion"));
+    EXPECT_EQ(j["fixed"]["crown"], 34.0);
+    const std::string csv = sweepCsv(result);
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
+    EXPECT_EQ(csv.rfind("pavilion,crown_height_pct,", 0), 0u);
+    EXPECT_NE(csv.find("weighted_return_stderr"), std::string::npos);
+}
+
+TEST(Sweep, CancelStopsIt) {
+    RunControl control;
+    control.cancel();
+    EXPECT_THROW(runSweep(pavilionSweep("36:46:1", 1000, 1), control), Canceled);
+    // Asked while it runs: no point after the one that asked is finished.
+    RunControl running;
+    int finished = 0;
+    EXPECT_THROW(runSweep(pavilionSweep("36:46:1", 1000, 1), running,
+                          [&](const SweepPoint&) {
+                              ++finished;
+                              running.cancel();
+                          }),
+                 Canceled);
+    EXPECT_EQ(finished, 1);
+}
