@@ -23,6 +23,8 @@ struct RenderOptions {
     RenderSettings render;
     std::string mapPhotons = std::to_string(RenderSettings{}.mapPhotons);
     std::string out = ".";
+    bool aset = false;
+    AsetSettings asetSettings;
 };
 
 void run(RenderOptions& o) {
@@ -31,6 +33,10 @@ void run(RenderOptions& o) {
     o.render.mapPhotons = parseCount(o.mapPhotons, "--map-photons", 1000, kMaxPhotons);
     o.render.validate();
     settings.render = o.render;
+    if (o.aset) {
+        o.asetSettings.validate();
+        settings.aset = o.asetSettings;
+    }
     const fs::path out(o.out);
     std::error_code ec;
     fs::create_directories(out, ec);
@@ -56,8 +62,13 @@ void run(RenderOptions& o) {
     writeFile(out / "angular.png", result.angularPng);
     writeFile(out / "stats.csv", result.statsCsv);
     writeFile(out / "stats.json", result.stats.dump(2) + "\n");
-    std::cout << "wrote render.png, heatmap.png, heatmap.json, angular.png, stats.json, stats.csv to " << out.string()
-              << " in " << seconds << " s\n";
+    std::string written = "render.png, heatmap.png, heatmap.json, angular.png, stats.json, stats.csv";
+    if (settings.aset) {
+        writeFile(out / "aset.png", result.asetPng);
+        written += ", aset.png";
+        printAsetShares(std::cout, result.stats["aset"]);
+    }
+    std::cout << "wrote " << written << " to " << out.string() << " in " << seconds << " s\n";
 }
 
 }  // namespace
@@ -85,6 +96,18 @@ void addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--fov", o->render.camera.fovDeg, "Vertical field of view, degrees")
         ->capture_default_str();
+    cmd->add_flag("--aset", o->aset,
+                  "Also write aset.png: each pixel coloured by where its light comes from (docs/physics.md)");
+    cmd->add_option("--aset-head-cone", o->asetSettings.headConeDeg,
+                    "ASET: half-angle of the viewer's head cone, degrees (blue)")
+        ->capture_default_str();
+    cmd->add_option("--aset-low-below", o->asetSettings.lowBelowDeg,
+                    "ASET: elevation below which light is low (green), above bright (red), degrees")
+        ->capture_default_str();
+    cmd->add_option("--aset-samples", o->asetSettings.samples, "ASET: view rays per pixel")
+        ->capture_default_str();
+    cmd->add_flag("--aset-white-leakage", o->asetSettings.whiteLeakage,
+                  "ASET: draw leakage white, not black");
     cmd->add_option("--out", o->out, "Folder for the pictures and statistics (created if missing)")
         ->capture_default_str();
     cmd->callback([o] { run(*o); });

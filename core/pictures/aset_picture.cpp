@@ -12,7 +12,7 @@ const Rgb kInk{0.1f, 0.1f, 0.1f};
 
 std::string percent(const AsetShare& s) {
     char text[48];
-    std::snprintf(text, sizeof text, "%5.1f%% +- %.1f", 100 * s.share, 100 * s.standardError);
+    std::snprintf(text, sizeof text, "%5.1f%% +- %.2f", 100 * s.share, 100 * s.standardError);
     return text;
 }
 
@@ -42,7 +42,7 @@ Rgb asetColour(AsetClass c, const AsetSettings& settings) {
 
 Image asetPicture(const AsetView& view, const AsetSettings& settings, const std::string& title) {
     const int legendHeight = kAsetClasses * kLegendRow + 10;
-    const int width = std::max(view.width, 600);
+    const int width = std::max(view.width, 640);
     Image image(width, kTitleHeight + view.height + legendHeight, {1, 1, 1});
     const int left = (width - view.width) / 2;
     for (int y = 0; y < view.height; ++y) {
@@ -69,7 +69,7 @@ Image asetPicture(const AsetView& view, const AsetSettings& settings, const std:
 
     const std::string head = degreesText(settings.headConeDeg), low = degreesText(settings.lowBelowDeg);
     const std::string top = degreesText(90 - settings.headConeDeg);
-    const char* labels[kAsetClasses] = {"head cone", "bright", "low", "leakage", "trapped"};
+    const char* labels[kAsetClasses] = {"head", "bright", "low", "leakage", "trapped"};
     const std::string angles[kAsetClasses] = {
         "within " + head + " deg of the viewer",
         low + "-" + top + " deg elevation",

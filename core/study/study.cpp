@@ -6,7 +6,9 @@
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
 #include "pictures/angular_plot.h"
+#include "pictures/aset_picture.h"
 #include "pictures/heatmap.h"
+#include "render/aset.h"
 #include "render/renderer.h"
 #include "trace/distributed_trace.h"
 #include "trace/photon_tracer.h"
@@ -29,7 +31,10 @@ uint64_t studyUnits(const StudySettings& settings, RunPhase phase) {
         case RunPhase::PhotonMap:
             return settings.render ? settings.render->mapPhotons : 0;
         case RunPhase::Rendering:
-            return settings.render ? uint64_t(settings.render->width) * uint64_t(settings.render->height) : 0;
+            // The render's pixels, and as many again for the ASET view.
+            return settings.render ? uint64_t(settings.render->width) * uint64_t(settings.render->height) *
+                                         (settings.aset ? 2 : 1)
+                                   : 0;
         case RunPhase::Queued:
         case RunPhase::Done:
             break;
@@ -46,6 +51,10 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
                      Communicator& comm) {
     const Scene scene(stone, settings.trace);
     if (settings.render) settings.render->validate();
+    if (settings.aset) {
+        if (!settings.render) throw Error("aset needs a render: it is seen through the render's camera");
+        settings.aset->validate();
+    }
     StudyResult result;
     const int threads = settings.trace.threads;
 
@@ -81,11 +90,21 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
                                                 " light), refracted out of table and crown"));
     }
 
-    enterPhase(control, RunPhase::Rendering, sharePixelCount(r.width, r.height, {comm.rank(), comm.size()}));
+    const uint64_t asetPixels = settings.aset && comm.isRoot() ? uint64_t(r.width) * uint64_t(r.height) : 0;
+    enterPhase(control, RunPhase::Rendering,
+               sharePixelCount(r.width, r.height, {comm.rank(), comm.size()}) + asetPixels);
     const RenderedImage image = render(comm, scene, caustics, r, threads, settings.trace.seed, &control);
     if (image.cancelled || control.cancelled()) throw Canceled();
     if (!comm.isRoot()) return result;
     result.renderPng = encodePng(toDisplay(image));
+    if (settings.aset) {
+        // Rank 0 alone: a few view rays per pixel, far cheaper than the render.
+        const AsetView view = asetView(scene, r.camera, r.width, r.height, *settings.aset, threads,
+                                       settings.trace.seed, &control);
+        if (view.cancelled || control.cancelled()) throw Canceled();
+        result.stats["aset"] = toJson(view, *settings.aset);
+        result.asetPng = encodePng(asetPicture(view, *settings.aset, "ASET view of " + stone.name));
+    }
     enterPhase(control, RunPhase::Done, 0);
     return result;
 }
