@@ -1,6 +1,7 @@
 // facetlight render: trace a stone for the statistics, then render it and write the three pictures and the
 // statistics into a folder.
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -25,6 +26,8 @@ struct RenderOptions {
     std::string out = ".";
     bool aset = false;
     AsetSettings asetSettings;
+    double tiltSeries = 0;
+    TiltSeriesSettings tilt;
 };
 
 void run(RenderOptions& o) {
@@ -36,6 +39,11 @@ void run(RenderOptions& o) {
     if (o.aset) {
         o.asetSettings.validate();
         settings.aset = o.asetSettings;
+    }
+    if (o.tiltSeries > 0) {
+        o.tilt.maxDeg = o.tiltSeries;
+        o.tilt.validate();
+        settings.tiltSeries = o.tilt;
     }
     const fs::path out(o.out);
     std::error_code ec;
@@ -67,6 +75,14 @@ void run(RenderOptions& o) {
         writeFile(out / "aset.png", result.asetPng);
         written += ", aset.png";
         printAsetShares(std::cout, result.stats["aset"]);
+    }
+    if (settings.tiltSeries) {
+        writeFile(out / "tilt.webp", result.tiltWebp);
+        writeFile(out / "tilt.png", result.tiltChartPng);
+        written += ", tilt.webp, tilt.png";
+        const nlohmann::json& t = result.stats["tilt_series"];
+        std::printf("tilt series: %zu frames, scintillation %.2f%% +- %.2f per frame\n", t["frames"].size(),
+                    100 * t["scintillation"].get<double>(), 100 * t["scintillation_stderr"].get<double>());
     }
     std::cout << "wrote " << written << " to " << out.string() << " in " << seconds << " s\n";
 }
@@ -108,6 +124,11 @@ void addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_flag("--aset-white-leakage", o->asetSettings.whiteLeakage,
                   "ASET: draw leakage white, not black");
+    cmd->add_option("--tilt-series", o->tiltSeries,
+                    "Rock the stone from -DEG to +DEG about x in ASET views: tilt.webp (animation), tilt.png "
+                    "(light return against tilt) and the scintillation");
+    cmd->add_option("--tilt-step", o->tilt.stepDeg, "Tilt series: degrees between frames")
+        ->capture_default_str();
     cmd->add_option("--out", o->out, "Folder for the pictures and statistics (created if missing)")
         ->capture_default_str();
     cmd->callback([o] { run(*o); });
