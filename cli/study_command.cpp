@@ -42,6 +42,8 @@ void runStudyCommand(const StudyOptions& options) {
     StudySettings settings;
     settings.trace = TraceSettings::fromJson(job.value("trace", nlohmann::json::object()));
     if (job.contains("render")) settings.render = RenderSettings::fromJson(job["render"]);
+    if (job.contains("aset")) settings.aset = AsetSettings::fromJson(job["aset"]);
+    if (job.contains("tilt_series")) settings.tiltSeries = TiltSeriesSettings::fromJson(job["tilt_series"]);
     Stone stone = resolveStone(job["mesh"].get<std::string>());
     if (job.contains("name") && job["name"].is_string()) stone.name = job["name"];
 
@@ -58,10 +60,11 @@ void runStudyCommand(const StudyOptions& options) {
     // stats.json last: its presence tells the launcher the folder is complete.
     writeFile(out / "stats.csv", result.statsCsv);
     // A trace-only study still has its heat-map; the render and the angular plot come with a render.
-    for (const auto& [name, bytes] : {std::pair{"render.png", &result.renderPng},
-                                      std::pair{"heatmap.png", &result.heatmapPng},
-                                      std::pair{"heatmap.json", &result.heatmapLayout},
-                                      std::pair{"angular.png", &result.angularPng}})
+    for (const auto& [name, bytes] :
+         {std::pair{"render.png", &result.renderPng}, std::pair{"heatmap.png", &result.heatmapPng},
+          std::pair{"heatmap.json", &result.heatmapLayout}, std::pair{"angular.png", &result.angularPng},
+          std::pair{"aset.png", &result.asetPng}, std::pair{"tilt.webp", &result.tiltWebp},
+          std::pair{"tilt.png", &result.tiltChartPng}})
         if (!bytes->empty()) writeFile(out / name, *bytes);
     writeFile(out / "stats.json", result.stats.dump(2));
 }
@@ -72,7 +75,9 @@ void addStudyCommand(CLI::App& app) {
     auto options = std::make_shared<StudyOptions>();
     CLI::App* cmd = app.add_subcommand(
         "study", "Run a job file's study into a folder (how the service runs jobs through a launcher)");
-    cmd->add_option("--job", options->job, "JSON: {\"mesh\", \"name\", \"trace\": {...}, \"render\": {...}}")
+    cmd->add_option("--job", options->job,
+                    "JSON: {\"mesh\", \"name\", \"trace\": {...}, \"render\": {...}, \"aset\": {...}, "
+                    "\"tilt_series\": {...}}")
         ->required();
     cmd->add_option("--out", options->out, "Folder for stats.json, stats.csv and the PNGs (rank 0 writes)")
         ->required();
