@@ -6,6 +6,7 @@
 #include <map>
 #include <regex>
 
+#include "stats/facet_stats.h"
 #include "util/error.h"
 
 namespace facetlight::server {
@@ -78,21 +79,33 @@ std::string mediaType(const Request& req) {
     return type;
 }
 
-// Reads the whole body, refusing more than `limit` bytes; nullopt when it was too large.
-std::optional<std::string> readBody(const httplib::ContentReader& reader, size_t limit) {
-    std::string body;
-    bool tooLarge = false;
-    reader([&](const char* data, size_t n) {
-        if (body.size() + n > limit) {
-            tooLarge = true;
+// The most bytes a request body may have: uploads have their own limit. The one place both the check before
+// routing (Content-Length) and the handlers' readers (BodyCollector, bytes as they arrive) take it from.
+size_t bodyLimit(const ServiceLimits& limits, const std::string& path) {
+    return path == "/api/meshes" ? limits.maxUploadBytes : limits.maxBodyBytes;
+}
+
+// Collects a request body as it arrives, stopping the read once it passes its route's limit.
+class BodyCollector {
+  public:
+    BodyCollector(const ServiceLimits& limits, const Request& req) : limit_(bodyLimit(limits, req.path)) {}
+    bool operator()(const char* data, size_t n) {
+        if (bytes_.size() + n > limit_) {
+            tooLarge_ = true;
             return false;
         }
-        body.append(data, n);
+        bytes_.append(data, n);
         return true;
-    });
-    if (tooLarge) return std::nullopt;
-    return body;
-}
+    }
+    bool tooLarge() const { return tooLarge_; }
+    size_t limit() const { return limit_; }
+    std::string& bytes() { return bytes_; }
+
+  private:
+    size_t limit_;
+    std::string bytes_;
+    bool tooLarge_ = false;
+};
 
 // A query parameter as an integer in [lo, hi]; `fallback` when absent. Throws Error naming it.
 int64_t queryInt(const Request& req, const std::string& name, int64_t fallback, int64_t lo, int64_t hi) {
@@ -124,8 +137,8 @@ void logRequest(const Request& req, const Response& res) {
 
 }  // namespace
 
-Api::Api(JobStore& store, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits)
-    : store_(store), queue_(queue), catalog_(catalog), limits_(limits) {}
+Api::Api(JobStore& store, ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits)
+    : store_(store), results_(results), queue_(queue), catalog_(catalog), limits_(limits) {}
 
 std::vector<Route> Api::routes() {
     return {
@@ -157,7 +170,13 @@ json Api::statusJson(const JobRecord& job) const {
     if (used < requested) {
         threads["note"] = "capped at the " + std::to_string(queue_.cores()) + " cores of this machine";
     }
+    // A study with pictures runs three phases (tracing, photon map, rendering), one without only the first:
+    // `step` of `steps` and `overall` say where the whole job is, so that clients need not know the phases.
+    const bool rendered = request.contains("render") && request["render"].is_object();
+    const int steps = rendered ? 3 : 1;
     json progress = {{"phase", jobStateName(job.state)}, {"done", 0}, {"total", 0}, {"fraction", 0.0}};
+    int step = 0;
+    double overall = 0;
     json doc = {{"id", job.id},
                 {"state", jobStateName(job.state)},
                 {"mesh", request.value("mesh", "")},
@@ -176,19 +195,28 @@ json Api::statusJson(const JobRecord& job) const {
             if (const auto live = queue_.live(job.id)) {
                 const RunPhase phase = live->phase();
                 const uint64_t done = live->done(), total = live->total();
+                const double fraction = total ? double(done) / double(total) : 0.0;
                 progress = {{"phase", phase == RunPhase::Queued ? "starting" : runPhaseName(phase)},
                             {"done", done},
                             {"total", total},
-                            {"fraction", total ? double(done) / double(total) : 0.0}};
+                            {"fraction", fraction}};
+                const RunPhase phases[] = {RunPhase::Tracing, RunPhase::PhotonMap, RunPhase::Rendering};
+                for (int i = 0; i < steps; ++i) {
+                    if (phases[i] != phase) continue;
+                    step = i + 1;
+                    overall = (i + std::clamp(fraction, 0.0, 1.0)) / steps;
+                }
                 doc["cancel_requested"] = live->cancelled();
             }
             links["cancel"] = self + "/cancel";
             break;
         case JobState::Succeeded: {
             progress = {{"phase", "done"}, {"done", 1}, {"total", 1}, {"fraction", 1.0}};
+            step = steps;
+            overall = 1;
             links["stats"] = self + "/stats";
             links["stats_csv"] = self + "/stats.csv";
-            if (request.contains("render") && request["render"].is_object()) {
+            if (rendered) {
                 links["render"] = self + "/render.png";
                 links["heatmap"] = self + "/heatmap.png";
                 links["heatmap_layout"] = self + "/heatmap.json";
@@ -202,6 +230,9 @@ json Api::statusJson(const JobRecord& job) const {
         case JobState::Canceled:
             break;
     }
+    progress["step"] = step;
+    progress["steps"] = steps;
+    progress["overall"] = overall;
     doc["progress"] = progress;
     doc["links"] = links;
     return doc;
@@ -209,15 +240,15 @@ json Api::statusJson(const JobRecord& job) const {
 
 void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
     const std::string type = mediaType(req);
-    const auto body = readBody(reader, limits_.maxBodyBytes);
-    if (!body) {
-        return problem(res, 413, "the job is larger than " + std::to_string(limits_.maxBodyBytes) + " bytes");
-    }
+    BodyCollector body(limits_, req);
+    reader(std::ref(body));
+    if (body.tooLarge())
+        return problem(res, 413, "the job is larger than " + std::to_string(body.limit()) + " bytes");
     if (!type.empty() && type != kJsonType && type != "application/x-www-form-urlencoded" &&
         type != "text/plain") {
         return problem(res, 415, "send the job as application/json (got " + type + ")");
     }
-    json j = json::parse(*body, nullptr, false);
+    json j = json::parse(body.bytes(), nullptr, false);
     if (j.is_discarded()) return problem(res, 400, "the body is not valid JSON");
     if (!j.is_object()) return problem(res, 400, "the job must be a JSON object");
     JobSpec spec;
@@ -241,16 +272,8 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
 }
 
 void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentReader& reader) {
-    std::string bytes, fileName = req.has_param("name") ? req.get_param_value("name") : "upload";
-    bool tooLarge = false;
-    const auto receive = [&](const char* data, size_t n) {
-        if (bytes.size() + n > limits_.maxUploadBytes) {
-            tooLarge = true;
-            return false;
-        }
-        bytes.append(data, n);
-        return true;
-    };
+    std::string fileName = req.has_param("name") ? req.get_param_value("name") : "upload";
+    BodyCollector body(limits_, req);
     if (req.is_multipart_form_data()) {
         int files = 0;
         reader(
@@ -259,21 +282,19 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
                 if (!part.filename.empty()) fileName = part.filename;
                 return ++files == 1;
             },
-            [&](const char* data, size_t n) { return files == 1 ? receive(data, n) : true; });
+            [&](const char* data, size_t n) { return files == 1 ? body(data, n) : true; });
     } else {
-        reader(receive);
+        reader(std::ref(body));
     }
-    if (tooLarge) {
-        return problem(res, 413,
-                       "the upload is larger than " + std::to_string(limits_.maxUploadBytes) + " bytes");
-    }
+    if (body.tooLarge())
+        return problem(res, 413, "the upload is larger than " + std::to_string(body.limit()) + " bytes");
     std::optional<MeshFormat> format;
     if (req.has_param("format")) {
         format = parseMeshFormat(req.get_param_value("format"));
         if (!format) return problem(res, 422, "format must be one of obj, stl, asc", "format");
     }
     try {
-        const MeshRecord m = catalog_.upload(bytes, fileName, format);
+        const MeshRecord m = catalog_.upload(body.bytes(), fileName, format);
         json doc = m.summary;
         doc["mesh"] = m.id;
         doc["file_name"] = m.name;
@@ -331,6 +352,7 @@ void Api::deleteJob(const Request& req, Response& res) {
         return problem(res, 409, "the job is " + std::string(jobStateName(job->state)) + ": cancel it first");
     }
     store_.deleteJob(id);
+    results_.clear(id);
     res.status = 204;
 }
 
@@ -344,8 +366,13 @@ void Api::getResult(const Request& req, Response& res, const std::string& file,
             res, 409,
             "the job is " + std::string(jobStateName(job->state)) + "; results exist once it has succeeded");
     }
-    auto bytes = store_.readResult(id, file);
+    auto bytes = results_.read(id, file);
     if (!bytes) return problem(res, 404, "this job has no " + file + " (was render false?)");
+    if (file == "stats.json") {
+        json stats = json::parse(*bytes);
+        addShareStandardErrors(stats);
+        *bytes = stats.dump(2);
+    }
     res.status = 200;
     res.set_content(std::move(*bytes), contentType.c_str());
 }
@@ -385,7 +412,10 @@ void Api::install(httplib::Server& server, bool accessLog) {
         // `curl -X POST` sends no Content-Length: a plain handler would wait out the read timeout for a body.
         {"POST /api/jobs/{id}/cancel",
          [this](const Request& req, Response& res, const httplib::ContentReader& r) {
-             if (req.has_header("Content-Length")) readBody(r, limits_.maxBodyBytes);  // ignored
+             if (req.has_header("Content-Length")) {
+                 BodyCollector ignored(limits_, req);
+                 r(std::ref(ignored));
+             }
              cancelJob(req, res);
          }},
     };
@@ -410,9 +440,9 @@ void Api::install(httplib::Server& server, bool accessLog) {
     }
     if (!plain.empty() || !withReader.empty()) throw std::logic_error("handler without a route");
 
-    const size_t maxBody = limits_.maxBodyBytes, maxUpload = limits_.maxUploadBytes,
-                 maxUrl = limits_.maxUrlBytes;
-    server.set_payload_max_length(std::max(maxBody, maxUpload));
+    const ServiceLimits limits = limits_;
+    const size_t maxUrl = limits.maxUrlBytes;
+    server.set_payload_max_length(std::max(limits.maxBodyBytes, limits.maxUploadBytes));
     server.set_pre_routing_handler([=](const Request& req, Response& res) {
         using R = httplib::Server::HandlerResponse;
         if (req.target.size() > maxUrl) {
@@ -425,7 +455,7 @@ void Api::install(httplib::Server& server, bool accessLog) {
             problem(res, 411, "chunked request bodies are not accepted: send Content-Length");
             return R::Handled;
         }
-        const size_t limit = req.path == "/api/meshes" ? maxUpload : maxBody;
+        const size_t limit = bodyLimit(limits, req.path);
         if (req.has_header("Content-Length")) {
             const std::string v = req.get_header_value("Content-Length");
             if (v.size() > 15 || v.find_first_not_of("0123456789") != std::string::npos ||
