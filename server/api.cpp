@@ -155,6 +155,9 @@ std::vector<Route> Api::routes() {
         {"GET", "/api/jobs/{id}/heatmap.png"},
         {"GET", "/api/jobs/{id}/heatmap.json"},
         {"GET", "/api/jobs/{id}/angular.png"},
+        {"GET", "/api/jobs/{id}/aset.png"},
+        {"GET", "/api/jobs/{id}/tilt.webp"},
+        {"GET", "/api/jobs/{id}/tilt.png"},
         {"GET", "/api/meshes"},
         {"POST", "/api/meshes"},
     };
@@ -221,6 +224,11 @@ json Api::statusJson(const JobRecord& job) const {
                 links["heatmap"] = self + "/heatmap.png";
                 links["heatmap_layout"] = self + "/heatmap.json";
                 links["angular"] = self + "/angular.png";
+            }
+            if (rendered && request.contains("aset")) links["aset"] = self + "/aset.png";
+            if (rendered && request.contains("tilt_series")) {
+                links["tilt_animation"] = self + "/tilt.webp";
+                links["tilt_chart"] = self + "/tilt.png";
             }
             break;
         }
@@ -400,6 +408,9 @@ void Api::install(httplib::Server& server, bool accessLog) {
         {"GET /api/jobs/{id}/heatmap.png", result("heatmap.png", "image/png")},
         {"GET /api/jobs/{id}/heatmap.json", result("heatmap.json", kJsonType)},
         {"GET /api/jobs/{id}/angular.png", result("angular.png", "image/png")},
+        {"GET /api/jobs/{id}/aset.png", result("aset.png", "image/png")},
+        {"GET /api/jobs/{id}/tilt.webp", result("tilt.webp", "image/webp")},
+        {"GET /api/jobs/{id}/tilt.png", result("tilt.png", "image/png")},
         {"GET /api/meshes", [this](const Request&, Response& res) { sendJson(res, 200, catalog_.list()); }},
     };
     // Routes that take a body read it themselves: that skips httplib's 8 KiB cap on form-encoded bodies

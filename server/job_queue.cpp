@@ -124,6 +124,9 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
         if (!result.heatmapPng.empty()) results_.write(id, "heatmap.png", result.heatmapPng);
         if (!result.heatmapLayout.empty()) results_.write(id, "heatmap.json", result.heatmapLayout);
         if (!result.angularPng.empty()) results_.write(id, "angular.png", result.angularPng);
+        if (!result.asetPng.empty()) results_.write(id, "aset.png", result.asetPng);
+        if (!result.tiltWebp.empty()) results_.write(id, "tilt.webp", result.tiltWebp);
+        if (!result.tiltChartPng.empty()) results_.write(id, "tilt.png", result.tiltChartPng);
         store_.markFinished(id, JobState::Succeeded);
     } catch (const Canceled&) {
         bool shuttingDown;

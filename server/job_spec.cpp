@@ -47,6 +47,19 @@ JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const Servi
         }
         trace.erase("render");
     }
+    // The viewer's views (docs/physics.md): objects of their settings, each asking for a render too.
+    if (body.contains("aset")) {
+        spec.settings.aset = AsetSettings::fromJson(body["aset"]);
+        trace.erase("aset");
+    }
+    if (body.contains("tilt_series")) {
+        spec.settings.tiltSeries = TiltSeriesSettings::fromJson(body["tilt_series"]);
+        trace.erase("tilt_series");
+    }
+    if ((spec.settings.aset || spec.settings.tiltSeries) && !spec.settings.render) {
+        throw Error(std::string(spec.settings.aset ? "aset" : "tilt_series") +
+                    " must come with render: set render to true or an object");
+    }
     spec.settings.trace = TraceSettings::fromJson(trace);
     if (limits) checkRenderLimits(spec, *limits);
     return spec;
@@ -55,6 +68,8 @@ nlohmann::json toJson(const JobSpec& spec) {
     nlohmann::json j = toJson(spec.settings.trace);
     j["mesh"] = spec.mesh;
     j["render"] = spec.settings.render ? toJson(*spec.settings.render) : nlohmann::json(false);
+    if (spec.settings.aset) j["aset"] = toJson(*spec.settings.aset);
+    if (spec.settings.tiltSeries) j["tilt_series"] = toJson(*spec.settings.tiltSeries);
     return j;
 }
 

@@ -115,6 +115,8 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
     nlohmann::json job = {{"mesh", mesh.source}, {"trace", toJson(settings.trace)}};
     if (!mesh.name.empty()) job["name"] = mesh.name;
     if (settings.render) job["render"] = toJson(*settings.render);
+    if (settings.aset) job["aset"] = toJson(*settings.aset);
+    if (settings.tiltSeries) job["tilt_series"] = toJson(*settings.tiltSeries);
     const fs::path jobFile = folder.path() / "job.json";
     {
         std::ofstream out(jobFile);
@@ -152,6 +154,9 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
     result.heatmapPng = readFile(folder.path() / "heatmap.png").value_or("");
     result.heatmapLayout = readFile(folder.path() / "heatmap.json").value_or("");
     result.angularPng = readFile(folder.path() / "angular.png").value_or("");
+    result.asetPng = readFile(folder.path() / "aset.png").value_or("");
+    result.tiltWebp = readFile(folder.path() / "tilt.webp").value_or("");
+    result.tiltChartPng = readFile(folder.path() / "tilt.png").value_or("");
     return result;
 }
 

@@ -71,7 +71,7 @@ json toJson(const AsetSettings& s) {
 }
 
 json toJson(const TiltSeriesSettings& s) {
-    return {{"max_deg", s.maxDeg}, {"step_deg", s.stepDeg}, {"frames", s.frames()}};
+    return {{"max_deg", s.maxDeg}, {"step_deg", s.stepDeg}};
 }
 
 }  // namespace facetlight

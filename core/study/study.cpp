@@ -64,12 +64,13 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
     const Scene scene(stone, settings.trace);
     if (settings.render) settings.render->validate();
     if (settings.aset) {
-        if (!settings.render) throw Error("aset needs a render: it is seen through the render's camera");
+        if (!settings.render)
+            throw Error("aset must come with a render: it is seen through the render's camera");
         settings.aset->validate();
     }
     if (settings.tiltSeries) {
         if (!settings.render)
-            throw Error("tilt_series needs a render: it is seen through the render's camera");
+            throw Error("tilt_series must come with a render: it is seen through the render's camera");
         settings.tiltSeries->validate();
     }
     StudyResult result;
