@@ -1,6 +1,6 @@
 #include "pictures/aset_picture.h"
 
-#include <cstdio>
+#include "util/number_text.h"
 
 namespace facetlight {
 namespace {
@@ -11,15 +11,11 @@ const Rgb kBackground{0.62f, 0.62f, 0.62f};  // off the stone: a grey apart from
 const Rgb kInk{0.1f, 0.1f, 0.1f};
 
 std::string percent(const AsetShare& s) {
-    char text[48];
-    std::snprintf(text, sizeof text, "%5.1f%% +- %.2f", 100 * s.share, 100 * s.standardError);
-    return text;
+    return formatNumber("%5.1f%%", 100 * s.share) + formatNumber(" +- %.2f", 100 * s.standardError);
 }
 
 std::string degreesText(double d) {
-    char text[16];
-    std::snprintf(text, sizeof text, "%g", d);
-    return text;
+    return formatNumber("%g", d);
 }
 
 }  // namespace

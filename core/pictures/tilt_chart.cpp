@@ -2,20 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <vector>
+
+#include "util/number_text.h"
 
 namespace facetlight {
 namespace {
 
 constexpr int kWidth = 640, kHeight = 440;
 constexpr double kLeft = 80, kRight = 20, kTop = 96, kBottom = 60;
-
-std::string number(const char* format, double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, format, v);
-    return text;
-}
 
 }  // namespace
 
@@ -39,12 +34,12 @@ Image tiltChart(const TiltSeries& series, const std::string& title) {
     const double yStep = hi - lo > 20 ? 10 : (hi - lo > 10 ? 5 : 1);
     for (double v = lo; v <= hi + 1e-9; v += yStep) {
         drawLine(image, {kLeft, py(v)}, {kLeft + plotW, py(v)}, 1, grid);
-        drawText(image, kLeft - 8, py(v) - textHeight(2) / 2, number("%g", v), 2, ink, Align::Right);
+        drawText(image, kLeft - 8, py(v) - textHeight(2) / 2, formatNumber("%g", v), 2, ink, Align::Right);
     }
     const double span = t1 - t0, xStep = span > 40 ? 10 : (span > 10 ? 5 : 1);
     for (double t = std::ceil(t0 / xStep) * xStep; t <= t1 + 1e-9; t += xStep) {
         drawLine(image, {px(t), kTop}, {px(t), kTop + plotH}, 1, grid);
-        drawText(image, px(t), kTop + plotH + 6, number("%g", t), 2, ink, Align::Center);
+        drawText(image, px(t), kTop + plotH + 6, formatNumber("%g", t), 2, ink, Align::Center);
     }
     drawPolyline(
         image,
@@ -68,8 +63,8 @@ Image tiltChart(const TiltSeries& series, const std::string& title) {
              Align::Center);
     const AsetShare s = series.scintillation();
     const std::string subtitle = "ASET view, lit = bright or low light; scintillation " +
-                                 number("%.1f", 100 * s.share) + " +- " +
-                                 number("%.1f", 100 * s.standardError) + " % per frame";
+                                 formatNumber("%.1f", 100 * s.share) + " +- " +
+                                 formatNumber("%.1f", 100 * s.standardError) + " % per frame";
     drawText(image, kWidth / 2.0, 40, subtitle, textWidth(subtitle, 2) > kWidth - 10 ? 1.5 : 2, ink,
              Align::Center);
     drawText(image, kLeft + plotW / 2, kHeight - 24, "tilt about x (deg)", 2, ink, Align::Center);
