@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "io/mesh_resolver.h"
 #include "process_communicator.h"
+#include "result_folder.h"
 #include "study/study.h"
 #include "terminal_output.h"
 #include "trace_options.h"
@@ -21,8 +22,7 @@ namespace fs = std::filesystem;
 
 struct RenderOptions {
     TraceOptions trace;
-    RenderSettings render;
-    std::string mapPhotons = std::to_string(RenderSettings{}.mapPhotons);
+    SettingsFlags render;
     std::string out = ".";
     bool aset = false;
     AsetSettings asetSettings;
@@ -33,9 +33,8 @@ struct RenderOptions {
 void run(RenderOptions& o) {
     StudySettings settings;
     settings.trace = toTraceSettings(o.trace);
-    o.render.mapPhotons = parseCount(o.mapPhotons, "--map-photons", 1000, kMaxPhotons);
-    o.render.validate();
-    settings.render = o.render;
+    settings.render.emplace();
+    o.render.apply(renderSettingsSchema(), *settings.render);
     if (o.aset) {
         o.asetSettings.validate();
         settings.aset = o.asetSettings;
@@ -64,27 +63,14 @@ void run(RenderOptions& o) {
     if (!comm.isRoot()) return;
     if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();
 
-    writeFile(out / "render.png", result.renderPng);
-    writeFile(out / "heatmap.png", result.heatmapPng);
-    writeFile(out / "heatmap.json", result.heatmapLayout);
-    writeFile(out / "angular.png", result.angularPng);
-    writeFile(out / "stats.csv", result.statsCsv);
-    writeFile(out / "stats.json", result.stats.dump(2) + "\n");
-    std::string written = "render.png, heatmap.png, heatmap.json, angular.png, stats.json, stats.csv";
-    if (settings.aset) {
-        writeFile(out / "aset.png", result.asetPng);
-        written += ", aset.png";
-        printAsetShares(std::cout, result.stats["aset"]);
-    }
+    if (settings.aset) printAsetShares(std::cout, result.stats["aset"]);
     if (settings.tiltSeries) {
-        writeFile(out / "tilt.webp", result.tiltWebp);
-        writeFile(out / "tilt.png", result.tiltChartPng);
-        written += ", tilt.webp, tilt.png";
         const nlohmann::json& t = result.stats["tilt_series"];
         std::printf("tilt series: %zu frames, scintillation %.2f%% +- %.2f per frame\n", t["frames"].size(),
                     100 * t["scintillation"].get<double>(), 100 * t["scintillation_stderr"].get<double>());
     }
-    std::cout << "wrote " << written << " to " << out.string() << " in " << seconds << " s\n";
+    std::cout << "wrote " << writeResultFiles(out, result) << " to " << out.string() << " in " << seconds
+              << " s\n";
 }
 
 }  // namespace
@@ -96,22 +82,7 @@ void addRenderCommand(CLI::App& app) {
         "Trace a stone, render it with its caustics and write render.png, heatmap.png, angular.png, "
         "stats.json and stats.csv");
     addTraceOptions(cmd, o->trace);
-    cmd->add_option("--width", o->render.width, "Image width in pixels")->capture_default_str();
-    cmd->add_option("--height", o->render.height, "Image height in pixels")->capture_default_str();
-    cmd->add_option("--samples", o->render.samples, "Samples per pixel (each on its own wavelength band)")
-        ->capture_default_str();
-    cmd->add_option("--max-depth", o->render.maxDepth, "Specular bounces followed from the camera")
-        ->capture_default_str();
-    cmd->add_option("--map-photons", o->mapPhotons, "Photons traced for the caustic map and the angular plot")
-        ->capture_default_str();
-    cmd->add_option("--elevation", o->render.camera.elevationDeg, "Camera elevation, degrees (90: face-up)")
-        ->capture_default_str();
-    cmd->add_option("--azimuth", o->render.camera.azimuthDeg, "Camera azimuth, degrees")
-        ->capture_default_str();
-    cmd->add_option("--distance", o->render.camera.distance, "Camera distance in girdle diameters")
-        ->capture_default_str();
-    cmd->add_option("--fov", o->render.camera.fovDeg, "Vertical field of view, degrees")
-        ->capture_default_str();
+    o->render.add(cmd, renderSettingsSchema().fields(), toJson(RenderSettings{}), "render");
     cmd->add_flag("--aset", o->aset,
                   "Also write aset.png: each pixel coloured by where its light comes from (docs/physics.md)");
     cmd->add_option("--aset-head-cone", o->asetSettings.headConeDeg,

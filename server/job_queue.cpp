@@ -5,6 +5,7 @@
 #include <new>
 
 #include "job_spec.h"
+#include "study/result_files.h"
 #include "util/error.h"
 
 namespace facetlight::server {
@@ -112,21 +113,14 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
     try {
         const auto job = store_.job(id);
         if (!job) return;  // deleted while queued
-        JobSpec spec = parseJobSpec(job->request, cores_);
+        StudySpec spec = parseJobSpec(job->request, cores_);
         const int threads = std::min(spec.settings.trace.threads, cores_);
         spec.settings.trace.threads = threads;
         store_.markRunning(id, threads);
         results_.clear(id);  // a job re-run after a crash starts from nothing
         const StudyResult result = runner_.run(spec, control);
-        results_.write(id, "stats.json", result.stats.dump(2));
-        results_.write(id, "stats.csv", result.statsCsv);
-        if (!result.renderPng.empty()) results_.write(id, "render.png", result.renderPng);
-        if (!result.heatmapPng.empty()) results_.write(id, "heatmap.png", result.heatmapPng);
-        if (!result.heatmapLayout.empty()) results_.write(id, "heatmap.json", result.heatmapLayout);
-        if (!result.angularPng.empty()) results_.write(id, "angular.png", result.angularPng);
-        if (!result.asetPng.empty()) results_.write(id, "aset.png", result.asetPng);
-        if (!result.tiltWebp.empty()) results_.write(id, "tilt.webp", result.tiltWebp);
-        if (!result.tiltChartPng.empty()) results_.write(id, "tilt.png", result.tiltChartPng);
+        for (const ResultFile& f : kResultFiles)
+            if (std::string bytes = f.bytes(result); !bytes.empty()) results_.write(id, std::string(f.name), bytes);
         store_.markFinished(id, JobState::Succeeded);
     } catch (const Canceled&) {
         bool shuttingDown;

@@ -125,11 +125,10 @@ bool AsetView::lit(size_t pixel) const {
 AsetView asetView(const Scene& scene, const CameraSettings& cameraSettings, int width, int height,
                   const AsetSettings& settings, int threads, uint64_t seed, RunControl* control) {
     settings.validate();
-    RenderSettings frame;
-    frame.width = width;
-    frame.height = height;
-    frame.camera = cameraSettings;
-    frame.validate();
+    if (width < kMinImageSide || width > kMaxImageSide || height < kMinImageSide || height > kMaxImageSide) {
+        throw Error("render.width", "an ASET view's sides must be between " + std::to_string(kMinImageSide) +
+                                        " and " + std::to_string(kMaxImageSide) + " pixels");
+    }
     const Vec3 target = scene.toWorld(scene.center());
     const Camera camera(cameraSettings, target, scene.diameter(), width, height);
     const SkyBands bands(scene, settings, normalize(camera.position() - target));
