@@ -407,11 +407,11 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.selectOption('#f-mesh', jobIds.brilliantMesh);
     await fillSmallJob({ width: '48', height: '48' });
     await page.setChecked('#f-aset', true);
-    await page.setChecked('#f-tilt', true);
+    await page.setChecked('#f-tilt-series', true);
     const id = await submitAndGetId();
     await waitForFinished(id);
     await page.setChecked('#f-aset', false);
-    await page.setChecked('#f-tilt', false);
+    await page.setChecked('#f-tilt-series', false);
     await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
     await page.waitForSelector('[data-section="viewer"]');
     const pics = await picturesLoaded('[data-section="viewer"]');
