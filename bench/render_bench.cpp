@@ -10,6 +10,7 @@
 #include <ctime>
 #include <vector>
 
+#include "bench_timing.h"
 #include "intersect/scene.h"
 #include "io/mesh_resolver.h"
 #include "photonmap/floor_photons.h"
@@ -20,18 +21,8 @@
 
 using namespace facetlight;
 
-namespace {
-
-double seconds(std::chrono::steady_clock::time_point since) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-}  // namespace
+using bench::median;
+using bench::seconds;
 
 int main(int argc, char** argv) {
     const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;

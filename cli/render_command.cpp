@@ -1,6 +1,7 @@
 // facetlight render: trace a stone for the statistics, then render it and write the three pictures and the
 // statistics into a folder.
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -23,6 +24,10 @@ struct RenderOptions {
     TraceOptions trace;
     SettingsFlags render;
     std::string out = ".";
+    bool aset = false;
+    AsetSettings asetSettings;
+    double tiltSeries = 0;
+    TiltSeriesSettings tilt;
 };
 
 void run(RenderOptions& o) {
@@ -30,6 +35,15 @@ void run(RenderOptions& o) {
     settings.trace = toTraceSettings(o.trace);
     settings.render.emplace();
     o.render.apply(renderSettingsSchema(), *settings.render);
+    if (o.aset) {
+        o.asetSettings.validate();
+        settings.aset = o.asetSettings;
+    }
+    if (o.tiltSeries > 0) {
+        o.tilt.maxDeg = o.tiltSeries;
+        o.tilt.validate();
+        settings.tiltSeries = o.tilt;
+    }
     const fs::path out(o.out);
     std::error_code ec;
     fs::create_directories(out, ec);
@@ -49,6 +63,12 @@ void run(RenderOptions& o) {
     if (!comm.isRoot()) return;
     if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();
 
+    if (settings.aset) printAsetShares(std::cout, result.stats["aset"]);
+    if (settings.tiltSeries) {
+        const nlohmann::json& t = result.stats["tilt_series"];
+        std::printf("tilt series: %zu frames, scintillation %.2f%% +- %.2f per frame\n", t["frames"].size(),
+                    100 * t["scintillation"].get<double>(), 100 * t["scintillation_stderr"].get<double>());
+    }
     std::cout << "wrote " << writeResultFiles(out, result) << " to " << out.string() << " in " << seconds
               << " s\n";
 }
@@ -63,6 +83,23 @@ void addRenderCommand(CLI::App& app) {
         "stats.json and stats.csv");
     addTraceOptions(cmd, o->trace);
     o->render.add(cmd, renderSettingsSchema().fields(), toJson(RenderSettings{}), "render");
+    cmd->add_flag("--aset", o->aset,
+                  "Also write aset.png: each pixel coloured by where its light comes from (docs/physics.md)");
+    cmd->add_option("--aset-head-cone", o->asetSettings.headConeDeg,
+                    "ASET: half-angle of the viewer's head cone, degrees (blue)")
+        ->capture_default_str();
+    cmd->add_option("--aset-low-below", o->asetSettings.lowBelowDeg,
+                    "ASET: elevation below which light is low (green), above bright (red), degrees")
+        ->capture_default_str();
+    cmd->add_option("--aset-samples", o->asetSettings.samples, "ASET: view rays per pixel")
+        ->capture_default_str();
+    cmd->add_flag("--aset-white-leakage", o->asetSettings.whiteLeakage,
+                  "ASET: draw leakage white, not black");
+    cmd->add_option("--tilt-series", o->tiltSeries,
+                    "Rock the stone from -DEG to +DEG about x in ASET views: tilt.webp (animation), tilt.png "
+                    "(light return against tilt) and the scintillation");
+    cmd->add_option("--tilt-step", o->tilt.stepDeg, "Tilt series: degrees between frames")
+        ->capture_default_str();
     cmd->add_option("--out", o->out, "Folder for the pictures and statistics (created if missing)")
         ->capture_default_str();
     cmd->callback([o] { run(*o); });

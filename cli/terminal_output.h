@@ -8,9 +8,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <thread>
+
+#include <nlohmann/json.hpp>
 
 #include "stone/stone.h"
 #include "util/error.h"
@@ -22,6 +25,17 @@ inline void writeFile(const std::filesystem::path& path, std::string_view bytes)
     std::ofstream out(path, std::ios::binary);
     if (!out || !out.write(bytes.data(), std::streamsize(bytes.size())) || !out.flush())
         throw Error("cannot write " + path.string());
+}
+
+// The ASET shares of a study's statistics ("aset" in docs/stats-schema.md), one class a line.
+inline void printAsetShares(std::ostream& out, const nlohmann::json& aset) {
+    out << "ASET shares of the face-up area (" << aset["rays"].get<uint64_t>() << " view rays):\n";
+    for (const auto& [name, s] : aset["shares"].items()) {
+        char line[96];
+        std::snprintf(line, sizeof line, "  %-8s %6.2f%% +- %.2f\n", name.c_str(), 100 * s["share"].get<double>(),
+                      100 * s["stderr"].get<double>());
+        out << line;
+    }
 }
 
 // A stone's trade proportions, one per line ("-" where one does not apply), as `info` and `cut` print them

@@ -203,7 +203,7 @@ json Api::statusJson(const JobRecord& job) const {
             step = steps;
             overall = 1;
             for (const ResultFile& f : kResultFiles)
-                if (!f.rendered || rendered)
+                if (f.needs.empty() || (request.contains(f.needs) && request[std::string(f.needs)].is_object()))
                     links[std::string(f.link)] = self + "/" + std::string(f.route);
             break;
         }

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "geometry/halfspace.h"
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace facetlight {
 
@@ -45,9 +45,7 @@ double support(const std::vector<Vec3>& outline, const Vec3& direction) {
 }
 
 std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
+    return formatNumber("%g", v);
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ void Image::blend(int x, int y, const Rgb& c, float alpha) {
     p.b += (c.b - p.b) * alpha;
 }
 
-std::string encodePng(const Image& image) {
+std::vector<unsigned char> toRgb8(const Image& image) {
     std::vector<unsigned char> bytes(size_t(image.width()) * size_t(image.height()) * 3);
     size_t i = 0;
     for (int y = 0; y < image.height(); ++y) {
@@ -35,6 +35,11 @@ std::string encodePng(const Image& image) {
                 bytes[i++] = (unsigned char)std::lround(std::clamp(v, 0.0f, 1.0f) * 255);
         }
     }
+    return bytes;
+}
+
+std::string encodePng(const Image& image) {
+    const std::vector<unsigned char> bytes = toRgb8(image);
     std::string png;
     auto append = [](void* context, void* data, int size) {
         static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));

@@ -30,6 +30,8 @@ class Image {
     std::vector<Rgb> pixels_;
 };
 
+// The pixels as 8-bit RGB, row by row (values clamped to [0, 1]).
+std::vector<unsigned char> toRgb8(const Image& image);
 // An 8-bit RGB PNG of the image (values clamped to [0, 1]).
 std::string encodePng(const Image& image);
 

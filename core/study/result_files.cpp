@@ -2,23 +2,30 @@
 
 namespace facetlight {
 
-const std::array<ResultFile, 6> kResultFiles{{
-    {"stats.csv", "text/csv", "stats.csv", "stats_csv", false,
-     [](const StudyResult& r) { return r.statsCsv; },
+const std::array<ResultFile, 9> kResultFiles{{
+    {"stats.csv", "text/csv", "stats.csv", "stats_csv", "", [](const StudyResult& r) { return r.statsCsv; },
      [](StudyResult& r, std::string&& b) { r.statsCsv = std::move(b); }},
-    {"render.png", "image/png", "render.png", "render", true,
+    {"render.png", "image/png", "render.png", "render", "render",
      [](const StudyResult& r) { return r.renderPng; },
      [](StudyResult& r, std::string&& b) { r.renderPng = std::move(b); }},
-    {"heatmap.png", "image/png", "heatmap.png", "heatmap", true,
+    {"heatmap.png", "image/png", "heatmap.png", "heatmap", "render",
      [](const StudyResult& r) { return r.heatmapPng; },
      [](StudyResult& r, std::string&& b) { r.heatmapPng = std::move(b); }},
-    {"heatmap.json", "application/json", "heatmap.json", "heatmap_layout", true,
+    {"heatmap.json", "application/json", "heatmap.json", "heatmap_layout", "render",
      [](const StudyResult& r) { return r.heatmapLayout; },
      [](StudyResult& r, std::string&& b) { r.heatmapLayout = std::move(b); }},
-    {"angular.png", "image/png", "angular.png", "angular", true,
+    {"angular.png", "image/png", "angular.png", "angular", "render",
      [](const StudyResult& r) { return r.angularPng; },
      [](StudyResult& r, std::string&& b) { r.angularPng = std::move(b); }},
-    {"stats.json", "application/json", "stats", "stats", false,
+    {"aset.png", "image/png", "aset.png", "aset", "aset", [](const StudyResult& r) { return r.asetPng; },
+     [](StudyResult& r, std::string&& b) { r.asetPng = std::move(b); }},
+    {"tilt.webp", "image/webp", "tilt.webp", "tilt_animation", "tilt_series",
+     [](const StudyResult& r) { return r.tiltWebp; },
+     [](StudyResult& r, std::string&& b) { r.tiltWebp = std::move(b); }},
+    {"tilt.png", "image/png", "tilt.png", "tilt_chart", "tilt_series",
+     [](const StudyResult& r) { return r.tiltChartPng; },
+     [](StudyResult& r, std::string&& b) { r.tiltChartPng = std::move(b); }},
+    {"stats.json", "application/json", "stats", "stats", "",
      [](const StudyResult& r) { return r.stats.is_null() ? std::string() : r.stats.dump(2) + "\n"; },
      [](StudyResult& r, std::string&& b) { r.stats = nlohmann::json::parse(b); }},
 }};

@@ -1,13 +1,20 @@
 #include "study/study.h"
 
+#include <cstdio>
 #include <sstream>
+#include <vector>
 
 #include "intersect/scene.h"
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
 #include "pictures/angular_plot.h"
+#include "pictures/aset_picture.h"
 #include "pictures/heatmap.h"
+#include "pictures/tilt_chart.h"
+#include "pictures/webp_animation.h"
+#include "render/aset.h"
 #include "render/renderer.h"
+#include "render/tilt_series.h"
 #include "trace/distributed_trace.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
@@ -15,9 +22,16 @@
 namespace facetlight {
 namespace {
 
+constexpr int kTiltFrameMs = 120;  // 21 frames: a 2.5 s sweep
+
 void enterPhase(RunControl& control, RunPhase phase, uint64_t total) {
     if (control.cancelled()) throw Canceled();
     control.startPhase(phase, total);
+}
+
+// The ASET views a study draws after its render: the face-up one and the tilt series' frames.
+int viewCount(const StudySettings& settings) {
+    return (settings.aset ? 1 : 0) + (settings.tiltSeries ? settings.tiltSeries->frames() : 0);
 }
 
 }  // namespace
@@ -29,7 +43,10 @@ uint64_t studyUnits(const StudySettings& settings, RunPhase phase) {
         case RunPhase::PhotonMap:
             return settings.render ? settings.render->mapPhotons : 0;
         case RunPhase::Rendering:
-            return settings.render ? uint64_t(settings.render->width) * uint64_t(settings.render->height) : 0;
+            // The render's pixels, and as many again for the ASET view and each tilt frame.
+            return settings.render ? uint64_t(settings.render->width) * uint64_t(settings.render->height) *
+                                         uint64_t(1 + viewCount(settings))
+                                   : 0;
         case RunPhase::Queued:
         case RunPhase::Done:
             break;
@@ -45,6 +62,16 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunControl& control,
                      Communicator& comm) {
     const Scene scene(stone, settings.trace);
+    if (settings.aset) {
+        if (!settings.render)
+            throw Error("aset must come with a render: it is seen through the render's camera");
+        settings.aset->validate();
+    }
+    if (settings.tiltSeries) {
+        if (!settings.render)
+            throw Error("tilt_series must come with a render: it is seen through the render's camera");
+        settings.tiltSeries->validate();
+    }
     StudyResult result;
     const int threads = settings.trace.threads;
 
@@ -80,11 +107,37 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
                                     " light), refracted out of table and crown"));
     }
 
-    enterPhase(control, RunPhase::Rendering, sharePixelCount(r.width, r.height, {comm.rank(), comm.size()}));
+    const uint64_t asetPixels =
+        comm.isRoot() ? uint64_t(r.width) * uint64_t(r.height) * viewCount(settings) : 0;
+    enterPhase(control, RunPhase::Rendering,
+               sharePixelCount(r.width, r.height, {comm.rank(), comm.size()}) + asetPixels);
     const RenderedImage image = render(comm, scene, caustics, r, threads, settings.trace.seed, &control);
     if (image.cancelled || control.cancelled()) throw Canceled();
     if (!comm.isRoot()) return result;
     result.renderPng = encodePng(toDisplay(image));
+    if (settings.aset) {
+        // Rank 0 alone: a few view rays per pixel, far cheaper than the render.
+        const AsetView view = asetView(scene, r.camera, r.width, r.height, *settings.aset, threads,
+                                       settings.trace.seed, &control);
+        if (view.cancelled || control.cancelled()) throw Canceled();
+        result.stats["aset"] = toJson(view, *settings.aset);
+        result.asetPng = encodePng(asetPicture(view, *settings.aset, "ASET view of " + stone.name));
+    }
+    if (settings.tiltSeries) {
+        const AsetSettings aset = settings.aset.value_or(AsetSettings{});
+        const TiltSeries series = tiltSeries(stone, settings.trace, r.camera, r.width, r.height, aset,
+                                             *settings.tiltSeries, &control);
+        if (series.cancelled || control.cancelled()) throw Canceled();
+        result.stats["tilt_series"] = toJson(series, *settings.tiltSeries);
+        std::vector<Image> frames;
+        for (const TiltFrame& f : series.frames) {
+            char title[64];
+            std::snprintf(title, sizeof title, "%s tilted %+.1f deg about x", stone.name.c_str(), f.tiltDeg);
+            frames.push_back(asetPicture(f.view, aset, title));
+        }
+        result.tiltWebp = encodeAnimatedWebp(frames, kTiltFrameMs);
+        result.tiltChartPng = encodePng(tiltChart(series, "Light return against tilt: " + stone.name));
+    }
     enterPhase(control, RunPhase::Done, 0);
     return result;
 }

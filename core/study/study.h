@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/render_settings.h"
+#include "render/view_settings.h"
 #include "stone/stone.h"
 #include "trace/trace_settings.h"
 #include "util/distributed.h"
@@ -18,6 +19,11 @@ namespace facetlight {
 struct StudySettings {
     TraceSettings trace;
     std::optional<RenderSettings> render;  // none: statistics only
+    // The ASET view through the render's camera at its size (needs a render): aset.png and stats "aset".
+    std::optional<AsetSettings> aset;
+    // The stone rocked through a tilt series of ASET views (needs a render; the ASET settings or their
+    // defaults): tilt.webp, tilt.png and stats "tilt_series".
+    std::optional<TiltSeriesSettings> tiltSeries;
 };
 
 struct StudyResult {
@@ -25,6 +31,8 @@ struct StudyResult {
     std::string statsCsv;                           // the facet table
     std::string renderPng, heatmapPng, angularPng;  // empty without a render (the heat-map: always)
     std::string heatmapLayout;  // heatmap.png's facets in pixels (JSON, docs/stats-schema.md), with it
+    std::string asetPng;        // with an ASET view
+    std::string tiltWebp, tiltChartPng;  // with a tilt series: the animation and light return against tilt
 };
 
 // Builds one Scene for every phase and runs them, each reporting to `control` (RunPhase::Tracing, PhotonMap,

@@ -401,6 +401,31 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal((await fetch(`${baseUrl}/api/jobs/${id}`)).status, 404);
   });
 
+  test('a job with the ASET view and a tilt series shows the picture, its shares, the animation and the chart', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    await page.selectOption('#f-mesh', jobIds.brilliantMesh);
+    await fillSmallJob({ width: '48', height: '48' });
+    await page.setChecked('#f-aset', true);
+    await page.setChecked('#f-tilt-series', true);
+    const id = await submitAndGetId();
+    await waitForFinished(id);
+    await page.setChecked('#f-aset', false);
+    await page.setChecked('#f-tilt-series', false);
+    await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
+    await page.waitForSelector('[data-section="viewer"]');
+    const pics = await picturesLoaded('[data-section="viewer"]');
+    assert.deepEqual(pics.map((p) => p.src.split('/').pop()), ['aset.png', 'tilt.webp', 'tilt.png']);
+    // The browser decodes the animated WebP.
+    for (const p of pics) assert.ok(p.width > 0, `${p.src} did not load`);
+    assert.equal(await page.locator('table.aset-shares tbody tr').count(), 5);
+    const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+    const head = await page.textContent('table.aset-shares tr[data-aset="head"] td');
+    assert.ok(Math.abs(parseFloat(head) - stats.aset.shares.head.share * 100) <= 0.05, `${head} vs ${stats.aset.shares.head.share}`);
+    assert.match(await page.textContent('[data-section="viewer"] figcaption'), /Scintillation .* 21 frames/);
+    await shot('09b-viewer-views');
+  });
+
   test('the home page fits a phone', async () => {
     await page.setViewportSize(PHONE);
     await page.goto(`${baseUrl}/#/`);

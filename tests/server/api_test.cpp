@@ -220,6 +220,42 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     EXPECT_EQ(be32(20), 24u);  // IHDR height
 }
 
+TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
+    json job = smallJob();
+    job["render"] = {{"width", 24}, {"height", 24}, {"samples", 1}, {"map_photons", 2000}};
+    job["aset"] = {{"samples", 2}};
+    job["tilt_series"] = {{"max_deg", 2}};
+    auto r = submit(job);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 202) << r->body;
+    const std::string id = json::parse(r->body)["id"];
+    const json done = waitFinished(id);
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    const std::string self = "/api/jobs/" + id;
+    EXPECT_EQ(done["links"]["aset"], self + "/aset.png");
+    EXPECT_EQ(done["links"]["tilt_animation"], self + "/tilt.webp");
+    EXPECT_EQ(done["links"]["tilt_chart"], self + "/tilt.png");
+    for (const auto& [file, type] : {std::pair{"aset.png", "image/png"}, std::pair{"tilt.webp", "image/webp"},
+                                     std::pair{"tilt.png", "image/png"}}) {
+        auto p = client_->Get(self + "/" + file);
+        ASSERT_TRUE(p && p->status == 200) << file;
+        EXPECT_EQ(p->get_header_value("Content-Type"), type);
+    }
+    const json stats = json::parse(client_->Get(self + "/stats")->body);
+    EXPECT_EQ(stats["aset"]["shares"].size(), 5u);
+    EXPECT_EQ(stats["tilt_series"]["frames"].size(), 5u);
+
+    json bad = smallJob();
+    bad["aset"] = json::object();
+    expectProblem(submit(bad), 422, "aset");  // no render
+    bad["render"] = true;
+    bad["aset"] = {{"samples", 0}};
+    expectProblem(submit(bad), 422, "aset.samples");
+    bad.erase("aset");
+    bad["tilt_series"] = {{"max_deg", 90}};
+    expectProblem(submit(bad), 422, "tilt_series.max_deg");
+}
+
 TEST_F(ServiceTest, StatsOnlyJobHasNoPictures) {
     const std::string id = submitOk(smallJob());
     ASSERT_EQ(waitFinished(id)["state"], "succeeded");

@@ -224,7 +224,8 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     const json api = json::parse(in);
     const json& job = api["components"]["schemas"]["JobRequest"];
     const json& properties = job["properties"];
-    std::set<std::string> keys = {"mesh", "name", "render"};
+    // The viewer's views (aset, tilt_series) have readers of their own (render/view_settings.h), not tables yet.
+    std::set<std::string> keys = {"mesh", "name", "render", "aset", "tilt_series"};
     for (const FieldInfo& f : traceSettingsSchema().fields()) {
         keys.insert(f.key);
         ASSERT_TRUE(properties.contains(f.key)) << f.key;

@@ -83,6 +83,8 @@ function buildJob(form) {
       map_photons: readNumber(form, 'render.map_photons', errors),
       camera: { elevation_deg: readNumber(form, 'render.camera.elevation_deg', errors) },
     };
+    if (form.elements.aset.checked) job.aset = {};
+    if (form.elements.tilt_series.checked) job.tilt_series = { max_deg: 10 };
   } else {
     job.render = false;
   }

@@ -135,6 +135,35 @@ function proportionList(mesh) {
   return h('dl', { class: 'kv' }, rows.map(([k, v, unit]) => [h('dt', {}, k), h('dd', {}, unit ? `${fmtNumber(v, 2)}${unit === '%' ? ' %' : unit}` : String(v))]));
 }
 
+// The ASET classes in the order of aset.png's legend (docs/physics.md, "ASET view").
+const ASET_CLASSES = [
+  ['head', 'Head cone (blue)'], ['bright', 'Bright light (red)'], ['low', 'Low light (green)'],
+  ['leakage', 'Leakage'], ['trapped', 'Trapped'],
+];
+
+// What a viewer sees: the ASET picture with its shares, the tilt series' animation and chart.
+function viewerSection(job, stats) {
+  const links = job.links || {};
+  if (!links.aset && !links.tilt_animation) return null;
+  const aset = stats.aset;
+  const tilt = stats.tilt_series;
+  return h('section', { class: 'card', 'aria-labelledby': 'viewer-title', 'data-section': 'viewer' },
+    h('h2', { id: 'viewer-title' }, 'What a viewer sees'),
+    h('p', { class: 'hint' }, 'Each view ray traced back through the stone and coloured by where its light comes from (AGS ASET colours).'),
+    h('div', { class: 'result-grid' },
+      links.aset ? h('figure', { class: 'viewer-aset' },
+        h('img', { src: links.aset, alt: 'ASET view of the stone face-up', loading: 'lazy' }),
+        aset ? h('table', { class: 'data aset-shares' },
+          h('caption', {}, `Shares of the face-up area (${fmtInt(aset.rays)} view rays)`),
+          h('tbody', {}, ASET_CLASSES.filter(([k]) => aset.shares[k]).map(([k, label]) => h('tr', { 'data-aset': k },
+            h('th', { scope: 'row' }, label),
+            h('td', { class: 'num' }, fmtPctErr(aset.shares[k].share, aset.shares[k].stderr)))))) : null) : null,
+      links.tilt_animation ? h('figure', { class: 'viewer-tilt' },
+        h('img', { src: links.tilt_animation, alt: 'The stone rocking through the tilt series (animation)', loading: 'lazy' }),
+        tilt ? h('figcaption', {}, `Scintillation ${fmtPctErr(tilt.scintillation, tilt.scintillation_stderr)} of the face-up area per frame, over ${tilt.frames.length} frames`) : null,
+        h('img', { src: links.tilt_chart, alt: 'Light return against tilt', loading: 'lazy' })) : null));
+}
+
 function resultPage(job, stats) {
   const name = displayMeshName(job.mesh);
   const totals = stats.totals || {};
@@ -153,6 +182,7 @@ function resultPage(job, stats) {
       h('dl', { class: 'figures' }, FIGURES.map((f, i) => figureCard(f, totals, i === 0)))),
     h('section', { class: 'card', 'aria-labelledby': 'pictures-title' },
       h('h2', { id: 'pictures-title' }, 'Pictures'), pictures(job, name, stats)),
+    viewerSection(job, stats),
     h('div', { class: 'result-grid' },
       h('section', { class: 'card', 'aria-labelledby': 'regions-title' },
         h('h2', { id: 'regions-title' }, 'Where the light leaves'), regionTable(stats.regions || {}, 'Light leaving each region')),

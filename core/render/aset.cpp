@@ -1,0 +1,184 @@
+#include "render/aset.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "optics/fresnel.h"
+#include "render/camera.h"
+#include "trace/detail/photon_walker.h"
+#include "util/error.h"
+#include "util/parallel.h"
+#include "util/random.h"
+
+namespace facetlight {
+namespace {
+
+// Keeps the view's random streams apart from the tracer's and the renderer's under the same job seed.
+constexpr uint64_t kAsetStreams = 0x41534554ULL;
+
+// Classes a direction outside the stone (stone frame) by where it points in the world.
+class SkyBands {
+  public:
+    SkyBands(const Scene& scene, const AsetSettings& s, const Vec3& toViewer)
+        : scene_(scene),
+          toViewer_(toViewer),
+          cosHead_(std::cos(radians(s.headConeDeg))),
+          sinLow_(std::sin(radians(s.lowBelowDeg))) {}
+
+    AsetClass operator()(const Vec3f& dir) const {
+        const Vec3 w = scene_.toWorld(Vec3{dir.x, dir.y, dir.z});
+        if (w.z < 0) return AsetClass::Leakage;
+        if (dot(w, toViewer_) >= cosHead_) return AsetClass::Head;
+        return w.z >= sinLow_ ? AsetClass::Bright : AsetClass::Low;
+    }
+
+  private:
+    const Scene& scene_;
+    Vec3 toViewer_;
+    double cosHead_, sinLow_;
+};
+
+// What PhotonWalker::step reports, kept as the ray's class.
+struct ViewRayEnd {
+    const SkyBands& bands;
+    AsetClass end = AsetClass::Trapped;
+    void exited(uint32_t, const Vec3f&, const Vec3f& dir, uint32_t) { end = bands(dir); }
+    void internalReflection(uint32_t) {}
+    void trapped(uint32_t) { end = AsetClass::Trapped; }
+    void lost(uint32_t) { end = AsetClass::Trapped; }
+};
+
+// One view ray from `eye` along `dir` (stone frame): false when it misses the stone.
+bool followViewRay(const Scene& scene, const SkyBands& bands, const Vec3f& eye, const Vec3f& dir, float n,
+                   PhotonWalker::Photon& ph, AsetClass& end) {
+    SurfaceHit hit;
+    if (!scene.enter(eye, dir, hit)) return false;
+    const Vec3f p = eye + dir * hit.t;
+    const Vec3f& normal = scene.normal(hit.facet);
+    const float cosI = std::clamp(-dot(dir, normal), 0.0f, 1.0f);
+    const float eta = 1.0f / n;
+    const FresnelResult fr = fresnel(cosI, eta);
+    // A reflection off a convex stone is never met again; on another shape it is not followed (as the
+    // tracer).
+    if (ph.rng.uniform() < fr.reflectance) {
+        end = bands(PhotonWalker::reflectOff(dir, normal, cosI));
+        return true;
+    }
+    ph.p = p;
+    ph.d = PhotonWalker::refractIn(dir, normal, eta, cosI, fr.cosT);
+    ph.n = n;
+    ph.bounces = 0;
+    ViewRayEnd visit{bands};
+    while (PhotonWalker::step(scene, scene, visit, ph)) {
+    }
+    end = visit.end;
+    return true;
+}
+
+AsetShare binomialShare(uint64_t count, uint64_t n) {
+    if (n == 0) return {};
+    const double p = double(count) / double(n);
+    return {p, std::sqrt(p * (1 - p) / double(n))};
+}
+
+}  // namespace
+
+std::string_view asetClassName(AsetClass c) {
+    switch (c) {
+        case AsetClass::Head:
+            return "head";
+        case AsetClass::Bright:
+            return "bright";
+        case AsetClass::Low:
+            return "low";
+        case AsetClass::Leakage:
+            return "leakage";
+        case AsetClass::Trapped:
+            return "trapped";
+    }
+    return "";
+}
+
+uint64_t AsetView::stoneRays() const {
+    uint64_t n = 0;
+    for (uint64_t t : totals) n += t;
+    return n;
+}
+
+AsetShare AsetView::share(AsetClass c) const {
+    return binomialShare(totals[size_t(c)], stoneRays());
+}
+
+bool AsetView::onStone(size_t pixel) const {
+    const auto& c = counts[pixel];
+    return std::any_of(c.begin(), c.end(), [](uint8_t k) { return k > 0; });
+}
+
+bool AsetView::lit(size_t pixel) const {
+    const auto& c = counts[pixel];
+    const int lit = c[size_t(AsetClass::Bright)] + c[size_t(AsetClass::Low)];
+    const int dark =
+        c[size_t(AsetClass::Head)] + c[size_t(AsetClass::Leakage)] + c[size_t(AsetClass::Trapped)];
+    return lit > dark;
+}
+
+AsetView asetView(const Scene& scene, const CameraSettings& cameraSettings, int width, int height,
+                  const AsetSettings& settings, int threads, uint64_t seed, RunControl* control) {
+    settings.validate();
+    if (width < kMinImageSide || width > kMaxImageSide || height < kMinImageSide || height > kMaxImageSide) {
+        throw Error("render.width", "an ASET view's sides must be between " + std::to_string(kMinImageSide) +
+                                        " and " + std::to_string(kMaxImageSide) + " pixels");
+    }
+    const Vec3 target = scene.toWorld(scene.center());
+    const Camera camera(cameraSettings, target, scene.diameter(), width, height);
+    const SkyBands bands(scene, settings, normalize(camera.position() - target));
+    const Vec3f eye(scene.toStone(camera.position()));
+    const float n = float(scene.index(Material::kSodiumD));
+    const uint64_t streams = mix64(seed ^ kAsetStreams);
+
+    AsetView view;
+    view.width = width;
+    view.height = height;
+    view.samples = settings.samples;
+    view.counts.assign(size_t(width) * size_t(height), {});
+    using Totals = std::array<uint64_t, kAsetClasses>;
+    const WorkerStates<Totals> workers = parallelForBlocks(
+        BlockLoop{0, uint64_t(height), 1, threads}, control, Totals{},
+        [&](Totals& totals, uint64_t y, uint64_t) {
+            for (int x = 0; x < width; ++x) {
+                const uint64_t pixel = y * uint64_t(width) + uint64_t(x);
+                auto& counts = view.counts[pixel];
+                for (int s = 0; s < settings.samples; ++s) {
+                    PhotonWalker::Photon ph;
+                    ph.rng = Rng(streams, pixel * uint64_t(settings.samples) + uint64_t(s));
+                    const double px = x + ph.rng.uniformDouble(), py = double(y) + ph.rng.uniformDouble();
+                    const Vec3f dir(scene.toStone(camera.direction(px, py)));
+                    AsetClass end;
+                    if (!followViewRay(scene, bands, eye, dir, n, ph, end)) continue;
+                    ++counts[size_t(end)];
+                    ++totals[size_t(end)];
+                }
+            }
+            return uint64_t(width);
+        });
+    for (const Totals& t : workers.states) {
+        for (int c = 0; c < kAsetClasses; ++c) view.totals[c] += t[c];
+    }
+    view.cancelled = !workers.finished;
+    return view;
+}
+
+nlohmann::json toJson(const AsetView& view, const AsetSettings& settings) {
+    nlohmann::json shares = nlohmann::json::object();
+    for (int c = 0; c < kAsetClasses; ++c) {
+        const AsetShare s = view.share(AsetClass(c));
+        shares[std::string(asetClassName(AsetClass(c)))] = {{"share", s.share}, {"stderr", s.standardError}};
+    }
+    return {{"settings", toJson(settings)},
+            {"width", view.width},
+            {"height", view.height},
+            {"rays", view.stoneRays()},
+            {"shares", shares}};
+}
+
+}  // namespace facetlight

@@ -1,0 +1,67 @@
+#include "render/tilt_series.h"
+
+#include <cmath>
+
+#include "intersect/scene.h"
+
+namespace facetlight {
+
+AsetShare TiltSeries::scintillation() const {
+    if (pixelPairs == 0) return {};
+    const double p = double(switched) / double(pixelPairs);
+    return {p, std::sqrt(p * (1 - p) / double(pixelPairs))};
+}
+
+TiltSeries tiltSeries(const Stone& stone, const TraceSettings& trace, const CameraSettings& camera, int width,
+                      int height, const AsetSettings& aset, const TiltSeriesSettings& settings,
+                      RunControl* control) {
+    settings.validate();
+    TiltSeries series;
+    for (int k = 0; k < settings.frames(); ++k) {
+        TraceSettings tilted = trace;
+        tilted.light.tiltDeg += settings.tiltDeg(k);
+        const Scene scene(stone, tilted);
+        TiltFrame frame{settings.tiltDeg(k),
+                        asetView(scene, camera, width, height, aset, trace.threads, trace.seed, control),
+                        {}};
+        if (frame.view.cancelled) {
+            series.cancelled = true;
+            return series;
+        }
+        const AsetShare bright = frame.view.share(AsetClass::Bright), low = frame.view.share(AsetClass::Low);
+        const double p = bright.share + low.share, n = double(frame.view.stoneRays());
+        frame.lightReturn = {p, n > 0 ? std::sqrt(p * (1 - p) / n) : 0};
+        if (!series.frames.empty()) {
+            const AsetView& before = series.frames.back().view;
+            for (size_t i = 0; i < before.counts.size(); ++i) {
+                if (!before.onStone(i) || !frame.view.onStone(i)) continue;
+                ++series.pixelPairs;
+                series.switched += before.lit(i) != frame.view.lit(i);
+            }
+        }
+        series.frames.push_back(std::move(frame));
+    }
+    return series;
+}
+
+nlohmann::json toJson(const TiltSeries& series, const TiltSeriesSettings& settings) {
+    nlohmann::json frames = nlohmann::json::array();
+    for (const TiltFrame& f : series.frames) {
+        nlohmann::json shares = nlohmann::json::object();
+        for (int c = 0; c < kAsetClasses; ++c) {
+            shares[std::string(asetClassName(AsetClass(c)))] = f.view.share(AsetClass(c)).share;
+        }
+        frames.push_back({{"tilt_deg", f.tiltDeg},
+                          {"light_return", f.lightReturn.share},
+                          {"light_return_stderr", f.lightReturn.standardError},
+                          {"shares", shares}});
+    }
+    const AsetShare s = series.scintillation();
+    return {{"settings", toJson(settings)},
+            {"frames", frames},
+            {"scintillation", s.share},
+            {"scintillation_stderr", s.standardError},
+            {"pixel_pairs", series.pixelPairs}};
+}
+
+}  // namespace facetlight
