@@ -11,7 +11,9 @@
 #include "progress_json.h"
 #include "study/study.h"
 #include "terminal_output.h"
+#include "util/bounded_read.h"
 #include "util/error.h"
+#include "util/json_text.h"
 
 namespace facetlight::cli {
 namespace {
@@ -24,14 +26,11 @@ struct StudyOptions {
     bool progressJson = false;
 };
 
+// A job file is a few hundred bytes; the cap is the service's default body limit.
+constexpr size_t kMaxJobFileBytes = 1 << 20;
+
 nlohmann::json readJob(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error("cannot read job file " + path);
-    try {
-        return nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw Error("job file " + path + " is not JSON: " + e.what());
-    }
+    return parseUntrustedJson(readFileUpTo(path, kMaxJobFileBytes, "job file"), "job file " + path);
 }
 
 void runStudyCommand(const StudyOptions& options) {

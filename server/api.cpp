@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "util/error.h"
+#include "util/json_text.h"
 
 namespace facetlight::server {
 namespace {
@@ -78,21 +79,28 @@ std::string mediaType(const Request& req) {
     return type;
 }
 
-// Reads the whole body, refusing more than `limit` bytes; nullopt when it was too large.
-std::optional<std::string> readBody(const httplib::ContentReader& reader, size_t limit) {
-    std::string body;
+// A request body read whole, or why not.
+struct Body {
+    std::string bytes;
     bool tooLarge = false;
-    reader([&](const char* data, size_t n) {
-        if (body.size() + n > limit) {
-            tooLarge = true;
+    bool complete = false;  // every byte of the Content-Length arrived
+};
+
+Body readBody(const httplib::ContentReader& reader, size_t limit) {
+    Body body;
+    body.complete = reader([&](const char* data, size_t n) {
+        if (body.bytes.size() + n > limit) {
+            body.tooLarge = true;
             return false;
         }
-        body.append(data, n);
+        body.bytes.append(data, n);
         return true;
     });
-    if (tooLarge) return std::nullopt;
     return body;
 }
+
+// A body that stopped short of its Content-Length (the client went away, or lied): nothing is stored.
+constexpr const char* kShortBody = "the body ended before its Content-Length; nothing was stored";
 
 // A query parameter as an integer in [lo, hi]; `fallback` when absent. Throws Error naming it.
 int64_t queryInt(const Request& req, const std::string& name, int64_t fallback, int64_t lo, int64_t hi) {
@@ -116,10 +124,10 @@ json nullIfEmpty(const std::string& s) {
 }
 
 void logRequest(const Request& req, const Response& res) {
-    char line[512];
-    std::snprintf(line, sizeof line, "%s %s \"%s %.200s\" %d %zu\n", nowIso8601().c_str(),
-                  req.remote_addr.c_str(), req.method.c_str(), req.path.c_str(), res.status, res.body.size());
-    std::fputs(line, stderr);
+    const std::string line = nowIso8601() + " " + req.remote_addr + " \"" + escapeForLog(req.method, 16) + " " +
+                             escapeForLog(req.path) + "\" " + std::to_string(res.status) + " " +
+                             std::to_string(res.body.size()) + "\n";
+    std::fputs(line.c_str(), stderr);
 }
 
 }  // namespace
@@ -208,16 +216,21 @@ json Api::statusJson(const JobRecord& job) const {
 
 void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
     const std::string type = mediaType(req);
-    const auto body = readBody(reader, limits_.maxBodyBytes);
-    if (!body) {
+    const Body body = readBody(reader, limits_.maxBodyBytes);
+    if (body.tooLarge) {
         return problem(res, 413, "the job is larger than " + std::to_string(limits_.maxBodyBytes) + " bytes");
     }
+    if (!body.complete) return problem(res, 400, kShortBody);
     if (!type.empty() && type != kJsonType && type != "application/x-www-form-urlencoded" &&
         type != "text/plain") {
         return problem(res, 415, "send the job as application/json (got " + type + ")");
     }
-    json j = json::parse(*body, nullptr, false);
-    if (j.is_discarded()) return problem(res, 400, "the body is not valid JSON");
+    json j;
+    try {
+        j = parseUntrustedJson(body.bytes, "the body");
+    } catch (const Error& e) {
+        return problem(res, 400, e.what());
+    }
     if (!j.is_object()) return problem(res, 400, "the job must be a JSON object");
     JobSpec spec;
     try {
@@ -250,22 +263,26 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
         bytes.append(data, n);
         return true;
     };
+    bool complete = false;
     if (req.is_multipart_form_data()) {
+        // The first part named "file" is the mesh; other parts are read and dropped.
         int files = 0;
-        reader(
+        bool inFile = false;
+        complete = reader(
             [&](const httplib::MultipartFormData& part) {
-                if (part.name != "file") return true;
-                if (!part.filename.empty()) fileName = part.filename;
-                return ++files == 1;
+                inFile = part.name == "file" && ++files == 1;
+                if (inFile && !part.filename.empty()) fileName = part.filename;
+                return true;
             },
-            [&](const char* data, size_t n) { return files == 1 ? receive(data, n) : true; });
+            [&](const char* data, size_t n) { return inFile ? receive(data, n) : true; });
     } else {
-        reader(receive);
+        complete = reader(receive);
     }
     if (tooLarge) {
         return problem(res, 413,
                        "the upload is larger than " + std::to_string(limits_.maxUploadBytes) + " bytes");
     }
+    if (!complete) return problem(res, 400, kShortBody);
     std::optional<MeshFormat> format;
     if (req.has_param("format")) {
         format = parseMeshFormat(req.get_param_value("format"));
@@ -409,32 +426,15 @@ void Api::install(httplib::Server& server, bool accessLog) {
     }
     if (!plain.empty() || !withReader.empty()) throw std::logic_error("handler without a route");
 
-    const size_t maxBody = limits_.maxBodyBytes, maxUpload = limits_.maxUploadBytes,
-                 maxUrl = limits_.maxUrlBytes;
-    server.set_payload_max_length(std::max(maxBody, maxUpload));
-    server.set_pre_routing_handler([=](const Request& req, Response& res) {
-        using R = httplib::Server::HandlerResponse;
-        if (req.target.size() > maxUrl) {
-            res.set_header("Connection", "close");
-            problem(res, 414, "the URL is longer than " + std::to_string(maxUrl) + " bytes");
-            return R::Handled;
-        }
-        if (req.has_header("Transfer-Encoding")) {
-            res.set_header("Connection", "close");
-            problem(res, 411, "chunked request bodies are not accepted: send Content-Length");
-            return R::Handled;
-        }
-        const size_t limit = req.path == "/api/meshes" ? maxUpload : maxBody;
-        if (req.has_header("Content-Length")) {
-            const std::string v = req.get_header_value("Content-Length");
-            if (v.size() > 15 || v.find_first_not_of("0123456789") != std::string::npos ||
-                std::stoull(v) > limit) {
-                res.set_header("Connection", "close");
-                problem(res, 413, "the request body is larger than " + std::to_string(limit) + " bytes");
-                return R::Handled;
-            }
-        }
-        return R::Unhandled;
+    RequestRules rules{routes(), limits_.maxUrlBytes, limits_.maxBodyBytes,
+                       {{"POST /api/jobs", limits_.maxBodyBytes}, {"POST /api/meshes", limits_.maxUploadBytes}}};
+    server.set_payload_max_length(std::max(limits_.maxBodyBytes, limits_.maxUploadBytes));
+    server.set_pre_routing_handler([rules = std::move(rules)](const Request& req, Response& res) {
+        const auto refusal = checkRequest(req, rules);
+        if (!refusal) return httplib::Server::HandlerResponse::Unhandled;
+        for (const auto& [name, value] : refusal->headers) res.set_header(name, value);
+        problem(res, refusal->status, refusal->detail);
+        return httplib::Server::HandlerResponse::Handled;
     });
     server.set_error_handler(httplib::Server::HandlerWithResponse([](const Request&, Response& res) {
         if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;

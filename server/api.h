@@ -11,13 +11,9 @@
 #include "job_spec.h"
 #include "job_store.h"
 #include "mesh_catalog.h"
+#include "request_guard.h"
 
 namespace facetlight::server {
-
-struct Route {
-    std::string method;  // GET, POST, DELETE
-    std::string path;    // as in the OpenAPI document: /api/jobs/{id}
-};
 
 // The OpenAPI 3 description of the routes below, embedded at build time from server/openapi.json.
 std::string_view openApiDocument();

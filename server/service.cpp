@@ -6,14 +6,12 @@
 
 namespace facetlight::server {
 
-Service::Service(ServiceConfig config) : config_(std::move(config)) {
+Service::Service(ServiceConfig config) : config_(std::move(config)), http_(config_.http) {
     const int cores = config_.cores > 0 ? config_.cores : int(std::thread::hardware_concurrency());
     store_ = std::make_unique<JobStore>(config_.dataDir);
     catalog_ = std::make_unique<MeshCatalog>(*store_, config_.meshesDir);
     queue_ = std::make_unique<JobQueue>(*store_, *catalog_, config_.limits.maxQueued, cores, config_.launch);
     api_ = std::make_unique<Api>(*store_, *queue_, *catalog_, config_.limits);
-    const int httpThreads = std::max(1, config_.httpThreads);
-    http_.new_task_queue = [httpThreads] { return new httplib::ThreadPool(size_t(httpThreads)); };
     http_.set_tcp_nodelay(true);  // headers and body go out as two writes: no Nagle delay between them
     api_->install(http_, config_.accessLog);
     std::error_code ec;
@@ -34,11 +32,11 @@ Service::~Service() {
 }
 
 bool Service::bind(const std::string& host, int port) {
-    return http_.bind_to_port(host, port);
+    return http_.bind(host, port);
 }
 
 int Service::bindToAnyPort(const std::string& host) {
-    return http_.bind_to_any_port(host);
+    return http_.bindToAnyPort(host);
 }
 
 bool Service::listen() {

@@ -1,8 +1,10 @@
 #include "trace/trace_settings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
+#include "geometry/polygon_mesh.h"
 #include "optics/material.h"
 #include "util/error.h"
 #include "util/json_fields.h"
@@ -75,7 +77,10 @@ void TraceSettings::validate() const {
     if (!(light.headShadowDeg >= 0 && light.headShadowDeg < 90)) {
         throw Error("light.head_shadow_deg must be at least 0 and below 90");
     }
-    if (!isFinite(light.position)) throw Error("light.position must be finite");
+    // No stone reaches beyond kMaxMeshCoordinate; LightModel refuses a light too far for its stone.
+    const Vec3& p = light.position;
+    if (!isFinite(p) || std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kMaxMeshCoordinate)
+        throw Error("light.position must be finite, each coordinate within 1e9");
 }
 
 json toJson(const LightSettings& s) {

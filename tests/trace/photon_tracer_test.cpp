@@ -334,6 +334,42 @@ TEST(PhotonTracer, CollimatedStraightDownHitsAlmostEveryPhoton) {
     EXPECT_NEAR(double(r.stats.hit) / double(r.stats.photons), octagonShare, 0.01);
 }
 
+// Issue 18: a direction of 1e308 components normalised to zero and "succeeded" with no photon hitting.
+TEST(PhotonTracer, HugeDirectionIsTheSameDirection) {
+    const Stone stone = singleCut();
+    TraceSettings huge = baseSettings(2'000);
+    huge.light.direction = {1e308, 1e308, -1e308};
+    TraceSettings unit = huge;
+    unit.light.direction = {1, 1, -1};
+    const TraceResult a = trace(stone, huge), b = trace(stone, unit);
+    EXPECT_GT(a.stats.hit, 0u);
+    EXPECT_EQ(a.stats.hit, b.stats.hit);
+    EXPECT_EQ(a.stats.tallies(), b.stats.tallies());
+}
+
+// Issue 18: a point light at 1e308 "succeeded" with no photon hitting. Settings refuse coordinates beyond
+// 1e9; the light model refuses a light further than 10^4 stone radii.
+TEST(PhotonTracer, FarPointLightIsRefused) {
+    const Stone stone = singleCut();
+    TraceSettings settings = baseSettings(100);
+    settings.light.model = LightModelKind::Point;
+    const std::pair<Vec3, std::string> cases[] = {
+        {{0, 0, 1e308}, "light.position must be finite, each coordinate within 1e9"},
+        {{1e308, 1e308, 1e308}, "light.position must be finite, each coordinate within 1e9"},
+        {{0, 0, 1e6}, "light.position must lie within 10000 stone radii"}};
+    for (const auto& [far, message] : cases) {
+        settings.light.position = far;
+        try {
+            trace(stone, settings);
+            ADD_FAILURE() << "a point light at " << far.z << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+        }
+    }
+    settings.light.position = {0, 0, 100};
+    EXPECT_GT(trace(stone, settings).stats.hit, 0u);
+}
+
 TEST(ExitAngleBins, MatchAcosExceptAtBinBoundaries) {
     const ExitAngleBins bin;
     EXPECT_EQ(bin(1.0f), 0);
