@@ -184,6 +184,7 @@ void sendTooManyConnections(int sock, size_t limit) {
 HttpServer::HttpServer(const ConnectionLimits& limits) : limits_(limits) {
     const size_t threads = std::max<size_t>(1, limits.threads), maxThreads = limits.maxThreads;
     new_task_queue = [threads, maxThreads] { return new GrowingThreadPool(threads, maxThreads); };
+    set_keep_alive_max_count(std::max<size_t>(1, limits.keepAliveRequests));
     // 400, 413 and 414 also come from httplib's own parser, which leaves the rest of the request unread.
     set_post_routing_handler([](const httplib::Request&, httplib::Response& res) {
         closeAfterResponse = res.get_header_value("Connection") == "close" || res.status == 400 ||

@@ -20,6 +20,7 @@ struct ConnectionLimits {
     size_t maxPerPeer = 64;            // connections open at once from one address
     std::chrono::milliseconds requestTimeout{30'000};  // request line, headers and body, from the first byte
     int backlog = 1024;                // connections waiting to be accepted (the kernel caps it at somaxconn)
+    size_t keepAliveRequests = 1000;   // requests on one connection (httplib's 5 made pollers reconnect)
 };
 
 class HttpServer : public httplib::Server {
