@@ -47,11 +47,10 @@ int main(int argc, char** argv) {
         TraceSettings trace;
         trace.threads = threads;
         const Scene scene(stone, trace);
-        const TraceScene traceScene(stone, trace);
         std::vector<double> pass, build, draw, drawCpu, total;
         for (int r = 0; r < runs; ++r) {
             const auto t0 = std::chrono::steady_clock::now();
-            FloorPhotons photons = traceFloorPhotons(scene, traceScene, settings.mapPhotons, threads);
+            FloorPhotons photons = traceFloorPhotons(scene, settings.mapPhotons, threads);
             pass.push_back(seconds(t0));
             const auto t1 = std::chrono::steady_clock::now();
             const PhotonMap caustics(std::move(photons.caustic), threads);

@@ -70,7 +70,7 @@ void traceStats(benchmark::State& state, const Stone& stone, bool dispersion = f
     settings.photons = 4'000'000;
     settings.threads = int(state.range(0));
     settings.dispersion = dispersion;
-    const TraceScene scene(stone, settings);
+    const Scene scene(stone, settings);
     uint64_t interfaces = 0;
     for (auto _ : state) {
         FacetStats stats(stone.facets.size());

@@ -14,26 +14,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/run_control.h"
+
 namespace facetlight::cli {
-
-struct ProgressSample {
-    std::string phase;
-    uint64_t done = 0, total = 0;
-    bool operator==(const ProgressSample&) const = default;
-};
-
-// A rank's progress through its share `localTotal` of a job of `jobTotal` units, as the job's.
-inline ProgressSample jobProgress(std::string phase, uint64_t localDone, uint64_t localTotal,
-                                  uint64_t jobTotal) {
-    const uint64_t done =
-        localTotal ? uint64_t(double(localDone) / double(localTotal) * double(jobTotal)) : 0;
-    return {std::move(phase), std::min(done, jobTotal), jobTotal};
-}
 
 class ProgressJson {
   public:
-    // Does nothing unless `enabled`; `sample` is called from the reporting thread.
-    ProgressJson(bool enabled, std::function<ProgressSample()> sample) : sample_(std::move(sample)) {
+    // Does nothing unless `enabled`. `control` counts this process's share of each phase; jobUnits(phase)
+    // gives the units of the phase over every rank, to which the share's progress is scaled, as if every
+    // rank kept pace. Called from the reporting thread.
+    ProgressJson(bool enabled, const RunControl& control, std::function<uint64_t(RunPhase)> jobUnits)
+        : control_(control), jobUnits_(std::move(jobUnits)) {
         if (enabled) thread_ = std::thread([this] { run(); });
     }
     ~ProgressJson() {
@@ -50,23 +41,29 @@ class ProgressJson {
 
   private:
     void run() {
-        ProgressSample last{"", ~uint64_t(0), 0};
+        std::string last;
         std::unique_lock lock(mutex_);
         for (;;) {
             const bool stopping =
                 wake_.wait_for(lock, std::chrono::milliseconds(200), [this] { return stop_; });
-            const ProgressSample now = sample_();
-            if (!(now == last)) {
+            const RunPhase phase = control_.phase();
+            const uint64_t done = control_.done(), total = control_.total(), units = jobUnits_(phase);
+            const uint64_t jobDone =
+                total ? uint64_t(static_cast<unsigned __int128>(done) * units / total) : 0;
+            const nlohmann::json j = {
+                {"phase", runPhaseName(phase)}, {"done", std::min(jobDone, units)}, {"total", units}};
+            std::string line = j.dump() + "\n";
+            if (line != last) {
                 // One write per line, so lines from this thread never interleave with each other.
-                const nlohmann::json j = {{"phase", now.phase}, {"done", now.done}, {"total", now.total}};
-                std::cerr << (j.dump() + "\n") << std::flush;
-                last = now;
+                std::cerr << line << std::flush;
+                last = std::move(line);
             }
             if (stopping) return;
         }
     }
 
-    std::function<ProgressSample()> sample_;
+    const RunControl& control_;
+    std::function<uint64_t(RunPhase)> jobUnits_;
     std::mutex mutex_;
     std::condition_variable wake_;
     bool stop_ = false;

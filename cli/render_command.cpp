@@ -37,17 +37,13 @@ void run(RenderOptions& o) {
     if (ec || !fs::is_directory(out)) throw Error("cannot create the output folder '" + o.out + "'");
     const Stone stone = resolveStone(o.trace.mesh);
 
-    StudyControl control;
+    RunControl control;
     // Under mpirun the ranks split the photons and the tiles; rank 0 writes (docs/distributed.md).
     Communicator& comm = processCommunicator();
     StudyResult result;
     const auto start = std::chrono::steady_clock::now();
     {
-        ProgressLine bar(comm.isRoot(), [&] {
-            const uint64_t total = control.total.load();
-            return ProgressLine::bar(studyPhaseName(control.phase.load()),
-                                     total ? double(control.done.load()) / double(total) : 0.0);
-        });
+        ProgressLine bar(comm.isRoot(), control);
         result = runStudy(stone, settings, control, comm);
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -44,16 +44,11 @@ void runStudyCommand(const StudyOptions& options) {
     Stone stone = resolveStone(job["mesh"].get<std::string>());
     if (job.contains("name") && job["name"].is_string()) stone.name = job["name"];
 
-    StudyControl control;
+    RunControl control;
     StudyResult result;
     {
-        ProgressJson progress(options.progressJson && comm.isRoot(), [&] {
-            const StudyPhase phase = control.phase;
-            // Rank 0 sees its own share of the trace: scaled to the job, as if every rank kept pace.
-            if (phase == StudyPhase::Tracing)
-                return jobProgress("tracing", control.done, control.total, settings.trace.photons);
-            return ProgressSample{std::string(studyPhaseName(phase)), control.done, control.total};
-        });
+        ProgressJson progress(options.progressJson && comm.isRoot(), control,
+                              [&](RunPhase phase) { return studyUnits(settings, phase); });
         result = runStudy(stone, settings, control, comm);
     }
     if (!comm.isRoot()) return;

@@ -8,13 +8,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <string>
 #include <string_view>
 #include <thread>
 
 #include "stone/stone.h"
 #include "util/error.h"
+#include "util/run_control.h"
 
 namespace facetlight::cli {
 
@@ -43,14 +43,16 @@ inline void printProportions(const Proportions& p) {
     line("pavilion angle", p.pavilionAngleDeg, "deg");
 }
 
-// Redraws `line()` on stderr every 100 ms while it lives, only when stderr is a terminal and `wanted`.
+// Redraws the run's phase and a bar of its progress on stderr every 100 ms while it lives, only when stderr
+// is a terminal and `wanted`.
 class ProgressLine {
   public:
-    ProgressLine(bool wanted, std::function<std::string()> line) {
+    ProgressLine(bool wanted, const RunControl& control) {
         if (!wanted || !isatty(STDERR_FILENO)) return;
-        thread_ = std::thread([this, line = std::move(line)] {
+        thread_ = std::thread([this, &control] {
             while (!finished_.load()) {
-                std::fprintf(stderr, "\r%-60s", line().c_str());
+                std::fprintf(stderr, "\r%-60s",
+                             bar(runPhaseName(control.phase()), control.fraction()).c_str());
                 std::fflush(stderr);
                 std::this_thread::sleep_for(std::chrono::milliseconds(100));
             }

@@ -29,17 +29,16 @@ void run(const TraceCommandOptions& o) {
     const Stone stone = resolveStone(o.trace.mesh);
     // Under mpirun the ranks split the blocks and rank 0 alone reports (docs/distributed.md).
     Communicator& comm = processCommunicator();
-    const uint64_t local = localPhotons(comm, settings.photons);
-    TraceControl control;
+    const Scene scene(stone, settings);
+    RunControl control;
+    control.startPhase(RunPhase::Tracing, localPhotons(comm, settings.photons));
     TraceResult result;
     {
-        ProgressLine bar(comm.isRoot() && !o.progressJson, [&] {
-            return ProgressLine::bar("tracing", double(control.photonsDone.load()) / double(local));
+        ProgressLine bar(comm.isRoot() && !o.progressJson, control);
+        ProgressJson progress(o.progressJson && comm.isRoot(), control, [&](RunPhase phase) {
+            return phase == RunPhase::Tracing ? settings.photons : 0;
         });
-        ProgressJson progress(o.progressJson && comm.isRoot(), [&] {
-            return jobProgress("tracing", control.photonsDone, local, settings.photons);
-        });
-        result = traceDistributed(comm, stone, settings, &control);
+        result = traceDistributed(comm, scene, &control);
     }
 
     if (!comm.isRoot()) return;

@@ -182,12 +182,13 @@ json Api::statusJson(const JobRecord& job) const {
             break;
         case JobState::Running:
             if (const auto live = queue_.live(job.id)) {
-                const bool queuedPhase = live->phase == StudyPhase::Queued;
-                progress = {{"phase", queuedPhase ? "starting" : studyPhaseName(live->phase)},
-                            {"done", live->done},
-                            {"total", live->total},
-                            {"fraction", live->total ? double(live->done) / double(live->total) : 0.0}};
-                doc["cancel_requested"] = live->cancelRequested;
+                const RunPhase phase = live->phase();
+                const uint64_t done = live->done(), total = live->total();
+                progress = {{"phase", phase == RunPhase::Queued ? "starting" : runPhaseName(phase)},
+                            {"done", done},
+                            {"total", total},
+                            {"fraction", total ? double(done) / double(total) : 0.0}};
+                doc["cancel_requested"] = live->cancelled();
             }
             links["cancel"] = self + "/cancel";
             break;

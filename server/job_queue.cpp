@@ -35,7 +35,7 @@ void JobQueue::stop() {
         std::lock_guard lock(mutex_);
         if (!worker_.joinable()) return;
         stopping_ = true;
-        if (running_) running_->cancel = true;
+        if (running_) running_->cancel();
     }
     wake_.notify_all();
     worker_.join();
@@ -60,7 +60,7 @@ JobQueue::CancelOutcome JobQueue::cancel(const std::string& id) {
         return CancelOutcome::Canceled;
     }
     if (running_ && runningId_ == id) {
-        running_->cancel = true;
+        running_->cancel();
         return CancelOutcome::Requested;
     }
     return CancelOutcome::NotActive;
@@ -73,11 +73,10 @@ std::optional<size_t> JobQueue::queuePosition(const std::string& id) const {
     return size_t(it - queued_.begin()) + 1;
 }
 
-std::optional<LiveProgress> JobQueue::live(const std::string& id) const {
+std::shared_ptr<const RunControl> JobQueue::live(const std::string& id) const {
     std::lock_guard lock(mutex_);
-    if (!running_ || runningId_ != id) return std::nullopt;
-    return LiveProgress{running_->phase.load(), running_->done.load(), running_->total.load(),
-                        running_->cancel.load()};
+    if (!running_ || runningId_ != id) return nullptr;
+    return running_;
 }
 
 size_t JobQueue::queuedCount() const {
@@ -87,7 +86,7 @@ size_t JobQueue::queuedCount() const {
 
 void JobQueue::workerLoop() {
     for (;;) {
-        std::shared_ptr<StudyControl> control;
+        std::shared_ptr<RunControl> control;
         std::string id;
         {
             std::unique_lock lock(mutex_);
@@ -95,7 +94,7 @@ void JobQueue::workerLoop() {
             if (stopping_) return;
             id = queued_.front();
             queued_.pop_front();
-            control = std::make_shared<StudyControl>();
+            control = std::make_shared<RunControl>();
             running_ = control;
             runningId_ = id;
         }
@@ -110,7 +109,7 @@ void JobQueue::workerLoop() {
     }
 }
 
-void JobQueue::runJob(const std::string& id, StudyControl& control) {
+void JobQueue::runJob(const std::string& id, RunControl& control) {
     try {
         const auto job = store_.job(id);
         if (!job) return;  // deleted while queued

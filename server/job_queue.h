@@ -1,6 +1,6 @@
 #pragma once
 // The bounded queue and its one worker thread: jobs run one at a time, off the HTTP threads, each with the
-// threads it asked for capped at the machine's cores. Cancelling a running job sets its StudyControl flag;
+// threads it asked for capped at the machine's cores. Cancelling a running job cancels its RunControl;
 // stopping the service hands the running job back to the queue, so it runs again after a restart.
 #include <condition_variable>
 #include <cstdint>
@@ -16,12 +16,6 @@
 #include "study/study.h"
 
 namespace facetlight::server {
-
-struct LiveProgress {
-    StudyPhase phase = StudyPhase::Queued;
-    uint64_t done = 0, total = 0;
-    bool cancelRequested = false;
-};
 
 class JobQueue {
   public:
@@ -43,13 +37,14 @@ class JobQueue {
     CancelOutcome cancel(const std::string& id);
 
     std::optional<size_t> queuePosition(const std::string& id) const;  // 1 for the next to run
-    std::optional<LiveProgress> live(const std::string& id) const;     // the running job's progress
+    // The running job's progress (read without a lock); none unless `id` is running.
+    std::shared_ptr<const RunControl> live(const std::string& id) const;
     size_t queuedCount() const;
     int cores() const { return cores_; }
 
   private:
     void workerLoop();
-    void runJob(const std::string& id, StudyControl& control);
+    void runJob(const std::string& id, RunControl& control);
 
     JobStore& store_;
     const MeshCatalog& catalog_;
@@ -61,7 +56,7 @@ class JobQueue {
     std::condition_variable wake_;
     std::deque<std::string> queued_;
     std::string runningId_;
-    std::shared_ptr<StudyControl> running_;
+    std::shared_ptr<RunControl> running_;
     bool stopping_ = false;
     std::thread worker_;
 };

@@ -125,28 +125,22 @@ bool useLauncher(const LaunchSettings& launch, const StudySettings& settings) {
     return photons >= launch.minPhotons;
 }
 
-bool applyProgressLine(std::string_view line, StudyControl& control) {
+bool applyProgressLine(std::string_view line, RunControl& control) {
     if (line.empty() || line.front() != '{') return false;
     const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
     if (!j.is_object() || !j.contains("phase") || !j["phase"].is_string()) return false;
-    const std::string phase = j["phase"];
-    for (StudyPhase p : {StudyPhase::Queued, StudyPhase::Tracing, StudyPhase::PhotonMap,
-                         StudyPhase::Rendering, StudyPhase::Done}) {
-        if (studyPhaseName(p) != phase) continue;
-        const auto count = [&](const char* key) {
-            const auto it = j.find(key);
-            return it != j.end() && it->is_number_unsigned() ? it->get<uint64_t>() : uint64_t(0);
-        };
-        control.total = count("total");
-        control.done = count("done");
-        control.phase = p;
-        return true;
-    }
-    return false;
+    const std::optional<RunPhase> phase = runPhaseNamed(j["phase"].get<std::string>());
+    if (!phase) return false;
+    const auto count = [&](const char* key) {
+        const auto it = j.find(key);
+        return it != j.end() && it->is_number_unsigned() ? it->get<uint64_t>() : uint64_t(0);
+    };
+    control.show(*phase, count("done"), count("total"));
+    return true;
 }
 
 ChildExit runChild(const std::vector<std::string>& argv, const std::function<bool(std::string_view)>& onLine,
-                   const std::atomic<bool>& cancel, std::chrono::milliseconds cancelGrace) {
+                   const RunControl& control, std::chrono::milliseconds cancelGrace) {
     if (argv.empty()) throw Error("launcher: nothing to run");
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) throw Error(std::string("launcher: pipe: ") + std::strerror(errno));
@@ -200,7 +194,7 @@ ChildExit runChild(const std::vector<std::string>& argv, const std::function<boo
     try {
         std::array<char, 4096> buffer;
         for (bool open = true; open;) {
-            if (cancel.load() && !result.cancelled) {
+            if (control.cancelled() && !result.cancelled) {
                 result.cancelled = true;
                 kill(-pid, SIGTERM);
                 if (!reap(pid, status, cancelGrace)) {
@@ -243,7 +237,7 @@ ChildExit runChild(const std::vector<std::string>& argv, const std::function<boo
 }
 
 StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
-                            const StudySettings& settings, StudyControl& control) {
+                            const StudySettings& settings, RunControl& control) {
     const JobFolder folder(launch.workDir);
     nlohmann::json job = {{"mesh", mesh.source}, {"trace", toJson(settings.trace)}};
     if (!mesh.name.empty()) job["name"] = mesh.name;
@@ -263,7 +257,7 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
     argv.push_back(folder.path().string());
 
     const ChildExit exit = runChild(
-        argv, [&](std::string_view line) { return applyProgressLine(line, control); }, control.cancel,
+        argv, [&](std::string_view line) { return applyProgressLine(line, control); }, control,
         launch.cancelGrace);
     if (exit.cancelled) throw Canceled();
     const std::string command = argv.front();

@@ -39,13 +39,13 @@ struct ChildMesh {
 };
 
 // Runs the study in a child and returns its results. Follows the child's progress into `control`; when
-// control.cancel is set, ends the child's process group (SIGTERM, then SIGKILL after the grace period) and
-// throws Canceled. A launch that fails or exits non-zero throws Error with the end of the child's output.
+// control.cancel() is called, ends the child's process group (SIGTERM, then SIGKILL after the grace period)
+// and throws Canceled. A launch that fails or exits non-zero throws Error with the end of the child's output.
 StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
-                            const StudySettings& settings, StudyControl& control);
+                            const StudySettings& settings, RunControl& control);
 
 // The process part, for tests: runs argv in its own process group with stdout and stderr on one pipe, calls
-// onLine for each output line, ends the group when `cancel` becomes true.
+// onLine for each output line, ends the group when control.cancelled() becomes true.
 struct ChildExit {
     int exitCode = -1;  // valid when signal == 0
     int signal = 0;     // the signal that ended the child, if any
@@ -53,10 +53,10 @@ struct ChildExit {
     std::string tail;  // the last few KB of output that were not progress lines
 };
 ChildExit runChild(const std::vector<std::string>& argv,
-                   const std::function<bool(std::string_view line)>& onLine, const std::atomic<bool>& cancel,
+                   const std::function<bool(std::string_view line)>& onLine, const RunControl& control,
                    std::chrono::milliseconds cancelGrace);
 
 // Reads a progress line {"phase": "tracing", "done": 1, "total": 2} into control; false if it is not one.
-bool applyProgressLine(std::string_view line, StudyControl& control);
+bool applyProgressLine(std::string_view line, RunControl& control);
 
 }  // namespace facetlight::server

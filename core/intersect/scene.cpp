@@ -5,6 +5,8 @@
 
 #include "intersect/convex_intersector.h"
 #include "intersect/embree_intersector.h"
+#include "optics/fresnel.h"
+#include "trace/detail/photon_walker.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
 
@@ -23,32 +25,54 @@ Scene::Scene(const Stone& stone, const TraceSettings& settings)
       settings_(settings),
       material_((settings.validate(),
                  settings.n ? Material::constant(*settings.n) : Material::byName(settings.material))),
-      light_(settings.light, stone) {
+      light_(settings.light, stone),
+      fixedIndex_(float(material_.indexD())) {
     if (stone.facets.empty()) throw Error("stone '" + stone.name + "' has no facets");
     dispersive_ = settings.dispersion && material_.dispersive();
+    for (const Facet& f : stone.facets) {
+        facetRegion_.push_back(f.region);
+        normal_.emplace_back(f.normal);
+    }
     cosTilt_ = std::cos(radians(settings.light.tiltDeg));
     sinTilt_ = std::sin(radians(settings.light.tiltDeg));
-    up_ = toStone({0, 0, 1});
+    vertical_ = toStone({0, 0, 1});
+    up_ = Vec3f(vertical_);
     center_ = stone.bounds.center();
     const Vec3 extent = stone.bounds.extent();
     diameter_ = stone.proportions.diameter > 0 ? stone.proportions.diameter : std::max(extent.x, extent.y);
     floorHeight_ = INFINITY;
-    for (const Vec3& v : stone.vertices) floorHeight_ = std::min(floorHeight_, dot(up_, v));
-    for (const Facet& f : stone.facets) normal_.emplace_back(f.normal);
+    for (const Vec3& v : stone.vertices) floorHeight_ = std::min(floorHeight_, dot(vertical_, v));
 
     lightDir_ = toStone(normalize(settings.light.direction));
     lightPos_ = toStone(settings.light.position);
     const Vec3 toCenter = light_.sphereCenter() - lightPos_;
     pointIntensity_ = dot(toCenter, toCenter);  // irradiance 1 at the centre
     cosShadow3_ = std::pow(std::cos(radians(settings.light.headShadowDeg)), 3);
+    cosHeadShadow_ =
+        settings.light.headShadowDeg > 0 ? float(std::cos(radians(settings.light.headShadowDeg))) : 2.0f;
+    for (int c = 0; c < kConeCount; ++c) cosCone_[c] = float(std::cos(radians(kConeDegrees[c])));
 
     IntersectorKind kind = settings.intersector;
     if (kind == IntersectorKind::Auto)
         kind = stone.convex ? IntersectorKind::Convex : IntersectorKind::Embree;
-    if (kind == IntersectorKind::Convex && stone.convex) {
+    if (kind == IntersectorKind::Convex) {
+        if (!stone.convex)
+            throw Error("intersector 'convex' needs a convex stone; '" + stone.name + "' is not");
         convex_ = std::make_unique<ConvexIntersector>(stone);
+        if (light_.collimated()) beam_ = std::make_unique<ConvexBeamEntry>(stone, Vec3f(light_.direction()));
     } else {
         embree_ = std::make_unique<EmbreeIntersector>(stone);
+    }
+    if (light_.collimated() && !dispersive_) {
+        // The same float operations as PhotonWalker::start, so a photon's fate is bit for bit the same.
+        const Vec3f d(light_.direction());
+        const float eta = 1.0f / fixedIndex_;
+        for (const Vec3f& normal : normal_) {
+            const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
+            const FresnelResult fr = fresnel(cosI, eta);
+            fixedEntry_.push_back({fr.reflectance, PhotonWalker::reflectOff(d, normal, cosI),
+                                   PhotonWalker::refractIn(d, normal, eta, cosI, fr.cosT)});
+        }
     }
 }
 
@@ -71,18 +95,18 @@ bool Scene::leave(const Vec3f& origin, const Vec3f& dir, SurfaceHit& hit) const 
 }
 
 bool Scene::hitFloor(const Vec3& origin, const Vec3& dir, double& t) const {
-    const double down = dot(up_, dir);
+    const double down = dot(vertical_, dir);
     if (!(down < -1e-9)) return false;
-    t = (floorHeight_ - dot(up_, origin)) / down;
+    t = (floorHeight_ - dot(vertical_, origin)) / down;
     return t > 0;
 }
 
 double Scene::directIrradiance(const Vec3& p, Rng& rng) const {
-    const Vec3 origin = p + up_ * (1e-4 * diameter_);
+    const Vec3 origin = p + vertical_ * (1e-4 * diameter_);
     SurfaceHit hit;
     switch (settings_.light.model) {
         case LightModelKind::Collimated: {
-            const double cosTheta = -dot(lightDir_, up_);
+            const double cosTheta = -dot(lightDir_, vertical_);
             if (cosTheta <= 0 || enter(Vec3f(origin), Vec3f(-lightDir_), hit)) return 0;
             return cosTheta;
         }
@@ -105,7 +129,7 @@ double Scene::directIrradiance(const Vec3& p, Rng& rng) const {
             const Vec3 toLight = lightPos_ - origin;
             const double d2 = dot(toLight, toLight), d = std::sqrt(d2);
             const Vec3 dir = toLight / d;
-            const double cosTheta = dot(dir, up_);
+            const double cosTheta = dot(dir, vertical_);
             if (cosTheta <= 0 || (enter(Vec3f(origin), Vec3f(dir), hit) && hit.t < d)) return 0;
             return pointIntensity_ * cosTheta / d2;
         }

@@ -1,10 +1,11 @@
 #include "photonmap/photon_map.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
-#include <thread>
 
 #include "util/error.h"
+#include "util/parallel.h"
 
 namespace facetlight {
 namespace {
@@ -77,33 +78,38 @@ void selectMedian(Photon* first, Photon* nth, Photon* last) {
     }
 }
 
-// Places scratch[0, n) as the subtree rooted at heap node `node`, permuting scratch in place. Subtrees are
-// disjoint, so handing one to another thread gives the same tree.
-void build(Photon* scratch, size_t n, size_t node, Photon* heap, int threads) {
-    while (n > 1) {
-        const int axis = widestAxis(scratch, scratch + n);
-        const size_t m = leftSubtreeSize(n);
-        Photon* median = scratch + m;
-        if (axis == 0) selectMedian<0>(scratch, median, scratch + n);
-        if (axis == 1) selectMedian<1>(scratch, median, scratch + n);
-        if (axis == 2) selectMedian<2>(scratch, median, scratch + n);
-        heap[node] = *median;
-        heap[node].setAxis(axis);
-        Photon* right = median + 1;
-        const size_t rightSize = n - m - 1;
-        if (threads > 1 && rightSize > 0) {
-            std::thread helper(build, right, rightSize, 2 * node + 2, heap, threads / 2);
-            build(scratch, m, 2 * node + 1, heap, threads - threads / 2);
-            helper.join();
-            return;
-        }
-        if (rightSize > 0) build(right, rightSize, 2 * node + 2, heap, 1);
-        n = m;
-        node = 2 * node + 1;
+// scratch[0, n) to be placed as the subtree rooted at heap node `node`.
+struct Subtree {
+    Photon* scratch;
+    size_t n;
+    size_t node;
+};
+
+// Places the subtree's root (its median on the widest axis) and returns what is left of it: the left and the
+// right subtree, permuted in place. Subtrees are disjoint, so any worker may place any of them.
+std::array<Subtree, 2> placeRoot(const Subtree& t, Photon* heap) {
+    if (t.n == 1) {
+        heap[t.node] = t.scratch[0];
+        heap[t.node].setAxis(0);  // a leaf: no split plane
+        return {Subtree{t.scratch, 0, 0}, Subtree{t.scratch, 0, 0}};
     }
-    if (n == 1) {
-        heap[node] = scratch[0];
-        heap[node].setAxis(0);  // a leaf: no split plane
+    const int axis = widestAxis(t.scratch, t.scratch + t.n);
+    const size_t m = leftSubtreeSize(t.n);
+    Photon* median = t.scratch + m;
+    if (axis == 0) selectMedian<0>(t.scratch, median, t.scratch + t.n);
+    if (axis == 1) selectMedian<1>(t.scratch, median, t.scratch + t.n);
+    if (axis == 2) selectMedian<2>(t.scratch, median, t.scratch + t.n);
+    heap[t.node] = *median;
+    heap[t.node].setAxis(axis);
+    return {Subtree{t.scratch, m, 2 * t.node + 1}, Subtree{median + 1, t.n - m - 1, 2 * t.node + 2}};
+}
+
+// The whole subtree, on this thread.
+void build(Subtree t, Photon* heap) {
+    while (t.n > 0) {
+        const auto [left, right] = placeRoot(t, heap);
+        if (right.n > 0) build(right, heap);
+        t = left;
     }
 }
 
@@ -130,7 +136,26 @@ PhotonMap::PhotonMap(std::vector<Photon> photons, int threads) {
         if (!std::isfinite(p.position[0]) || !std::isfinite(p.position[1]) || !std::isfinite(p.position[2]))
             throw Error("photon map: a photon has a non-finite position");
     photons_.resize(photons.size());
-    build(photons.data(), photons.size(), 0, photons_.data(), std::max(threads, 1));
+    // The top levels one level at a time, each level's roots placed in parallel, until there is a subtree for
+    // every thread; then the subtrees whole, in parallel.
+    Photon* heap = photons_.data();
+    std::vector<Subtree> level;
+    if (!photons.empty()) level.push_back({photons.data(), photons.size(), 0});
+    while (!level.empty() && level.size() < size_t(std::max(threads, 1))) {
+        std::vector<std::array<Subtree, 2>> split(level.size());
+        parallelForBlocks(BlockLoop{0, level.size(), 1, threads}, nullptr, [&](int, uint64_t i, uint64_t) {
+            split[i] = placeRoot(level[i], heap);
+            return uint64_t(0);
+        });
+        level.clear();
+        for (const auto& pair : split)
+            for (const Subtree& t : pair)
+                if (t.n > 0) level.push_back(t);
+    }
+    parallelForBlocks(BlockLoop{0, level.size(), 1, threads}, nullptr, [&](int, uint64_t i, uint64_t) {
+        build(level[i], heap);
+        return uint64_t(0);
+    });
 }
 
 uint32_t PhotonMap::nearest(const float q[3], Neighbor* heap, uint32_t k, float& bound2,

@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <memory>
-#include <thread>
 
+#include "optics/fresnel.h"
 #include "optics/spectrum.h"
-#include "trace/photon_tracer.h"
 #include "util/error.h"
+#include "util/parallel.h"
 #include "util/random.h"
 
 namespace facetlight {
@@ -30,7 +29,7 @@ struct Context {
     double causticScale;  // 1 / samples: each sample adds its share of the (already coloured) caustic light
 };
 
-// Per thread, never shared.
+// Per worker, never shared.
 struct Worker {
     GatherState gatherState;
     std::array<Neighbor, kCausticNeighbors> neighbors;
@@ -214,7 +213,7 @@ void placeSharePixels(RenderedImage& image, TileShare share, std::span<const Vec
 }
 
 RenderedImage render(const Scene& scene, const PhotonMap& caustics, const RenderSettings& settings,
-                     int threads, uint64_t seed, const RenderControl& control, TileShare share) {
+                     int threads, uint64_t seed, RunControl* control, TileShare share) {
     settings.validate();
     checkShare(share);
     const Vec3 target = scene.toWorld(scene.center());
@@ -235,22 +234,14 @@ RenderedImage render(const Scene& scene, const PhotonMap& caustics, const Render
     image.height = settings.height;
     image.pixels.assign(size_t(settings.width) * size_t(settings.height), Vec3{});
     const int tiles = shareTileCount(tileCount(settings.width, settings.height), share);
-    const int workers = std::clamp(threads, 1, std::max(tiles, 1));
     const Vec3 eye = scene.toStone(camera.position());
     const double fixedIndex = scene.index(Material::kSodiumD);
-    std::atomic<int> nextTile{0}, tilesDone{0};
-    std::atomic<bool> abort{false};
-    std::vector<std::unique_ptr<Worker>> state;
-    for (int t = 0; t < workers; ++t) state.push_back(std::make_unique<Worker>());
 
-    auto work = [&](Worker& worker) {
-        for (;;) {
-            if (abort.load(std::memory_order_relaxed)) return;
-            if (control.cancel && control.cancel->load(std::memory_order_relaxed)) return;
-            const int k = nextTile.fetch_add(1, std::memory_order_relaxed);
-            if (k >= tiles) return;
+    const WorkerStates<Worker> workers = parallelForBlocks(
+        BlockLoop{0, uint64_t(tiles), 1, threads}, control, Worker{},
+        [&](Worker& worker, uint64_t k, uint64_t) {
             const auto [x0, y0, x1, y1] =
-                tileRect(share.offset + k * share.stride, settings.width, settings.height);
+                tileRect(share.offset + int(k) * share.stride, settings.width, settings.height);
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
                     const uint64_t index = uint64_t(y) * uint64_t(settings.width) + uint64_t(x);
@@ -270,30 +261,14 @@ RenderedImage render(const Scene& scene, const PhotonMap& caustics, const Render
                     image.pixels[index] = sum;
                 }
             }
-            tilesDone.fetch_add(1, std::memory_order_relaxed);
-            if (control.pixelsDone) {
-                control.pixelsDone->fetch_add(uint64_t(x1 - x0) * uint64_t(y1 - y0),
-                                              std::memory_order_relaxed);
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    try {
-        for (int t = 1; t < workers; ++t) pool.emplace_back(work, std::ref(*state[t]));
-    } catch (...) {
-        abort = true;
-        for (std::thread& th : pool) th.join();
-        throw Error("cannot start " + std::to_string(workers) + " threads");
-    }
-    work(*state[0]);
-    for (std::thread& th : pool) th.join();
-    image.cancelled = tilesDone.load() != tiles;
+            return uint64_t(x1 - x0) * uint64_t(y1 - y0);
+        });
+    image.cancelled = !workers.finished;
     return image;
 }
 
 RenderedImage render(Communicator& comm, const Scene& scene, const PhotonMap& caustics,
-                     const RenderSettings& settings, int threads, uint64_t seed,
-                     const RenderControl& control) {
+                     const RenderSettings& settings, int threads, uint64_t seed, RunControl* control) {
     const TileShare mine{comm.rank(), comm.size()};
     RenderedImage image = render(scene, caustics, settings, threads, seed, control, mine);
     image.cancelled = anyRank(comm, image.cancelled);

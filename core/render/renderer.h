@@ -3,9 +3,8 @@
 // weights and total internal reflection, each sample on its own wavelength band (dispersion), ending in the
 // studio environment or on the floor, whose light comes from the direct light and the caustic photon map.
 //
-// Threads pull 16 x 16 tiles from a shared counter; pixel p draws its random numbers from Rng(seed, p) alone,
-// so the image is the same bits for any thread count.
-#include <atomic>
+// Workers claim 16 x 16 tiles from parallelForBlocks; pixel p draws its random numbers from Rng(seed, p)
+// alone, so the image is the same bits for any thread count.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -17,13 +16,9 @@
 #include "render/camera.h"
 #include "render/render_settings.h"
 #include "util/distributed.h"
+#include "util/run_control.h"
 
 namespace facetlight {
-
-struct RenderControl {
-    std::atomic<uint64_t>* pixelsDone = nullptr;  // advanced after each tile
-    const std::atomic<bool>* cancel = nullptr;    // checked before each tile
-};
 
 // Linear sRGB radiance per pixel, row by row from the top.
 struct RenderedImage {
@@ -39,18 +34,17 @@ struct TileShare {
     int offset = 0, stride = 1;
 };
 
-// The caustic map may be empty (no photon reached the floor). Pixels outside `share` stay zero. Throws Error
-// on bad settings.
+// The caustic map may be empty (no photon reached the floor). Pixels outside `share` stay zero. Advances
+// control->done() by the pixels of each tile rendered. Throws Error on bad settings.
 RenderedImage render(const Scene& scene, const PhotonMap& caustics, const RenderSettings& settings,
-                     int threads, uint64_t seed, const RenderControl& control = {}, TileShare share = {});
+                     int threads, uint64_t seed, RunControl* control = nullptr, TileShare share = {});
 
 // The render spread over the ranks of `comm` (docs/distributed.md): each rank renders its TileShare and
 // rank 0 receives the whole image, the single-process one bit for bit; the other ranks keep their own tiles.
-// `cancelled` is true on every rank when any rank was cancelled. control.pixelsDone counts this rank's
-// pixels.
+// `cancelled` is true on every rank when any rank was cancelled. control->done() counts this rank's pixels.
 RenderedImage render(Communicator& comm, const Scene& scene, const PhotonMap& caustics,
                      const RenderSettings& settings, int threads, uint64_t seed,
-                     const RenderControl& control = {});
+                     RunControl* control = nullptr);
 
 // The pixels of a share: how many, and their values tile by tile in tile order (row by row within a tile),
 // taken from or put back into a full-size image.

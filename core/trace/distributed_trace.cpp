@@ -10,11 +10,10 @@ uint64_t localPhotons(const Communicator& comm, uint64_t photons) {
     return std::min(blocks.end * kPhotonBlock, photons) - std::min(blocks.begin * kPhotonBlock, photons);
 }
 
-TraceResult traceDistributed(Communicator& comm, const Stone& stone, const TraceSettings& settings,
-                             TraceControl* control) {
+TraceResult traceDistributed(Communicator& comm, const Scene& scene, RunControl* control) {
     const auto start = std::chrono::steady_clock::now();
-    const TraceScene scene(stone, settings);
-    TraceResult result{FacetStats(stone.facets.size()), {0, settings.threads}, false};
+    const TraceSettings& settings = scene.settings();
+    TraceResult result{FacetStats(scene.stone().facets.size()), {0, settings.threads}, false};
     const IndexRange blocks = partition(blockCount(settings.photons), comm.rank(), comm.size());
     const bool finished =
         traceBlocks(scene, blocks.begin, blocks.end, settings.threads, result.stats, control);

@@ -73,7 +73,7 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 }  // namespace
 
-void PhotonWalker::packets(const TraceScene& s, uint64_t begin, uint64_t end, Tally& tally) {
+void PhotonWalker::packets(const Scene& s, uint64_t begin, uint64_t end, Tally& tally) {
     Packet lanes, started;  // started: photons inside the stone, waiting for a lane
     uint64_t next = begin;
     for (;;) {
@@ -93,7 +93,7 @@ void PhotonWalker::packets(const TraceScene& s, uint64_t begin, uint64_t end, Ta
     }
 }
 
-void PhotonWalker::startPacket(const TraceScene& s, uint64_t first, uint64_t end, Tally& tally,
+void PhotonWalker::startPacket(const Scene& s, uint64_t first, uint64_t end, Tally& tally,
                                Packet& started) {
     const uint64_t count = std::min<uint64_t>(kLanes, end - first);
     if (!s.beam_) {
@@ -110,7 +110,7 @@ void PhotonWalker::startPacket(const TraceScene& s, uint64_t first, uint64_t end
     Floats16 ox, oy, oz;
     s.light_.sampleBeam(started.rng, ox, oy, oz);
     Floats16 n(s.fixedIndex_);
-    if (s.perPhotonIndex()) {
+    if (s.dispersive()) {
         const Floats16 wavelength = Floats16(380.0f) + Floats16(400.0f) * uniformOf(started.rng, lanes);
         n = viaDoubles(wavelength, [&](Doubles8 w) { return s.material_.index(w); });
     }
@@ -143,7 +143,7 @@ void PhotonWalker::startPacket(const TraceScene& s, uint64_t first, uint64_t end
     });
 }
 
-void PhotonWalker::stepPacket(const TraceScene& s, Packet& lanes, Tally& tally) {
+void PhotonWalker::stepPacket(const Scene& s, Packet& lanes, Tally& tally) {
     const RayPacket ray{Floats16::load(lanes.px), Floats16::load(lanes.py), Floats16::load(lanes.pz),
                         Floats16::load(lanes.dx), Floats16::load(lanes.dy), Floats16::load(lanes.dz)};
     Floats16 t;

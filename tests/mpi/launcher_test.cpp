@@ -61,11 +61,11 @@ pid_t readPid(const fs::path& file) {
 }
 
 // Sets cancel once the job reports it is tracing.
-std::thread cancelWhenTracing(StudyControl& control) {
+std::thread cancelWhenTracing(RunControl& control) {
     return std::thread([&control] {
-        while (control.phase.load() != StudyPhase::Tracing)
+        while (control.phase() != RunPhase::Tracing)
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        control.cancel = true;
+        control.cancel();
     });
 }
 
@@ -96,20 +96,20 @@ TEST(Launcher, ThresholdCountsTraceAndMapPhotons) {
 }
 
 TEST(Launcher, ProgressLines) {
-    StudyControl control;
+    RunControl control;
     EXPECT_TRUE(applyProgressLine(R"({"phase":"tracing","done":5,"total":10})", control));
-    EXPECT_EQ(control.phase.load(), StudyPhase::Tracing);
-    EXPECT_EQ(control.done.load(), 5u);
-    EXPECT_EQ(control.total.load(), 10u);
+    EXPECT_EQ(control.phase(), RunPhase::Tracing);
+    EXPECT_EQ(control.done(), 5u);
+    EXPECT_EQ(control.total(), 10u);
     EXPECT_FALSE(applyProgressLine("--------------------------------------------", control));
     EXPECT_FALSE(applyProgressLine(R"({"phase":"dancing","done":1})", control));
     EXPECT_FALSE(applyProgressLine(R"({"phase": 3})", control));
     EXPECT_FALSE(applyProgressLine("{not json", control));
-    EXPECT_EQ(control.done.load(), 5u);
+    EXPECT_EQ(control.done(), 5u);
 }
 
 TEST(Launcher, FailedLauncherFailsTheJobWithItsMessage) {
-    StudyControl control;
+    RunControl control;
     const auto launch =
         settingsWith({"sh", "-c", "echo 'There are not enough slots available' >&2; exit 3", "sh"});
     try {
@@ -122,7 +122,7 @@ TEST(Launcher, FailedLauncherFailsTheJobWithItsMessage) {
 }
 
 TEST(Launcher, MissingLauncherFailsTheJob) {
-    StudyControl control;
+    RunControl control;
     try {
         runStudyInChild(settingsWith({"/nonexistent/mpirun", "-np", "2"}), {kMesh, ""}, traceOnly(1000),
                         control);
@@ -134,7 +134,7 @@ TEST(Launcher, MissingLauncherFailsTheJob) {
 }
 
 TEST(Launcher, ChildErrorReachesTheJob) {
-    StudyControl control;
+    RunControl control;
     try {
         runStudyInChild(mpirun(2), {"/nonexistent/gem.asc", ""}, traceOnly(1000), control);
         FAIL() << "no error";
@@ -150,7 +150,7 @@ TEST(Launcher, CancelEndsTheWholeProcessGroupEvenWhenItIgnoresSigterm) {
     // The launcher ignores SIGTERM and leaves a grandchild: both must be gone after the cancel.
     const std::string script = "trap '' TERM; sleep 60 & echo $! > " + pidFile.string() +
                                "; echo '{\"phase\":\"tracing\",\"done\":1,\"total\":9}'; wait";
-    StudyControl control;
+    RunControl control;
     std::thread canceller = cancelWhenTracing(control);
     EXPECT_THROW(
         runStudyInChild(settingsWith({"sh", "-c", script, "sh"}), {kMesh, ""}, traceOnly(1000), control),
@@ -167,16 +167,16 @@ TEST(Launcher, CancelEndsTheWholeProcessGroupEvenWhenItIgnoresSigterm) {
 TEST(Launcher, RunsAJobThroughMpirunAndMatchesTheInProcessResult) {
     ASSERT_TRUE(kRootAllowed);
     const StudySettings settings = traceOnly(100'000);
-    StudyControl control;
+    RunControl control;
     const StudyResult child = runStudyInChild(mpirun(2), {kMesh, "brilliant"}, settings, control);
-    EXPECT_EQ(control.phase.load(), StudyPhase::Done);  // the child's last progress line arrived
+    EXPECT_EQ(control.phase(), RunPhase::Done);  // the child's last progress line arrived
     EXPECT_EQ(child.stats["timing"]["ranks"], 2);
     EXPECT_EQ(child.stats["totals"]["photons"], 100'000);
     EXPECT_EQ(child.stats["mesh"]["name"], "brilliant");
 
     Stone stone = resolveStone(kMesh);
     stone.name = "brilliant";
-    StudyControl local;
+    RunControl local;
     const StudyResult inProcess = runStudy(stone, settings, local);
     EXPECT_EQ(withoutTiming(child.stats), withoutTiming(inProcess.stats));
     EXPECT_EQ(child.statsCsv, inProcess.statsCsv);
@@ -187,11 +187,11 @@ TEST(Launcher, CancelsAJobRunningUnderMpirun) {
     LaunchSettings launch = mpirun(2);
     launch.workDir = fs::temp_directory_path() / ("facetlight-cancel-test-" + std::to_string(getpid()));
     fs::create_directories(launch.workDir);
-    StudyControl control;
+    RunControl control;
     std::thread canceller = cancelWhenTracing(control);
     EXPECT_THROW(runStudyInChild(launch, {kMesh, ""}, traceOnly(5'000'000'000ULL), control), Canceled);
     canceller.join();
-    EXPECT_GT(control.total.load(), 0u);  // progress arrived before the cancel
+    EXPECT_GT(control.total(), 0u);  // progress arrived before the cancel
     // The job folder is gone with the job, and no process still runs the job's command line.
     EXPECT_TRUE(fs::is_empty(launch.workDir));
     for (int i = 0; i < 300; ++i) {

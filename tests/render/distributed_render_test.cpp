@@ -32,8 +32,7 @@ constexpr uint64_t kMapPhotons = 7 * kPhotonBlock + 321;  // a partial last bloc
 TEST(DistributedFloorPhotons, BlockRangesInOrderEqualTheWholePass) {
     const TraceSettings t = smallTrace();
     const Scene scene(roundBrilliant(), t);
-    const TraceScene traceScene(roundBrilliant(), t);
-    const FloorPhotons whole = traceFloorPhotons(scene, traceScene, kMapPhotons, 2);
+    const FloorPhotons whole = traceFloorPhotons(scene, kMapPhotons, 2);
     ASSERT_GT(whole.caustic.size(), 0u);
     ASSERT_GT(whole.crownExits.total, 0u);
     for (int size : {2, 3, 5}) {
@@ -43,7 +42,7 @@ TEST(DistributedFloorPhotons, BlockRangesInOrderEqualTheWholePass) {
         for (int r = 0; r < size; ++r) {
             const IndexRange blocks = partition(blockCount(kMapPhotons), r, size);
             const FloorPhotons part =
-                traceFloorPhotons(scene, traceScene, kMapPhotons, blocks.begin, blocks.end, 1 + r % 2);
+                traceFloorPhotons(scene, kMapPhotons, blocks.begin, blocks.end, 1 + r % 2);
             EXPECT_FALSE(part.cancelled);
             caustic.insert(caustic.end(), part.caustic.begin(), part.caustic.end());
             std::vector<uint64_t> sum = histogram.tallies();
@@ -63,10 +62,9 @@ TEST(DistributedFloorPhotons, BlockRangesInOrderEqualTheWholePass) {
 TEST(DistributedFloorPhotons, SerialCommunicatorGivesTheWholePass) {
     const TraceSettings t = smallTrace();
     const Scene scene(roundBrilliant(), t);
-    const TraceScene traceScene(roundBrilliant(), t);
-    const FloorPhotons whole = traceFloorPhotons(scene, traceScene, kMapPhotons, 2);
+    const FloorPhotons whole = traceFloorPhotons(scene, kMapPhotons, 2);
     SerialCommunicator serial;
-    const FloorPhotons viaComm = traceFloorPhotons(serial, scene, traceScene, kMapPhotons, 1);
+    const FloorPhotons viaComm = traceFloorPhotons(serial, scene, kMapPhotons, 1);
     ASSERT_EQ(viaComm.caustic.size(), whole.caustic.size());
     EXPECT_EQ(
         0, std::memcmp(viaComm.caustic.data(), whole.caustic.data(), whole.caustic.size() * sizeof(Photon)));
@@ -100,8 +98,7 @@ TEST(TileShares, CoverEveryPixelOnce) {
 TEST(TileShares, RenderedApartAndPlacedEqualTheWholeRender) {
     const TraceSettings t = smallTrace();
     const Scene scene(roundBrilliant(), t);
-    const TraceScene traceScene(roundBrilliant(), t);
-    FloorPhotons photons = traceFloorPhotons(scene, traceScene, kMapPhotons, 2);
+    FloorPhotons photons = traceFloorPhotons(scene, kMapPhotons, 2);
     const PhotonMap caustics(std::move(photons.caustic), 2);
     RenderSettings r;
     r.width = 53;  // tiles that do not divide the image
@@ -115,12 +112,10 @@ TEST(TileShares, RenderedApartAndPlacedEqualTheWholeRender) {
         assembled.pixels.assign(whole.pixels.size(), Vec3{});
         for (int rank = 0; rank < size; ++rank) {
             const TileShare share{rank, size};
-            std::atomic<uint64_t> done{0};
-            std::atomic<bool> cancel{false};
-            const RenderedImage part =
-                render(scene, caustics, r, 1 + rank % 2, t.seed, {&done, &cancel}, share);
+            RunControl control;
+            const RenderedImage part = render(scene, caustics, r, 1 + rank % 2, t.seed, &control, share);
             EXPECT_FALSE(part.cancelled);
-            EXPECT_EQ(done.load(), sharePixelCount(r.width, r.height, share));
+            EXPECT_EQ(control.done(), sharePixelCount(r.width, r.height, share));
             const std::vector<Vec3> pixels = sharePixels(part, share);
             // Only the share's pixels were rendered: the others are still zero.
             size_t lit = 0;

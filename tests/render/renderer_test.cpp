@@ -45,8 +45,7 @@ RenderSettings smallRender() {
 RenderedImage renderWith(int threads, const RenderSettings& r) {
     const TraceSettings t = smallTrace(threads);
     const Scene scene(roundBrilliant(), t);
-    const TraceScene traceScene(roundBrilliant(), t);
-    FloorPhotons photons = traceFloorPhotons(scene, traceScene, r.mapPhotons, threads);
+    FloorPhotons photons = traceFloorPhotons(scene, r.mapPhotons, threads);
     const PhotonMap caustics(std::move(photons.caustic), threads);
     return render(scene, caustics, r, threads, t.seed);
 }
@@ -88,9 +87,8 @@ TEST(Renderer, SameBitsForOneAndTwoThreads) {
 TEST(Renderer, FloorPhotonsDoNotDependOnThreads) {
     const TraceSettings t = smallTrace(1);
     const Scene scene(roundBrilliant(), t);
-    const TraceScene traceScene(roundBrilliant(), t);
-    const FloorPhotons a = traceFloorPhotons(scene, traceScene, 30'000, 1);
-    const FloorPhotons b = traceFloorPhotons(scene, traceScene, 30'000, 2);
+    const FloorPhotons a = traceFloorPhotons(scene, 30'000, 1);
+    const FloorPhotons b = traceFloorPhotons(scene, 30'000, 2);
     ASSERT_EQ(a.caustic.size(), b.caustic.size());
     EXPECT_GT(a.caustic.size(), 0u);
     EXPECT_EQ(0, std::memcmp(a.caustic.data(), b.caustic.data(), a.caustic.size() * sizeof(Photon)));
@@ -101,43 +99,42 @@ TEST(Renderer, FloorPhotonsDoNotDependOnThreads) {
 TEST(Renderer, CancelledBeforeStartRendersNothing) {
     const TraceSettings t = smallTrace(2);
     const Scene scene(roundBrilliant(), t);
-    std::atomic<bool> cancel{true};
-    std::atomic<uint64_t> done{0};
-    const RenderedImage image = render(scene, PhotonMap(), smallRender(), 2, 1, {&done, &cancel});
+    RunControl control;
+    control.cancel();
+    const RenderedImage image = render(scene, PhotonMap(), smallRender(), 2, 1, &control);
     EXPECT_TRUE(image.cancelled);
-    EXPECT_EQ(done.load(), 0u);
+    EXPECT_EQ(control.done(), 0u);
 }
 
 TEST(Renderer, ProgressCountsEveryPixel) {
     const TraceSettings t = smallTrace(2);
     const Scene scene(roundBrilliant(), t);
-    std::atomic<bool> cancel{false};
-    std::atomic<uint64_t> done{0};
+    RunControl control;
     RenderSettings r = smallRender();
     r.width = 37;  // tiles that do not divide the image
-    const RenderedImage image = render(scene, PhotonMap(), r, 2, 1, {&done, &cancel});
+    const RenderedImage image = render(scene, PhotonMap(), r, 2, 1, &control);
     EXPECT_FALSE(image.cancelled);
-    EXPECT_EQ(done.load(), uint64_t(37 * 48));
+    EXPECT_EQ(control.done(), uint64_t(37 * 48));
 }
 
 TEST(Study, WritesThreePicturesOfTheStatedSizes) {
     StudySettings s;
     s.trace = smallTrace(2);
     s.render = smallRender();
-    StudyControl control;
+    RunControl control;
     const StudyResult result = runStudy(roundBrilliant(), s, control);
     EXPECT_EQ(pngSize(result.renderPng), std::make_pair(64u, 48u));
     EXPECT_GT(pngSize(result.heatmapPng).first, 0u);
     EXPECT_GT(pngSize(result.angularPng).first, 0u);
     EXPECT_EQ(result.stats["totals"]["photons"], 20'000);
     EXPECT_NE(result.statsCsv.find("leaving_share"), std::string::npos);
-    EXPECT_EQ(control.phase.load(), StudyPhase::Done);
+    EXPECT_EQ(control.phase(), RunPhase::Done);
 }
 
 TEST(Study, StatisticsOnlyWithoutRender) {
     StudySettings s;
     s.trace = smallTrace(1);
-    StudyControl control;
+    RunControl control;
     const StudyResult result = runStudy(roundBrilliant(), s, control);
     EXPECT_TRUE(result.renderPng.empty());
     EXPECT_TRUE(result.angularPng.empty());
@@ -148,8 +145,8 @@ TEST(Study, CancelThrowsCanceled) {
     StudySettings s;
     s.trace = smallTrace(1);
     s.render = smallRender();
-    StudyControl control;
-    control.cancel = true;
+    RunControl control;
+    control.cancel();
     EXPECT_THROW(runStudy(roundBrilliant(), s, control), Canceled);
 }
 
@@ -192,7 +189,7 @@ TEST(Pictures, HeatmapLayoutPlacesEveryDrawnFacet) {
 }
 
 TEST(Pictures, HeatmapAndAngularPlotAreNotBlank) {
-    const TraceResult traced = trace(roundBrilliant(), smallTrace(2));
+    const TraceResult traced = trace(Scene(roundBrilliant(), smallTrace(2)));
     const Image heatmap = facetHeatmap(roundBrilliant(), traced.stats);
     AngularHistogram h;
     h.add(normalize(Vec3{0.3, 0.1, 1}));

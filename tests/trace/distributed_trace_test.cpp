@@ -42,7 +42,7 @@ TEST(Partition, CoversTheRangeInOrderWithBalancedParts) {
 
 TEST(FacetStatsTallies, RoundTripAndSumLikeMerge) {
     const Stone stone = loadStone(kData + "brilliant.asc");
-    const TraceScene scene(stone, smallTrace());
+    const Scene scene(stone, smallTrace());
     FacetStats a(stone.facets.size()), b(stone.facets.size());
     traceBlocks(scene, 0, 2, 1, a);
     traceBlocks(scene, 2, 6, 1, b);
@@ -68,9 +68,9 @@ TEST(FacetStatsTallies, RoundTripAndSumLikeMerge) {
 TEST(DistributedTrace, RankSharesSumToTheWholeTrace) {
     const Stone stone = loadStone(kData + "brilliant.asc");
     const TraceSettings settings = smallTrace();
-    const TraceResult whole = trace(stone, settings);
+    const TraceResult whole = trace(Scene(stone, settings));
     for (int size : {2, 3, 4}) {
-        const TraceScene scene(stone, settings);
+        const Scene scene(stone, settings);
         FacetStats sum(stone.facets.size());
         uint64_t photons = 0;
         for (int r = 0; r < size; ++r) {
@@ -88,8 +88,8 @@ TEST(DistributedTrace, RankSharesSumToTheWholeTrace) {
 TEST(DistributedTrace, SerialCommunicatorGivesTheWholeTrace) {
     const Stone stone = loadStone(kData + "brilliant.asc");
     SerialCommunicator comm;
-    const TraceResult result = traceDistributed(comm, stone, smallTrace());
-    EXPECT_EQ(result.stats, trace(stone, smallTrace()).stats);
+    const TraceResult result = traceDistributed(comm, Scene(stone, smallTrace()));
+    EXPECT_EQ(result.stats, trace(Scene(stone, smallTrace())).stats);
     EXPECT_FALSE(result.cancelled);
     EXPECT_EQ(localPhotons(comm, smallTrace().photons), smallTrace().photons);
 }

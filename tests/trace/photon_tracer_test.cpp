@@ -7,6 +7,7 @@
 
 #include "geometry/halfspace.h"
 #include "intersect/convex_intersector.h"
+#include "optics/fresnel.h"
 #include "optics/material.h"
 #include "stone/stone.h"
 #include "util/error.h"
@@ -116,7 +117,7 @@ TEST(PhotonTracer, DiamondSlabAtNormalIncidence) {
     const Stone stone = cube();
     TraceSettings settings = baseSettings(400'000);
     settings.threads = 2;
-    const TraceResult r = trace(stone, settings);
+    const TraceResult r = trace(Scene(stone, settings));
     ASSERT_FALSE(r.cancelled);
     const FacetStats& s = r.stats;
     expectConservation(s);
@@ -155,7 +156,7 @@ TEST(PhotonTracer, IdenticalForAnyThreadCount) {
     json first;
     for (int threads : {1, 2, 3}) {
         settings.threads = threads;
-        const TraceResult r = trace(stone, settings);
+        const TraceResult r = trace(Scene(stone, settings));
         expectConservation(r.stats);
         const json j = comparable(statsToJson(r.stats, stone, settings, r.timing));
         if (threads == 1) {
@@ -170,7 +171,7 @@ TEST(PhotonTracer, IdenticalForAnyThreadCount) {
 TEST(PhotonTracer, BlockRangesMergeToTheWholeRun) {
     const Stone stone = singleCut();
     TraceSettings settings = baseSettings(5 * kPhotonBlock + 10);
-    const TraceScene scene(stone, settings);
+    const Scene scene(stone, settings);
     FacetStats whole(stone.facets.size()), a(stone.facets.size()), b(stone.facets.size());
     ASSERT_TRUE(traceBlocks(scene, 0, blockCount(settings.photons), 1, whole));
     ASSERT_TRUE(traceBlocks(scene, 0, 2, 2, a));
@@ -187,10 +188,10 @@ TEST(PhotonTracer, ConvexAndEmbreeAgree) {
     settings.threads = 2;
     settings.light.model = LightModelKind::Hemisphere;
     settings.intersector = IntersectorKind::Convex;
-    const TraceResult convex = trace(stone, settings);
+    const TraceResult convex = trace(Scene(stone, settings));
     settings.intersector = IntersectorKind::Embree;
-    ASSERT_TRUE(TraceScene(stone, settings).usesEmbree());
-    const TraceResult embree = trace(stone, settings);
+    ASSERT_TRUE(Scene(stone, settings).usesEmbree());
+    const TraceResult embree = trace(Scene(stone, settings));
     expectConservation(convex.stats);
     expectConservation(embree.stats);
     EXPECT_EQ(embree.stats.lost, 0u);
@@ -208,7 +209,7 @@ TEST(PhotonTracer, ConvexAndEmbreeAgree) {
 namespace {
 
 // The counts a trace keeps, rebuilt from tracePhoton's path of each photon in turn.
-FacetStats tallyOfPaths(const TraceScene& scene) {
+FacetStats tallyOfPaths(const Scene& scene) {
     const Stone& stone = scene.stone();
     const TraceSettings& settings = scene.settings();
     const double tilt = radians(settings.light.tiltDeg);
@@ -272,7 +273,7 @@ TEST(PhotonTracer, TracePhotonReproducesTheTally) {
         settings.light.tiltDeg = c.tiltDeg;
         settings.dispersion = c.dispersion;
         settings.maxBounces = c.maxBounces;
-        const TraceScene scene(stone, settings);
+        const Scene scene(stone, settings);
         FacetStats traced(stone.facets.size());
         traceBlocks(scene, 0, blockCount(settings.photons), 1, traced);
         const FacetStats paths = tallyOfPaths(scene);
@@ -298,7 +299,7 @@ TEST(PhotonTracer, TracePhotonReproducesTheTally) {
 
 TEST(PhotonTracer, ExitPathsLeaveThroughTheirFacet) {
     const Stone stone = singleCut();
-    const TraceScene scene(stone, baseSettings(2000));
+    const Scene scene(stone, baseSettings(2000));
     for (uint64_t i = 0; i < 2000; ++i) {
         PhotonPath path;
         tracePhoton(scene, i, path);
@@ -319,7 +320,7 @@ TEST(PhotonTracer, LightModelsAndTiltKeepConservation) {
         settings.light.model = model;
         settings.light.tiltDeg = 20;
         settings.maxBounces = 3;
-        const TraceResult r = trace(stone, settings);
+        const TraceResult r = trace(Scene(stone, settings));
         expectConservation(r.stats);
         EXPECT_GT(r.stats.trapped, 0u) << "a bounce limit of 3 traps some photons";
         EXPECT_GT(r.stats.hit, r.stats.photons / 4) << "photons are aimed at the stone";
@@ -328,7 +329,7 @@ TEST(PhotonTracer, LightModelsAndTiltKeepConservation) {
 
 TEST(PhotonTracer, CollimatedStraightDownHitsAlmostEveryPhoton) {
     const Stone stone = singleCut();
-    const TraceResult r = trace(stone, baseSettings(20'000));
+    const TraceResult r = trace(Scene(stone, baseSettings(20'000)));
     // The disc circumscribes the octagonal girdle: cos(22.5 deg)^2 * (8 tan(22.5) / pi) of it is stone.
     const double octagonShare = 8 * std::tan(radians(22.5)) * std::pow(std::cos(radians(22.5)), 2) / kPi;
     EXPECT_NEAR(double(r.stats.hit) / double(r.stats.photons), octagonShare, 0.01);
@@ -412,17 +413,17 @@ TEST(ConvexBeamEntry, AgreesWithTheGeneralEntrySearch) {
 
 TEST(PhotonTracer, CancelStopsBeforeTheEnd) {
     const Stone stone = cube();
-    TraceControl control;
-    control.cancel = true;
-    const TraceResult r = trace(stone, baseSettings(100'000), &control);
+    RunControl control;
+    control.cancel();
+    const TraceResult r = trace(Scene(stone, baseSettings(100'000)), &control);
     EXPECT_TRUE(r.cancelled);
     EXPECT_EQ(r.stats.photons, 0u);
-    EXPECT_EQ(control.photonsDone.load(), 0u);
+    EXPECT_EQ(control.done(), 0u);
 
-    TraceControl progress;
-    const TraceResult full = trace(stone, baseSettings(10'000), &progress);
+    RunControl progress;
+    const TraceResult full = trace(Scene(stone, baseSettings(10'000)), &progress);
     EXPECT_FALSE(full.cancelled);
-    EXPECT_EQ(progress.photonsDone.load(), 10'000u);
+    EXPECT_EQ(progress.done(), 10'000u);
 }
 
 TEST(PhotonTracer, ConvexIntersectorRefusesNonConvexRequest) {
@@ -430,9 +431,9 @@ TEST(PhotonTracer, ConvexIntersectorRefusesNonConvexRequest) {
     stone.convex = false;
     TraceSettings settings = baseSettings(10);
     settings.intersector = IntersectorKind::Convex;
-    EXPECT_THROW(TraceScene(stone, settings), Error);
+    EXPECT_THROW(Scene(stone, settings), Error);
     settings.intersector = IntersectorKind::Auto;
-    EXPECT_TRUE(TraceScene(stone, settings).usesEmbree());
+    EXPECT_TRUE(Scene(stone, settings).usesEmbree());
 }
 
 TEST(TraceSettings, JsonRoundTrip) {
@@ -476,7 +477,7 @@ TEST(TraceSettings, StrictJsonNamesTheField) {
 TEST(FacetStats, JsonAndCsvReport) {
     const Stone stone = cube();
     TraceSettings settings = baseSettings(10'000);
-    const TraceResult r = trace(stone, settings);
+    const TraceResult r = trace(Scene(stone, settings));
     const json j = statsToJson(r.stats, stone, settings, r.timing);
     for (const char* key :
          {"mesh", "settings", "timing", "totals", "regions", "facets", "exit_angle_histogram"}) {

@@ -7,6 +7,7 @@
 
 #include "intersect/convex_intersector.h"
 #include "intersect/embree_intersector.h"
+#include "optics/fresnel.h"
 #include "trace/photon_tracer.h"
 #include "util/random.h"
 #include "util/simd.h"
@@ -29,14 +30,14 @@ class PhotonWalker {
 
     // Draws photon `index` and takes it to the stone; true when it is inside and has to be stepped on.
     template <class Intersector, class Visitor>
-    static bool start(const TraceScene& s, const Intersector& isect, uint64_t index, Visitor& visit,
+    static bool start(const Scene& s, const Intersector& isect, uint64_t index, Visitor& visit,
                       Photon& ph) {
         ph.rng = Rng(s.settings_.seed, index);
         ph.bounces = 0;
         const LightRay ray = s.light_.sample(ph.rng);
         float wavelength = float(Material::kSodiumD);
         ph.n = s.fixedIndex_;
-        if (s.perPhotonIndex()) {
+        if (s.dispersive()) {
             wavelength = 380.0f + 400.0f * ph.rng.uniform();
             ph.n = float(s.material_.index(wavelength));
         }
@@ -50,7 +51,7 @@ class PhotonWalker {
         }
         p = p + d * hit.t;
         if (!s.fixedEntry_.empty()) {
-            const TraceScene::FixedEntry& e = s.fixedEntry_[hit.facet];
+            const Scene::FixedEntry& e = s.fixedEntry_[hit.facet];
             if (ph.rng.uniform() < e.reflectance) {
                 visit.reflectedAtEntry(hit.facet, p, e.reflected);
                 return false;
@@ -75,7 +76,7 @@ class PhotonWalker {
 
     // The photon's next interaction inside; true while it stays inside.
     template <class Intersector, class Visitor>
-    static bool step(const TraceScene& s, const Intersector& isect, Visitor& visit, Photon& ph) {
+    static bool step(const Scene& s, const Intersector& isect, Visitor& visit, Photon& ph) {
         SurfaceHit hit;
         if (!isect.leave(ph.p, ph.d, hit)) {
             visit.lost(ph.bounces);
@@ -113,7 +114,7 @@ class PhotonWalker {
     }
 
     template <class Intersector, class Visitor>
-    static void walk(const TraceScene& s, const Intersector& isect, uint64_t index, Visitor& visit) {
+    static void walk(const Scene& s, const Intersector& isect, uint64_t index, Visitor& visit) {
         Photon ph;
         if (start(s, isect, index, visit, ph)) {
             while (step(s, isect, visit, ph)) {
@@ -125,7 +126,7 @@ class PhotonWalker {
     // interactions are independent chains of dependent operations, which the core overlaps. Each photon
     // takes exactly the steps walk() takes.
     template <class Intersector>
-    static void interleave(const TraceScene& s, const Intersector& isect, uint64_t begin, uint64_t end,
+    static void interleave(const Scene& s, const Intersector& isect, uint64_t begin, uint64_t end,
                            Tally& t) {
         constexpr int kLanes = 4;
         Photon lane[kLanes];
@@ -152,17 +153,17 @@ class PhotonWalker {
 #if FACETLIGHT_PACKETS
     // Photons [begin, end) of a convex stone sixteen at a time, one per SIMD lane (photon_packet.cpp).
     // Each photon takes exactly the steps walk() takes, so the tally has the same bits.
-    static void packets(const TraceScene& s, uint64_t begin, uint64_t end, Tally& t);
+    static void packets(const Scene& s, uint64_t begin, uint64_t end, Tally& t);
     struct Packet;
     // start() for photons [first, min(first + 16, end)): tallies those that miss or reflect off the stone
     // and makes those that get in live lanes of `started`, which has none live before.
-    static void startPacket(const TraceScene& s, uint64_t first, uint64_t end, Tally& t, Packet& started);
+    static void startPacket(const Scene& s, uint64_t first, uint64_t end, Tally& t, Packet& started);
     // step() for every live lane of the packet; the lanes whose photon is done are no longer live.
-    static void stepPacket(const TraceScene& s, Packet& lanes, Tally& t);
+    static void stepPacket(const Scene& s, Packet& lanes, Tally& t);
 #endif
 
     // Photons [begin, end) into one thread's tally.
-    static void tally(const TraceScene& s, uint64_t begin, uint64_t end, FacetStats& stats) {
+    static void tally(const Scene& s, uint64_t begin, uint64_t end, FacetStats& stats) {
         Tally t{s, stats};
         if (s.convex_) {
 #if FACETLIGHT_PACKETS
@@ -176,7 +177,7 @@ class PhotonWalker {
         stats.photons += end - begin;
     }
 
-    static void path(const TraceScene& s, uint64_t index, PhotonPath& out) {
+    static void path(const Scene& s, uint64_t index, PhotonPath& out) {
         out = PhotonPath{};
         Recorder r{out};
         if (s.convex_) {
@@ -188,7 +189,7 @@ class PhotonWalker {
 
   private:
     struct Tally {
-        const TraceScene& s;
+        const Scene& s;
         FacetStats& st;
 
         bool crownSide(uint32_t facet) const {

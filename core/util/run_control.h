@@ -1,0 +1,50 @@
+#pragma once
+// One run's progress and cancel, passed to every phase of a trace or study and read by whoever watches it
+// (the CLI's progress line and JSON lines, the service's job status, the launcher following a child process).
+// All atomics: workers advance `done` once per block, watchers read without a lock, and a cancel request is
+// checked before each block.
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace facetlight {
+
+enum class RunPhase : uint8_t { Queued, Tracing, PhotonMap, Rendering, Done };
+std::string_view runPhaseName(RunPhase phase);
+// The phase runPhaseName gives `name`; none for any other name.
+std::optional<RunPhase> runPhaseNamed(std::string_view name);
+
+class RunControl {
+  public:
+    // A phase of `total` units (photons, pixels) of this process's share, none done yet.
+    void startPhase(RunPhase phase, uint64_t total) { show(phase, 0, total); }
+    // Progress as another process reports it (the launcher's child).
+    void show(RunPhase phase, uint64_t done, uint64_t total) {
+        done_.store(done, std::memory_order_relaxed);
+        total_.store(total, std::memory_order_relaxed);
+        phase_.store(phase, std::memory_order_release);
+    }
+    void advance(uint64_t units) { done_.fetch_add(units, std::memory_order_relaxed); }
+
+    // Asks the run to stop: workers claim no further block; the phase reports that it was cancelled.
+    void cancel() { cancel_.store(true, std::memory_order_relaxed); }
+    bool cancelled() const { return cancel_.load(std::memory_order_relaxed); }
+
+    RunPhase phase() const { return phase_.load(std::memory_order_acquire); }
+    uint64_t done() const { return done_.load(std::memory_order_relaxed); }
+    uint64_t total() const { return total_.load(std::memory_order_relaxed); }
+    // done / total, 0 without a total.
+    double fraction() const {
+        const uint64_t t = total();
+        return t ? double(done()) / double(t) : 0.0;
+    }
+
+  private:
+    std::atomic<RunPhase> phase_{RunPhase::Queued};
+    std::atomic<uint64_t> done_{0}, total_{0};
+    // Read before every block by every worker: kept off the cache line that `done` is written on.
+    alignas(64) std::atomic<bool> cancel_{false};
+};
+
+}  // namespace facetlight
