@@ -342,7 +342,7 @@ TEST(PhotonTracer, HugeDirectionIsTheSameDirection) {
     huge.light.direction = {1e308, 1e308, -1e308};
     TraceSettings unit = huge;
     unit.light.direction = {1, 1, -1};
-    const TraceResult a = trace(stone, huge), b = trace(stone, unit);
+    const TraceResult a = trace(Scene(stone, huge)), b = trace(Scene(stone, unit));
     EXPECT_GT(a.stats.hit, 0u);
     EXPECT_EQ(a.stats.hit, b.stats.hit);
     EXPECT_EQ(a.stats.tallies(), b.stats.tallies());
@@ -361,14 +361,14 @@ TEST(PhotonTracer, FarPointLightIsRefused) {
     for (const auto& [far, message] : cases) {
         settings.light.position = far;
         try {
-            trace(stone, settings);
+            trace(Scene(stone, settings));
             ADD_FAILURE() << "a point light at " << far.z << " was accepted";
         } catch (const Error& e) {
             EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
         }
     }
     settings.light.position = {0, 0, 100};
-    EXPECT_GT(trace(stone, settings).stats.hit, 0u);
+    EXPECT_GT(trace(Scene(stone, settings)).stats.hit, 0u);
 }
 
 TEST(ExitAngleBins, MatchAcosExceptAtBinBoundaries) {
