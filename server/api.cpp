@@ -6,6 +6,7 @@
 #include <map>
 #include <regex>
 
+#include "stats/facet_stats.h"
 #include "util/error.h"
 #include "util/json_text.h"
 
@@ -79,25 +80,42 @@ std::string mediaType(const Request& req) {
     return type;
 }
 
-// A request body read whole, or why not.
-struct Body {
-    std::string bytes;
-    bool tooLarge = false;
-    bool complete = false;  // every byte of the Content-Length arrived
-};
+// The most bytes a request body may have: uploads have their own limit. The one place both the check before
+// routing (Content-Length) and the handlers' readers (BodyCollector, bytes as they arrive) take it from.
+size_t bodyLimit(const ServiceLimits& limits, const std::string& path) {
+    return path == "/api/meshes" ? limits.maxUploadBytes : limits.maxBodyBytes;
+}
 
-Body readBody(const httplib::ContentReader& reader, size_t limit) {
-    Body body;
-    body.complete = reader([&](const char* data, size_t n) {
-        if (body.bytes.size() + n > limit) {
-            body.tooLarge = true;
+// Collects a request body as it arrives, stopping the read once it passes its route's limit. `read` says
+// whether every byte of the Content-Length arrived: a body cut short (the client went away, or lied) stores
+// nothing.
+class BodyCollector {
+  public:
+    BodyCollector(const ServiceLimits& limits, const Request& req) : limit_(bodyLimit(limits, req.path)) {}
+    bool operator()(const char* data, size_t n) {
+        if (bytes_.size() + n > limit_) {
+            tooLarge_ = true;
             return false;
         }
-        body.bytes.append(data, n);
+        bytes_.append(data, n);
         return true;
-    });
-    return body;
-}
+    }
+    void read(const httplib::ContentReader& reader) { complete_ = reader(std::ref(*this)); }
+    void readMultipart(const httplib::ContentReader& reader, const httplib::MultipartContentHeader& header,
+                       const std::function<bool()>& wanted) {
+        complete_ = reader(header, [&](const char* data, size_t n) { return wanted() ? (*this)(data, n) : true; });
+    }
+    bool tooLarge() const { return tooLarge_; }
+    bool complete() const { return complete_; }
+    size_t limit() const { return limit_; }
+    std::string& bytes() { return bytes_; }
+
+  private:
+    size_t limit_;
+    std::string bytes_;
+    bool tooLarge_ = false;
+    bool complete_ = false;
+};
 
 // A body that stopped short of its Content-Length (the client went away, or lied): nothing is stored.
 constexpr const char* kShortBody = "the body ended before its Content-Length; nothing was stored";
@@ -132,8 +150,8 @@ void logRequest(const Request& req, const Response& res) {
 
 }  // namespace
 
-Api::Api(JobStore& store, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits)
-    : store_(store), queue_(queue), catalog_(catalog), limits_(limits) {}
+Api::Api(JobStore& store, ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits)
+    : store_(store), results_(results), queue_(queue), catalog_(catalog), limits_(limits) {}
 
 std::vector<Route> Api::routes() {
     return {
@@ -165,7 +183,13 @@ json Api::statusJson(const JobRecord& job) const {
     if (used < requested) {
         threads["note"] = "capped at the " + std::to_string(queue_.cores()) + " cores of this machine";
     }
+    // A study with pictures runs three phases (tracing, photon map, rendering), one without only the first:
+    // `step` of `steps` and `overall` say where the whole job is, so that clients need not know the phases.
+    const bool rendered = request.contains("render") && request["render"].is_object();
+    const int steps = rendered ? 3 : 1;
     json progress = {{"phase", jobStateName(job.state)}, {"done", 0}, {"total", 0}, {"fraction", 0.0}};
+    int step = 0;
+    double overall = 0;
     json doc = {{"id", job.id},
                 {"state", jobStateName(job.state)},
                 {"mesh", request.value("mesh", "")},
@@ -184,19 +208,28 @@ json Api::statusJson(const JobRecord& job) const {
             if (const auto live = queue_.live(job.id)) {
                 const RunPhase phase = live->phase();
                 const uint64_t done = live->done(), total = live->total();
+                const double fraction = total ? double(done) / double(total) : 0.0;
                 progress = {{"phase", phase == RunPhase::Queued ? "starting" : runPhaseName(phase)},
                             {"done", done},
                             {"total", total},
-                            {"fraction", total ? double(done) / double(total) : 0.0}};
+                            {"fraction", fraction}};
+                const RunPhase phases[] = {RunPhase::Tracing, RunPhase::PhotonMap, RunPhase::Rendering};
+                for (int i = 0; i < steps; ++i) {
+                    if (phases[i] != phase) continue;
+                    step = i + 1;
+                    overall = (i + std::clamp(fraction, 0.0, 1.0)) / steps;
+                }
                 doc["cancel_requested"] = live->cancelled();
             }
             links["cancel"] = self + "/cancel";
             break;
         case JobState::Succeeded: {
             progress = {{"phase", "done"}, {"done", 1}, {"total", 1}, {"fraction", 1.0}};
+            step = steps;
+            overall = 1;
             links["stats"] = self + "/stats";
             links["stats_csv"] = self + "/stats.csv";
-            if (request.contains("render") && request["render"].is_object()) {
+            if (rendered) {
                 links["render"] = self + "/render.png";
                 links["heatmap"] = self + "/heatmap.png";
                 links["heatmap_layout"] = self + "/heatmap.json";
@@ -210,6 +243,9 @@ json Api::statusJson(const JobRecord& job) const {
         case JobState::Canceled:
             break;
     }
+    progress["step"] = step;
+    progress["steps"] = steps;
+    progress["overall"] = overall;
     doc["progress"] = progress;
     doc["links"] = links;
     return doc;
@@ -217,18 +253,18 @@ json Api::statusJson(const JobRecord& job) const {
 
 void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
     const std::string type = mediaType(req);
-    const Body body = readBody(reader, limits_.maxBodyBytes);
-    if (body.tooLarge) {
-        return problem(res, 413, "the job is larger than " + std::to_string(limits_.maxBodyBytes) + " bytes");
-    }
-    if (!body.complete) return problem(res, 400, kShortBody);
+    BodyCollector body(limits_, req);
+    body.read(reader);
+    if (body.tooLarge())
+        return problem(res, 413, "the job is larger than " + std::to_string(body.limit()) + " bytes");
+    if (!body.complete()) return problem(res, 400, kShortBody);
     if (!type.empty() && type != kJsonType && type != "application/x-www-form-urlencoded" &&
         type != "text/plain") {
         return problem(res, 415, "send the job as application/json (got " + type + ")");
     }
     json j;
     try {
-        j = parseUntrustedJson(body.bytes, "the body");
+        j = parseUntrustedJson(body.bytes(), "the body");
     } catch (const Error& e) {
         return problem(res, 400, e.what());
     }
@@ -254,43 +290,33 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
 }
 
 void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentReader& reader) {
-    std::string bytes, fileName = req.has_param("name") ? req.get_param_value("name") : "upload";
-    bool tooLarge = false;
-    const auto receive = [&](const char* data, size_t n) {
-        if (bytes.size() + n > limits_.maxUploadBytes) {
-            tooLarge = true;
-            return false;
-        }
-        bytes.append(data, n);
-        return true;
-    };
-    bool complete = false;
+    std::string fileName = req.has_param("name") ? req.get_param_value("name") : "upload";
+    BodyCollector body(limits_, req);
     if (req.is_multipart_form_data()) {
         // The first part named "file" is the mesh; other parts are read and dropped.
         int files = 0;
         bool inFile = false;
-        complete = reader(
+        body.readMultipart(
+            reader,
             [&](const httplib::MultipartFormData& part) {
                 inFile = part.name == "file" && ++files == 1;
                 if (inFile && !part.filename.empty()) fileName = part.filename;
                 return true;
             },
-            [&](const char* data, size_t n) { return inFile ? receive(data, n) : true; });
+            [&] { return inFile; });
     } else {
-        complete = reader(receive);
+        body.read(reader);
     }
-    if (tooLarge) {
-        return problem(res, 413,
-                       "the upload is larger than " + std::to_string(limits_.maxUploadBytes) + " bytes");
-    }
-    if (!complete) return problem(res, 400, kShortBody);
+    if (body.tooLarge())
+        return problem(res, 413, "the upload is larger than " + std::to_string(body.limit()) + " bytes");
+    if (!body.complete()) return problem(res, 400, kShortBody);
     std::optional<MeshFormat> format;
     if (req.has_param("format")) {
         format = parseMeshFormat(req.get_param_value("format"));
         if (!format) return problem(res, 422, "format must be one of obj, stl, asc", "format");
     }
     try {
-        const MeshRecord m = catalog_.upload(bytes, fileName, format);
+        const MeshRecord m = catalog_.upload(body.bytes(), fileName, format);
         json doc = m.summary;
         doc["mesh"] = m.id;
         doc["file_name"] = m.name;
@@ -348,6 +374,7 @@ void Api::deleteJob(const Request& req, Response& res) {
         return problem(res, 409, "the job is " + std::string(jobStateName(job->state)) + ": cancel it first");
     }
     store_.deleteJob(id);
+    results_.clear(id);
     res.status = 204;
 }
 
@@ -361,8 +388,13 @@ void Api::getResult(const Request& req, Response& res, const std::string& file,
             res, 409,
             "the job is " + std::string(jobStateName(job->state)) + "; results exist once it has succeeded");
     }
-    auto bytes = store_.readResult(id, file);
+    auto bytes = results_.read(id, file);
     if (!bytes) return problem(res, 404, "this job has no " + file + " (was render false?)");
+    if (file == "stats.json") {
+        json stats = json::parse(*bytes);
+        addShareStandardErrors(stats);
+        *bytes = stats.dump(2);
+    }
     res.status = 200;
     res.set_content(std::move(*bytes), contentType.c_str());
 }
@@ -402,7 +434,10 @@ void Api::install(httplib::Server& server, bool accessLog) {
         // `curl -X POST` sends no Content-Length: a plain handler would wait out the read timeout for a body.
         {"POST /api/jobs/{id}/cancel",
          [this](const Request& req, Response& res, const httplib::ContentReader& r) {
-             if (req.has_header("Content-Length")) readBody(r, limits_.maxBodyBytes);  // ignored
+             if (req.has_header("Content-Length")) {
+                 BodyCollector ignored(limits_, req);
+                 r(std::ref(ignored));
+             }
              cancelJob(req, res);
          }},
     };
@@ -427,9 +462,11 @@ void Api::install(httplib::Server& server, bool accessLog) {
     }
     if (!plain.empty() || !withReader.empty()) throw std::logic_error("handler without a route");
 
-    RequestRules rules{routes(), limits_.maxUrlBytes, limits_.maxBodyBytes,
-                       {{"POST /api/jobs", limits_.maxBodyBytes}, {"POST /api/meshes", limits_.maxUploadBytes}}};
-    server.set_payload_max_length(std::max(limits_.maxBodyBytes, limits_.maxUploadBytes));
+    const ServiceLimits limits = limits_;
+    RequestRules rules{routes(), limits.maxUrlBytes,
+                       [limits](const std::string& path) { return bodyLimit(limits, path); },
+                       {"POST /api/jobs", "POST /api/meshes"}};
+    server.set_payload_max_length(std::max(limits.maxBodyBytes, limits.maxUploadBytes));
     server.set_pre_routing_handler([rules = std::move(rules)](const Request& req, Response& res) {
         const auto refusal = checkRequest(req, rules);
         if (!refusal) return httplib::Server::HandlerResponse::Unhandled;

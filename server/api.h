@@ -12,6 +12,7 @@
 #include "job_store.h"
 #include "mesh_catalog.h"
 #include "request_guard.h"
+#include "result_files.h"
 
 namespace facetlight::server {
 
@@ -20,7 +21,7 @@ std::string_view openApiDocument();
 
 class Api {
   public:
-    Api(JobStore& store, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits);
+    Api(JobStore& store, ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits);
     // Registers every route, the guards that run before them, the error handlers and the access log.
     void install(httplib::Server& server, bool accessLog);
     static std::vector<Route> routes();
@@ -38,6 +39,7 @@ class Api {
                    const std::string& contentType);
 
     JobStore& store_;
+    ResultFiles& results_;
     JobQueue& queue_;
     MeshCatalog& catalog_;
     ServiceLimits limits_;

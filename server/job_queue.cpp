@@ -9,11 +9,10 @@
 
 namespace facetlight::server {
 
-JobQueue::JobQueue(JobStore& store, const MeshCatalog& catalog, size_t maxQueued, int cores,
-                   std::optional<LaunchSettings> launch)
+JobQueue::JobQueue(JobStore& store, ResultFiles& results, StudyRunner& runner, size_t maxQueued, int cores)
     : store_(store),
-      catalog_(catalog),
-      launch_(std::move(launch)),
+      results_(results),
+      runner_(runner),
       maxQueued_(maxQueued),
       cores_(std::max(1, cores)) {}
 
@@ -117,18 +116,14 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
         const int threads = std::min(spec.settings.trace.threads, cores_);
         spec.settings.trace.threads = threads;
         store_.markRunning(id, threads);
-        store_.clearResults(id);  // a job re-run after a crash starts from nothing
-        const Stone stone = catalog_.resolve(spec.mesh);
-        StudyResult result =
-            launch_ && useLauncher(*launch_, spec.settings)
-                ? runStudyInChild(*launch_, catalog_.locate(spec.mesh), spec.settings, control)
-                : runStudy(stone, spec.settings, control);
-        store_.writeResult(id, "stats.json", result.stats.dump(2));
-        store_.writeResult(id, "stats.csv", result.statsCsv);
-        if (!result.renderPng.empty()) store_.writeResult(id, "render.png", result.renderPng);
-        if (!result.heatmapPng.empty()) store_.writeResult(id, "heatmap.png", result.heatmapPng);
-        if (!result.heatmapLayout.empty()) store_.writeResult(id, "heatmap.json", result.heatmapLayout);
-        if (!result.angularPng.empty()) store_.writeResult(id, "angular.png", result.angularPng);
+        results_.clear(id);  // a job re-run after a crash starts from nothing
+        const StudyResult result = runner_.run(spec, control);
+        results_.write(id, "stats.json", result.stats.dump(2));
+        results_.write(id, "stats.csv", result.statsCsv);
+        if (!result.renderPng.empty()) results_.write(id, "render.png", result.renderPng);
+        if (!result.heatmapPng.empty()) results_.write(id, "heatmap.png", result.heatmapPng);
+        if (!result.heatmapLayout.empty()) results_.write(id, "heatmap.json", result.heatmapLayout);
+        if (!result.angularPng.empty()) results_.write(id, "angular.png", result.angularPng);
         store_.markFinished(id, JobState::Succeeded);
     } catch (const Canceled&) {
         bool shuttingDown;
@@ -136,7 +131,7 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
             std::lock_guard lock(mutex_);
             shuttingDown = stopping_;
         }
-        store_.clearResults(id);
+        results_.clear(id);
         if (shuttingDown) {
             store_.markQueued(id);
         } else {

@@ -1,7 +1,8 @@
 #pragma once
-// The bounded queue and its one worker thread: jobs run one at a time, off the HTTP threads, each with the
-// threads it asked for capped at the machine's cores. Cancelling a running job cancels its RunControl;
-// stopping the service hands the running job back to the queue, so it runs again after a restart.
+// The bounded queue and its one worker thread: it queues jobs and moves their states in the store; its
+// StudyRunner runs them, one at a time, off the HTTP threads, each with the threads it asked for capped at the
+// machine's cores. Cancelling a running job cancels its RunControl; stopping the service hands the running job
+// back to the queue, so it runs again after a restart.
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -12,16 +13,15 @@
 #include <thread>
 
 #include "job_store.h"
-#include "mesh_catalog.h"
+#include "result_files.h"
 #include "study/study.h"
+#include "study_runner.h"
 
 namespace facetlight::server {
 
 class JobQueue {
   public:
-    // With `launch`, jobs it selects run as child processes through its launcher (e.g. mpirun).
-    JobQueue(JobStore& store, const MeshCatalog& catalog, size_t maxQueued, int cores,
-             std::optional<LaunchSettings> launch = std::nullopt);
+    JobQueue(JobStore& store, ResultFiles& results, StudyRunner& runner, size_t maxQueued, int cores);
     ~JobQueue();  // stop()
 
     // Re-queues what the store holds (jobs a crash left running first in their turn) and starts the worker.
@@ -47,8 +47,8 @@ class JobQueue {
     void runJob(const std::string& id, RunControl& control);
 
     JobStore& store_;
-    const MeshCatalog& catalog_;
-    const std::optional<LaunchSettings> launch_;
+    ResultFiles& results_;
+    StudyRunner& runner_;
     const size_t maxQueued_;
     const int cores_;
 

@@ -1,9 +1,7 @@
 #pragma once
-// The durable side of the service: jobs and uploaded meshes in SQLite (WAL), result files under
-// <data>/jobs/<id>/, each written to a temporary name and renamed, so a crash never leaves half a file.
+// The jobs table of the service's database: each job's request, state and times. Their result files are
+// ResultFiles' (result_files.h), uploaded meshes MeshStore's (mesh_store.h).
 #include <cstdint>
-#include <filesystem>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-struct sqlite3;
+#include "database.h"
 
 namespace facetlight::server {
 
@@ -32,26 +30,9 @@ struct JobRecord {
     int threadsUsed = 0;  // threads the worker gave it (the request capped at the cores)
 };
 
-struct MeshRecord {
-    std::string id;
-    std::string name;    // the file name it was uploaded as, cleaned
-    std::string format;  // obj, stl or asc
-    std::string createdAt;
-    nlohmann::json summary;  // stoneSummaryJson of the built stone
-};
-
-// A fresh random 128-bit identifier as 32 lowercase hex digits (unguessable: from std::random_device).
-std::string newId();
-bool isId(std::string_view s);
-std::string nowIso8601();
-
 class JobStore {
   public:
-    // Opens (creating when needed) <dataDir>/facetlight.db and brings its schema up to date.
-    explicit JobStore(std::filesystem::path dataDir);
-    ~JobStore();
-    JobStore(const JobStore&) = delete;
-    JobStore& operator=(const JobStore&) = delete;
+    explicit JobStore(Database& db) : db_(db) {}
 
     void insertJob(JobRecord& job);  // sets job.seq
     std::optional<JobRecord> job(const std::string& id) const;
@@ -63,31 +44,11 @@ class JobStore {
     void markRunning(const std::string& id, int threadsUsed);
     void markFinished(const std::string& id, JobState state, const std::string& error = {});
     void markQueued(const std::string& id);  // a running job handed back at shutdown
-    // Removes a job and its result files; false when there was no such job.
+    // Removes a job; false when there was no such job.
     bool deleteJob(const std::string& id);
 
-    // Result files. writeResult() writes <name>.tmp then renames it over <name>.
-    void writeResult(const std::string& id, const std::string& name, std::string_view bytes);
-    std::optional<std::string> readResult(const std::string& id, const std::string& name) const;
-    void clearResults(const std::string& id);
-
-    void insertMesh(const MeshRecord& mesh, std::string_view bytes);
-    std::optional<MeshRecord> mesh(const std::string& id) const;
-    std::vector<MeshRecord> meshes() const;
-    std::filesystem::path meshFile(const MeshRecord& mesh) const;
-
-    const std::filesystem::path& dataDir() const { return dataDir_; }
-
   private:
-    std::filesystem::path jobDir(const std::string& id) const;
-    void exec(const char* sql) const;
-
-    std::filesystem::path dataDir_;
-    sqlite3* db_ = nullptr;
-    mutable std::mutex mutex_;  // one connection, used by the HTTP threads and the worker in turn
+    Database& db_;
 };
-
-// Writes bytes to path via path.tmp and a rename (atomic on POSIX file systems).
-void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
 }  // namespace facetlight::server

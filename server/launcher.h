@@ -7,11 +7,11 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "child_process.h"
 #include "study/study.h"
 
 namespace facetlight::server {
@@ -43,18 +43,6 @@ struct ChildMesh {
 // and throws Canceled. A launch that fails or exits non-zero throws Error with the end of the child's output.
 StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
                             const StudySettings& settings, RunControl& control);
-
-// The process part, for tests: runs argv in its own process group with stdout and stderr on one pipe, calls
-// onLine for each output line, ends the group when control.cancelled() becomes true.
-struct ChildExit {
-    int exitCode = -1;  // valid when signal == 0
-    int signal = 0;     // the signal that ended the child, if any
-    bool cancelled = false;
-    std::string tail;  // the last few KB of output that were not progress lines
-};
-ChildExit runChild(const std::vector<std::string>& argv,
-                   const std::function<bool(std::string_view line)>& onLine, const RunControl& control,
-                   std::chrono::milliseconds cancelGrace);
 
 // Reads a progress line {"phase": "tracing", "done": 1, "total": 2} into control; false if it is not one.
 bool applyProgressLine(std::string_view line, RunControl& control);

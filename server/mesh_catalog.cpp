@@ -48,7 +48,7 @@ std::optional<MeshFormat> parseMeshFormat(std::string_view name) {
     return std::nullopt;
 }
 
-MeshCatalog::MeshCatalog(JobStore& store, fs::path meshesDir)
+MeshCatalog::MeshCatalog(MeshStore& store, fs::path meshesDir)
     : store_(store), meshesDir_(std::move(meshesDir)) {}
 
 bool MeshCatalog::isShapeName(std::string_view s) {

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/mesh_io.h"
-#include "job_store.h"
+#include "mesh_store.h"
 #include "launcher.h"
 #include "stone/stone.h"
 
@@ -20,7 +20,7 @@ namespace facetlight::server {
 
 class MeshCatalog {
   public:
-    MeshCatalog(JobStore& store, std::filesystem::path meshesDir);
+    MeshCatalog(MeshStore& store, std::filesystem::path meshesDir);
 
     // Throws Error when `mesh` names nothing we know, or its file does not build into a stone.
     Stone resolve(const std::string& mesh) const;
@@ -37,7 +37,7 @@ class MeshCatalog {
   private:
     std::optional<std::filesystem::path> shippedFile(const std::string& name) const;
 
-    JobStore& store_;
+    MeshStore& store_;
     std::filesystem::path meshesDir_;
     mutable std::mutex mutex_;
     mutable std::optional<nlohmann::json> shippedSummaries_;  // built on first list()

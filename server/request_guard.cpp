@@ -73,14 +73,12 @@ std::optional<Refusal> checkRequest(const httplib::Request& req, const RequestRu
         return r;
     }
 
-    size_t limit = rules.maxBodyBytes;
-    for (const auto& [route, routeLimit] : rules.bodyRoutes) {
+    for (const std::string& route : rules.bodyRoutes) {
         const size_t space = route.find(' ');
-        if (route.substr(0, space) == req.method && matchesTemplate(route.substr(space + 1), req.path)) {
-            if (!length) return refuse(411, "send the body with a Content-Length header");
-            limit = routeLimit;
-        }
+        if (!length && route.substr(0, space) == req.method && matchesTemplate(route.substr(space + 1), req.path))
+            return refuse(411, "send the body with a Content-Length header");
     }
+    const size_t limit = rules.bodyLimit(req.path);
     if (length && std::stoull(*length) > limit)
         return refuse(413, "the request body is larger than " + std::to_string(limit) + " bytes");
     return std::nullopt;

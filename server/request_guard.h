@@ -3,8 +3,9 @@
 // path, Transfer-Encoding, Content-Length (well formed, one value, within the route's limit, present where a
 // body is expected), and methods a route does not take (405 with Allow). A pure function of the request, so
 // it is unit tested and fuzzed without a server.
-#include <map>
+#include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -22,9 +23,8 @@ struct Route {
 struct RequestRules {
     std::vector<Route> routes;
     size_t maxUrlBytes = 2048;
-    size_t maxBodyBytes = 1 << 20;  // any route not listed in bodyRoutes
-    // Routes that read a body ("POST /api/jobs"), each with its limit: they need a Content-Length.
-    std::map<std::string, size_t> bodyRoutes;
+    std::function<size_t(const std::string& path)> bodyLimit;  // the most bytes a body may have on a path
+    std::set<std::string> bodyRoutes;  // routes that read a body ("POST /api/jobs"): they need a Content-Length
 };
 
 struct Refusal {

@@ -8,14 +8,20 @@ namespace facetlight::server {
 
 Service::Service(ServiceConfig config) : config_(std::move(config)), http_(config_.http) {
     const int cores = config_.cores > 0 ? config_.cores : int(std::thread::hardware_concurrency());
-    store_ = std::make_unique<JobStore>(config_.dataDir);
-    catalog_ = std::make_unique<MeshCatalog>(*store_, config_.meshesDir);
-    queue_ = std::make_unique<JobQueue>(*store_, *catalog_, config_.limits.maxQueued, cores, config_.launch);
-    api_ = std::make_unique<Api>(*store_, *queue_, *catalog_, config_.limits);
+    database_ = std::make_unique<Database>(config_.dataDir);
+    store_ = std::make_unique<JobStore>(*database_);
+    meshes_ = std::make_unique<MeshStore>(*database_, config_.dataDir / "meshes");
+    results_ = std::make_unique<ResultFiles>(config_.dataDir / "jobs");
+    catalog_ = std::make_unique<MeshCatalog>(*meshes_, config_.meshesDir);
+    runner_ = makeStudyRunner(*catalog_, config_.launch);
+    queue_ = std::make_unique<JobQueue>(*store_, *results_, *runner_, config_.limits.maxQueued, cores);
+    api_ = std::make_unique<Api>(*store_, *results_, *queue_, *catalog_, config_.limits);
     http_.set_tcp_nodelay(true);  // headers and body go out as two writes: no Nagle delay between them
     api_->install(http_, config_.accessLog);
     std::error_code ec;
     if (!config_.webDir.empty() && std::filesystem::is_directory(config_.webDir, ec)) {
+        // The page's ES modules: JavaScript's media type (RFC 9239), which browsers require of module scripts.
+        http_.set_file_extension_and_mimetype_mapping("js", "text/javascript");
         http_.set_file_extension_and_mimetype_mapping("mjs", "text/javascript");
         if (!http_.set_mount_point("/", config_.webDir.string())) {
             std::cerr << "facetlight-server: cannot serve " << config_.webDir << "\n";

@@ -1,6 +1,6 @@
 #pragma once
-// The whole service in one object, for main() and the tests: the store, the mesh catalog, the queue with its
-// worker and the HTTP server, started and stopped in the right order.
+// The whole service in one object, for main() and the tests: the stores (jobs, meshes, result files), the mesh
+// catalog, the runner, the queue with its worker and the HTTP server, started and stopped in the right order.
 #include <atomic>
 #include <filesystem>
 #include <memory>
@@ -14,6 +14,9 @@
 #include "job_spec.h"
 #include "job_store.h"
 #include "mesh_catalog.h"
+#include "mesh_store.h"
+#include "result_files.h"
+#include "study_runner.h"
 
 namespace facetlight::server {
 
@@ -48,8 +51,12 @@ class Service {
 
   private:
     ServiceConfig config_;
+    std::unique_ptr<Database> database_;
     std::unique_ptr<JobStore> store_;
+    std::unique_ptr<MeshStore> meshes_;
+    std::unique_ptr<ResultFiles> results_;
     std::unique_ptr<MeshCatalog> catalog_;
+    std::unique_ptr<StudyRunner> runner_;
     std::unique_ptr<JobQueue> queue_;
     std::unique_ptr<Api> api_;
     HttpServer http_;

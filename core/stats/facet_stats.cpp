@@ -184,6 +184,14 @@ json statsToJson(const FacetStats& s, const Stone& stone, const TraceSettings& s
               {"pavilion", histogramJson(s.histogram[2])}}}};
 }
 
+void addShareStandardErrors(json& stats) {
+    const uint64_t n = stats.at("totals").at("hit").get<uint64_t>();
+    for (auto& [name, region] : stats.at("regions").items())
+        region["share_stderr"] = stderrOf(region.at("share").get<double>(), n);
+    for (json& facet : stats.at("facets"))
+        facet["leaving_share_stderr"] = stderrOf(facet.at("leaving_share").get<double>(), n);
+}
+
 void writeFacetCsv(std::ostream& out, const FacetStats& s, const Stone& stone) {
     if (s.facets.size() != stone.facets.size())
         throw Error("statistics do not belong to stone '" + stone.name + "'");

@@ -80,6 +80,10 @@ struct TraceTiming {
 // The full answer of a trace (docs/stats-schema.md).
 nlohmann::json statsToJson(const FacetStats& stats, const Stone& stone, const TraceSettings& settings,
                            const TraceTiming& timing);
+// Adds each region's `share_stderr` and each facet's `leaving_share_stderr` (binomial standard errors over
+// `totals.hit`) to a document of statsToJson: the service sends them with the statistics, so that clients
+// need not compute them; the document written to disk keeps its format.
+void addShareStandardErrors(nlohmann::json& stats);
 // The facet table: id,name,region,area,normal_x,normal_y,normal_z,entering,reflected,leaving,
 // internal_reflections,leaving_share.
 void writeFacetCsv(std::ostream& out, const FacetStats& stats, const Stone& stone);

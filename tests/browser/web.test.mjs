@@ -282,6 +282,13 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     for (const region of ['table', 'crown', 'pavilion']) {
       assert.equal(await page.locator(`table.regions tr[data-region="${region}"]`).count(), 1, region);
     }
+    // The standard error shown is the one the server sent, to the decimals shown.
+    const tableShare = await page.textContent('table.regions tr[data-region="table"] td:nth-of-type(2)');
+    const [, shown, err] = tableShare.match(/^(\d+(?:\.\d+)?) % ± (\d+(?:\.\d+)?)$/) || [];
+    assert.ok(err, tableShare);
+    const decimals = (err.split('.')[1] || '').length;
+    assert.equal(err, (stats.regions.table.share_stderr * 100).toFixed(decimals));
+    assert.equal(shown, (stats.regions.table.share * 100).toFixed(decimals));
 
     const rows = () => page.$$eval('table.facets tbody tr', (trs) => trs.map((tr) => Number(tr.dataset.facet)));
     assert.equal((await rows()).length, stats.facets.length);

@@ -18,8 +18,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                                      {"GET", "/api/jobs/{id}/stats.csv"},
                                      {"POST", "/api/meshes"}},
                                     256,
-                                    1024,
-                                    {{"POST /api/jobs", 1024}, {"POST /api/meshes", 4096}}};
+                                    [](const std::string& path) { return path == "/api/meshes" ? 4096 : 1024; },
+                                    {"POST /api/jobs", "POST /api/meshes"}};
     std::string_view text(reinterpret_cast<const char*>(data), size);
     httplib::Request req;
     for (bool first = true; !text.empty(); first = false) {

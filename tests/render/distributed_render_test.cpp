@@ -11,6 +11,7 @@
 #include "pictures/angular_plot.h"
 #include "render/renderer.h"
 #include "support/fixtures.h"
+#include "support/thread_communicator.h"
 #include "util/distributed.h"
 #include "util/error.h"
 
@@ -144,7 +145,21 @@ TEST(TileShares, SerialCommunicatorRendersTheWholeImage) {
     EXPECT_TRUE(a.pixels == b.pixels);
 }
 
-TEST(AnyRank, SerialIsTheFlagItself) {
+// Every rank learns whether any rank raised its flag (a cancel on one rank stops them all): with the flag on
+// no rank, on one rank (first, middle or last) and on every rank, over groups of 1 to 4 ranks.
+TEST(AnyRank, EveryRankSeesAFlagRaisedOnAnyRank) {
+    for (int size = 1; size <= 4; ++size) {
+        for (int raised = -2; raised < size; ++raised) {  // -2: none, -1: all, else that rank alone
+            const auto flagOf = [&](int rank) { return raised == -1 || raised == rank; };
+            std::vector<int> seen(size_t(size), -1);
+            test::onEveryRank(size, [&](Communicator& comm) {
+                seen[size_t(comm.rank())] = anyRank(comm, flagOf(comm.rank()));
+            });
+            for (int r = 0; r < size; ++r)
+                EXPECT_EQ(seen[size_t(r)], raised != -2)
+                    << size << " ranks, raised " << raised << ", rank " << r;
+        }
+    }
     SerialCommunicator serial;
     EXPECT_TRUE(anyRank(serial, true));
     EXPECT_FALSE(anyRank(serial, false));

@@ -13,6 +13,7 @@
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
 #include "pictures/angular_plot.h"
+#include "pictures/colormap.h"
 #include "pictures/heatmap.h"
 #include "pictures/image.h"
 #include "study/study.h"
@@ -188,25 +189,80 @@ TEST(Pictures, HeatmapLayoutPlacesEveryDrawnFacet) {
     EXPECT_EQ(doc["facets"].back()["side"], "pavilion");
 }
 
-TEST(Pictures, HeatmapAndAngularPlotAreNotBlank) {
-    const TraceResult traced = trace(Scene(roundBrilliant(), smallTrace(2)));
-    const Image heatmap = facetHeatmap(roundBrilliant(), traced.stats);
-    AngularHistogram h;
-    h.add(normalize(Vec3{0.3, 0.1, 1}));
-    h.add({0, 0, -1});
-    EXPECT_EQ(h.total, 2u);
-    const Image angular = angularPlot(h, "test");
-    for (const Image* image : {&heatmap, &angular}) {
-        double sum = 0, sum2 = 0;
-        for (int y = 0; y < image->height(); ++y) {
-            for (int x = 0; x < image->width(); ++x) {
-                sum += image->at(x, y).g;
-                sum2 += image->at(x, y).g * image->at(x, y).g;
-            }
+double colourDistance(const Rgb& a, const Rgb& b) {
+    return std::max({std::fabs(a.r - b.r), std::fabs(a.g - b.g), std::fabs(a.b - b.b)});
+}
+
+// Pixels where two pictures of the same size differ visibly.
+std::vector<std::array<int, 2>> changedPixels(const Image& a, const Image& b) {
+    std::vector<std::array<int, 2>> out;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            if (colourDistance(a.at(x, y), b.at(x, y)) > 0.05) out.push_back({x, y});
         }
-        const double n = double(image->width()) * image->height();
-        EXPECT_GT(sum2 / n - (sum / n) * (sum / n), 1e-3);
     }
+    return out;
+}
+
+// Each facet is filled with the colour of its share: all the light through the table (the top of the scale)
+// and none elsewhere (the bottom), sampled below the table's label and at the unlabelled facets' centroids.
+// A picture with axes, titles and colour bar but no filled facets fails.
+TEST(Pictures, HeatmapFillsEachFacetWithItsShare) {
+    const Stone& stone = roundBrilliant();
+    FacetStats stats(stone.facets.size());
+    stats.photons = stats.hit = 1000;
+    const HeatmapLayout layout = heatmapLayout(stone);
+    const HeatmapFacet* table = nullptr;
+    for (const HeatmapFacet& f : layout.facets) {
+        if (stone.facets[f.facet].region == Region::Table) table = &f;
+    }
+    ASSERT_NE(table, nullptr);
+    stats.facets[table->facet].leaving = 600;
+    const Image heatmap = facetHeatmap(stone, stats);
+    const auto colourAt = [&](const Point2& p) { return heatmap.at(int(p[0]), int(p[1])); };
+    EXPECT_LT(
+        colourDistance(colourAt({table->centroid[0], table->centroid[1] + 2 * textHeight(1.5)}), viridis(1)),
+        0.02);
+    for (const HeatmapFacet& f : layout.facets) {
+        if (&f == table) continue;
+        EXPECT_LT(colourDistance(colourAt(f.centroid), viridis(0)), 0.02) << f.facet;
+    }
+    // A traced stone's shares colour most of the diagrams, compared with a stone no light left.
+    const TraceResult traced = trace(Scene(stone, smallTrace(2)));
+    const Image dark = facetHeatmap(stone, FacetStats(stone.facets.size()));
+    EXPECT_GT(changedPixels(facetHeatmap(stone, traced.stats), dark).size(),
+              size_t(dark.width()) * size_t(dark.height()) / 10);
+}
+
+// One direction lights one bin of the polar plot at the top of the colour scale and nothing else: the
+// changed pixels against an empty histogram's plot are a small patch of that colour, above the disc's
+// centre for an azimuth of about 100 degrees and below it for one of about 280.
+TEST(Pictures, AngularPlotLightsTheBinOfEachDirection) {
+    const Image empty = angularPlot(AngularHistogram(), "test");
+    std::array<double, 2> patchY{};
+    for (int k = 0; k < 2; ++k) {
+        const double theta = radians(40.5), phi = radians(k == 0 ? 102.5 : 282.5);
+        AngularHistogram h;
+        for (int i = 0; i < 3; ++i)
+            h.add({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
+        h.add({0, 0, -1});  // below the horizon: counted, not drawn
+        EXPECT_EQ(h.total, 4u);
+        const Image plot = angularPlot(h, "test");
+        const auto changed = changedPixels(plot, empty);
+        // The bin spans 1 degree by 5 degrees: about 3 by 11 pixels at this radius.
+        ASSERT_GT(changed.size(), 15u) << k;
+        EXPECT_LT(changed.size(), 100u) << k;
+        // Pixels on the bin's rim and under the grid are blends; most are the top of the scale.
+        double y = 0;
+        size_t top = 0;
+        for (const auto& p : changed) {
+            top += colourDistance(plot.at(p[0], p[1]), viridis(1)) < 0.05;
+            y += p[1];
+        }
+        EXPECT_GT(2 * top, changed.size()) << k;
+        patchY[size_t(k)] = y / double(changed.size());
+    }
+    EXPECT_LT(patchY[0] + 200, patchY[1]);
 }
 
 TEST(Pictures, PngSignatureAndSize) {

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <set>
 #include <thread>
@@ -168,6 +169,9 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     const json done = waitFinished(id);
     ASSERT_EQ(done["state"], "succeeded") << done.dump();
     EXPECT_EQ(done["progress"]["fraction"], 1.0);
+    EXPECT_EQ(done["progress"]["overall"], 1.0);
+    EXPECT_EQ(done["progress"]["step"], 3);  // with render: tracing, photon map, rendering
+    EXPECT_EQ(done["progress"]["steps"], 3);
     EXPECT_FALSE(done["started_at"].is_null());
     EXPECT_FALSE(done["finished_at"].is_null());
     EXPECT_EQ(done["settings"]["photons"], 20000);
@@ -175,7 +179,14 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
 
     auto stats = client_->Get("/api/jobs/" + id + "/stats");
     ASSERT_TRUE(stats && stats->status == 200);
-    EXPECT_TRUE(json::parse(stats->body).is_object());
+    const json statsDoc = json::parse(stats->body);
+    // Served with the standard errors of the shares; the stored result file is the CLI's document as it is.
+    EXPECT_TRUE(statsDoc["regions"]["table"]["share_stderr"].is_number());
+    EXPECT_TRUE(statsDoc["facets"][0]["leaving_share_stderr"].is_number());
+    std::ifstream storedFile(dir_ / "data" / "jobs" / id / "stats.json");
+    const std::string stored{std::istreambuf_iterator<char>(storedFile), {}};
+    EXPECT_NE(stored.find("\"leaving_share\""), std::string::npos);
+    EXPECT_EQ(stored.find("share_stderr"), std::string::npos);
     auto csv = client_->Get("/api/jobs/" + id + "/stats.csv");
     ASSERT_TRUE(csv && csv->status == 200);
     EXPECT_EQ(csv->get_header_value("Content-Type"), "text/csv");
@@ -194,7 +205,6 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     const json map = json::parse(layout->body);
     EXPECT_EQ(map["width"], 1100);
     size_t drawn = 0;
-    const json statsDoc = json::parse(stats->body);
     for (const json& f : statsDoc["facets"]) drawn += f["region"] != "girdle";
     EXPECT_EQ(map["facets"].size(), drawn);
     auto png = client_->Get("/api/jobs/" + id + "/render.png");

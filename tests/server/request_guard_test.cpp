@@ -15,8 +15,8 @@ const RequestRules& rules() {
                                  {"POST", "/api/jobs/{id}/cancel"},
                                  {"POST", "/api/meshes"}},
                                 100,
-                                1000,
-                                {{"POST /api/jobs", 1000}, {"POST /api/meshes", 5000}}};
+                                [](const std::string& path) { return path == "/api/meshes" ? 5000 : 1000; },
+                                {"POST /api/jobs", "POST /api/meshes"}};
     return r;
 }
 

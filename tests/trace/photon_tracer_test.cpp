@@ -478,7 +478,8 @@ TEST(FacetStats, JsonAndCsvReport) {
     const Stone stone = cube();
     TraceSettings settings = baseSettings(10'000);
     const TraceResult r = trace(Scene(stone, settings));
-    const json j = statsToJson(r.stats, stone, settings, r.timing);
+    json j = statsToJson(r.stats, stone, settings, r.timing);
+    addShareStandardErrors(j);
     for (const char* key :
          {"mesh", "settings", "timing", "totals", "regions", "facets", "exit_angle_histogram"}) {
         EXPECT_TRUE(j.contains(key)) << key;
@@ -487,10 +488,22 @@ TEST(FacetStats, JsonAndCsvReport) {
     EXPECT_EQ(j["exit_angle_histogram"]["crown"].size(), 180u);
     EXPECT_EQ(j["totals"]["hit"].get<uint64_t>(),
               j["totals"]["entered"].get<uint64_t>() + j["totals"]["reflected_at_entry"].get<uint64_t>());
+    // Shares of `hit` with their binomial standard errors, sqrt(p (1 - p) / hit).
+    const double hit = double(r.stats.hit);
+    const auto binomialStderr = [&](double p) { return std::sqrt(p * (1 - p) / hit); };
     uint64_t regionLeaving = 0;
-    for (const auto& [name, region] : j["regions"].items())
+    for (const auto& [name, region] : j["regions"].items()) {
         regionLeaving += region["leaving"].get<uint64_t>();
+        const double p = region["leaving"].get<double>() / hit;
+        EXPECT_DOUBLE_EQ(region["share"].get<double>(), p) << name;
+        EXPECT_DOUBLE_EQ(region["share_stderr"].get<double>(), binomialStderr(p)) << name;
+    }
     EXPECT_EQ(regionLeaving, r.stats.exited);
+    for (const json& f : j["facets"]) {
+        EXPECT_DOUBLE_EQ(f["leaving_share_stderr"].get<double>(),
+                         binomialStderr(f["leaving_share"].get<double>()))
+            << f["name"];
+    }
     std::ostringstream csv;
     writeFacetCsv(csv, r.stats, stone);
     const std::string text = csv.str();

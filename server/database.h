@@ -1,0 +1,59 @@
+#pragma once
+// The service's SQLite database (WAL) under <data>/facetlight.db, shared by the job and mesh stores: one
+// connection, used by the HTTP threads and the worker in turn under one lock, its schema brought up to date
+// on opening. Also the identifiers and timestamps the stored records carry.
+#include <cstdint>
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <string_view>
+
+struct sqlite3;
+struct sqlite3_stmt;
+
+namespace facetlight::server {
+
+// A fresh random 128-bit identifier as 32 lowercase hex digits (unguessable: from std::random_device).
+std::string newId();
+bool isId(std::string_view s);
+std::string nowIso8601();
+
+class Database {
+  public:
+    // Opens (creating when needed) <dataDir>/facetlight.db and brings its schema up to date.
+    explicit Database(const std::filesystem::path& dataDir);
+    ~Database();
+    Database(const Database&) = delete;
+    Database& operator=(const Database&) = delete;
+
+    // Hold this while using handle().
+    std::mutex& mutex() const { return mutex_; }
+    sqlite3* handle() const { return db_; }
+    void exec(const char* sql) const;
+
+  private:
+    sqlite3* db_ = nullptr;
+    mutable std::mutex mutex_;
+};
+
+// A prepared statement that finalizes itself; errors become Error with SQLite's message.
+class Statement {
+  public:
+    Statement(sqlite3* db, const char* sql);
+    ~Statement();
+    Statement(const Statement&) = delete;
+    Statement& operator=(const Statement&) = delete;
+
+    Statement& bind(int i, std::string_view text);
+    Statement& bind(int i, int64_t v);
+    bool step();  // true while there is a row
+    std::string text(int col) const;
+    int64_t integer(int col) const;
+
+  private:
+    [[noreturn]] void fail() const;
+    sqlite3* db_;
+    sqlite3_stmt* stmt_ = nullptr;
+};
+
+}  // namespace facetlight::server

@@ -1,0 +1,87 @@
+#include "result_files.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "database.h"
+#include "util/error.h"
+
+namespace facetlight::server {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const std::string& what, const fs::path& path) {
+    throw Error("cannot " + what + " " + path.string() + ": " + std::strerror(errno));
+}
+
+// Flushes a folder's entries (a file created or renamed in it) to the disk.
+void syncDirectory(const fs::path& dir) {
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) fail("open", dir);
+    const bool synced = ::fsync(fd) == 0;
+    ::close(fd);
+    if (!synced) fail("sync", dir);
+}
+
+}  // namespace
+
+void writeFileAtomically(const fs::path& path, std::string_view bytes) {
+    const fs::path tmp = path.string() + ".tmp";
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) fail("write", tmp);
+    size_t written = 0;
+    while (written < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        written += size_t(n);
+    }
+    const bool ok = written == bytes.size() && ::fsync(fd) == 0;
+    const int savedErrno = errno;
+    if (::close(fd) != 0 || !ok) {
+        errno = ok ? errno : savedErrno;
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        fail("write", tmp);
+    }
+    fs::rename(tmp, path);
+    syncDirectory(path.parent_path());
+}
+
+ResultFiles::ResultFiles(fs::path dir) : dir_(std::move(dir)) {
+    std::error_code ec;
+    fs::create_directories(dir_, ec);
+    if (ec) throw Error("cannot create result directory " + dir_.string() + ": " + ec.message());
+}
+
+fs::path ResultFiles::jobDir(const std::string& jobId) const {
+    if (!isId(jobId)) throw Error("invalid job id");
+    return dir_ / jobId;
+}
+
+void ResultFiles::write(const std::string& jobId, const std::string& name, std::string_view bytes) {
+    const fs::path dir = jobDir(jobId);
+    if (fs::create_directories(dir)) syncDirectory(dir_);
+    writeFileAtomically(dir / name, bytes);
+}
+
+std::optional<std::string> ResultFiles::read(const std::string& jobId, const std::string& name) const {
+    std::ifstream in(jobDir(jobId) / name, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return std::move(ss).str();
+}
+
+void ResultFiles::clear(const std::string& jobId) {
+    std::error_code ec;
+    fs::remove_all(jobDir(jobId), ec);
+}
+
+}  // namespace facetlight::server

@@ -1,0 +1,30 @@
+#pragma once
+// A job's result files under <dir>/<job id>/. Each is written to a temporary name, flushed to the disk and
+// renamed over its name, and the folder flushed after the rename: after a crash or a power cut a result is
+// there whole or not at all.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace facetlight::server {
+
+class ResultFiles {
+  public:
+    // `dir` holds one folder per job; created when missing.
+    explicit ResultFiles(std::filesystem::path dir);
+
+    void write(const std::string& jobId, const std::string& name, std::string_view bytes);
+    std::optional<std::string> read(const std::string& jobId, const std::string& name) const;
+    void clear(const std::string& jobId);  // every result of the job, and its folder
+
+  private:
+    std::filesystem::path jobDir(const std::string& jobId) const;
+    std::filesystem::path dir_;
+};
+
+// Writes bytes to path.tmp, fsyncs it, renames it over path and fsyncs path's folder (POSIX: the rename is
+// atomic, and durable once the folder is synced). Throws Error.
+void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
+
+}  // namespace facetlight::server

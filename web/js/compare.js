@@ -1,0 +1,121 @@
+// Several jobs side by side: a ranking by crown return and a table of the figures.
+import { api, jobUrl } from './api.js';
+import { FIGURES } from './constants.js';
+import { $, h } from './dom.js';
+import { decimalsFor, fmtPctErr, shortId } from './format.js';
+import { pictures, scaleEnd } from './heatmap.js';
+import { displayMeshName } from './meshes.js';
+import { jobSummary } from './progress.js';
+import { regionTable } from './result.js';
+
+const compareView = { ids: [] };
+
+export async function showCompare(ids) {
+  compareView.ids = ids;
+  const choices = $('#compare-choices');
+  const body = $('#compare-body');
+  let finished = [];
+  try {
+    const page = await api('/api/jobs?limit=100');
+    finished = (page.jobs || []).filter((j) => j.state === 'succeeded');
+  } catch (e) {
+    body.replaceChildren(h('p', { class: 'form-error', role: 'alert' }, e.message));
+    return;
+  }
+  choices.replaceChildren(...(finished.length ? finished.map((j) => h('label', { class: 'choice' },
+    h('input', { type: 'checkbox', name: 'job', value: j.id, checked: ids.includes(j.id) }),
+    h('span', {}, h('strong', {}, displayMeshName(j.mesh)), ` · ${jobSummary(j.settings)} · job ${shortId(j.id)}`)))
+    : [h('p', { class: 'empty' }, 'No finished jobs yet.')]));
+  if (ids.length < 2) {
+    body.replaceChildren(h('p', { class: 'empty' }, 'Choose two or more finished jobs above to see them side by side.'));
+    return;
+  }
+  body.replaceChildren(h('p', { class: 'hint', role: 'status' }, 'Loading statistics…'));
+  const entries = await Promise.all(ids.map(async (id) => {
+    try {
+      const [job, stats] = await Promise.all([api(jobUrl(id)), api(jobUrl(id, '/stats'))]);
+      return { job, stats };
+    } catch (e) {
+      return { id, error: e.message };
+    }
+  }));
+  if (compareView.ids !== ids) return;
+  const ok = entries.filter((e) => !e.error);
+  ok.sort((a, b) => (b.stats.totals.crown_return - a.stats.totals.crown_return) || a.job.created_at.localeCompare(b.job.created_at));
+  const failed = entries.filter((e) => e.error);
+  const parts = [];
+  if (failed.length) {
+    parts.push(h('p', { class: 'form-error', role: 'alert' }, failed.map((f) => `Job ${shortId(f.id)}: ${f.error}`).join('; ')));
+  }
+  if (ok.length) parts.push(ranking(ok), compareCards(ok), compareTable(ok));
+  body.replaceChildren(...parts);
+}
+
+function entryName(e) { return displayMeshName(e.job.mesh); }
+
+// Differences within two combined standard errors are called "within noise", not a win.
+function verdict(best, other) {
+  const a = best.stats.totals;
+  const b = other.stats.totals;
+  const diff = a.crown_return - b.crown_return;
+  const se = Math.hypot(a.crown_return_stderr || 0, b.crown_return_stderr || 0);
+  const d = decimalsFor(se * 100);
+  const text = `${(diff * 100).toFixed(d)} pts below #1`;
+  return se > 0 && diff < 2 * se ? `${text} — within noise (±${(2 * se * 100).toFixed(d)})` : text;
+}
+
+function ranking(entries) {
+  const best = entries[0].stats.totals.crown_return || 1e-12;
+  return h('section', { class: 'card ranking', 'aria-labelledby': 'ranking-title' },
+    h('h2', { id: 'ranking-title' }, 'Crown return, ranked'),
+    h('ol', { class: 'rank-list' }, entries.map((e, i) => {
+      const t = e.stats.totals;
+      return h('li', { class: `rank rank-${i + 1}`, 'data-id': e.job.id },
+        h('span', { class: 'rank-no' }, `#${i + 1}`),
+        h('div', { class: 'rank-body' },
+          h('p', { class: 'rank-name' }, h('a', { href: `#/jobs/${e.job.id}` }, entryName(e)),
+            i === 0 ? h('span', { class: 'best-tag' }, '★ Most light out of the top') : null),
+          h('p', { class: 'rank-meta' }, `${jobSummary(e.job.settings)} · job ${shortId(e.job.id)}`),
+          h('div', { class: 'rank-bar-track' },
+            h('span', { class: `rank-bar${i === 0 ? ' best' : ''}`, style: `width:${(t.crown_return / best) * 100}%` })),
+          h('p', { class: 'rank-value' }, h('strong', {}, fmtPctErr(t.crown_return, t.crown_return_stderr)),
+            i === 0 ? '' : ` · ${verdict(entries[0], e)}`)));
+    })));
+}
+
+function compareCards(entries) {
+  // One colour scale for every heat-map, so that the same colour means the same share in each design.
+  const commonScale = scaleEnd(Math.max(0, ...entries.flatMap((e) => (e.stats.facets || []).map((f) => f.leaving_share))));
+  return h('section', { 'aria-labelledby': 'side-title' },
+    h('h2', { id: 'side-title' }, 'Side by side'),
+    h('p', { class: 'hint' }, `Heat-maps share one colour scale, 0 to ${(commonScale * 100).toFixed(1)} % of the light leaving a facet.`),
+    h('div', { class: 'compare-grid' }, entries.map((e, i) => {
+      const t = e.stats.totals;
+      return h('article', { class: 'card compare-card', 'data-id': e.job.id },
+        h('h3', {}, h('span', { class: 'rank-no small' }, `#${i + 1}`), ' ', h('a', { href: `#/jobs/${e.job.id}` }, entryName(e))),
+        h('p', { class: 'rank-meta' }, jobSummary(e.job.settings)),
+        h('p', { class: 'compare-value' }, fmtPctErr(t.crown_return, t.crown_return_stderr), h('span', { class: 'muted' }, ' crown return')),
+        pictures(e.job, entryName(e), e.stats, commonScale),
+        regionTable(e.stats.regions || {}, `Light leaving each region, ${entryName(e)}`, true));
+    })));
+}
+
+function compareTable(entries) {
+  return h('section', { class: 'card', 'aria-labelledby': 'figures-compare-title' },
+    h('h2', { id: 'figures-compare-title' }, 'All figures'),
+    h('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-labelledby': 'figures-compare-title' },
+      h('table', { class: 'data compare-table' },
+        h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'Figure'),
+          entries.map((e, i) => h('th', { scope: 'col', class: 'num' }, `#${i + 1} ${entryName(e)}`, h('br'), h('span', { class: 'muted' }, `job ${shortId(e.job.id)}`))))),
+        h('tbody', {}, FIGURES.map((f) => {
+          const values = entries.map((e) => e.stats.totals[f.key]);
+          const best = f.lowerIsBetter ? Math.min(...values) : Math.max(...values);
+          return h('tr', {}, h('th', { scope: 'row' }, f.label, f.lowerIsBetter ? h('span', { class: 'muted' }, ' (lower is better)') : null),
+            entries.map((e) => {
+              const v = e.stats.totals[f.key];
+              const isBest = v === best;
+              return h('td', { class: `num${isBest ? ' best-cell' : ''}` }, fmtPctErr(v, e.stats.totals[`${f.key}_stderr`]),
+                isBest ? h('span', { class: 'best-mark' }, ' ▲ best') : null);
+            }));
+        })))));
+}

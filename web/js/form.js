@@ -1,0 +1,140 @@
+// The job form: reading it into a job, showing the server's field errors, submitting.
+import { api } from './api.js';
+import { $ } from './dom.js';
+import { shortId } from './format.js';
+import { jobsView, refreshJobs } from './jobs.js';
+import { displayMeshName } from './meshes.js';
+
+function fieldError(field) { return document.getElementById(`err-${field}`); }
+
+export function showFieldError(field, message) {
+  const err = fieldError(field);
+  if (!err) return false;
+  err.textContent = message;
+  err.hidden = false;
+  const wrapper = err.closest('.field');
+  if (wrapper) wrapper.classList.add('invalid');
+  const input = wrapper && wrapper.querySelector('input, select');
+  if (input) input.setAttribute('aria-invalid', 'true');
+  const details = err.closest('details');
+  if (details) details.open = true;
+  return true;
+}
+
+export function clearFieldError(field) {
+  const err = fieldError(field);
+  if (!err) return;
+  err.hidden = true;
+  err.textContent = '';
+  const wrapper = err.closest('.field');
+  if (wrapper) {
+    wrapper.classList.remove('invalid');
+    const input = wrapper.querySelector('input, select');
+    if (input) input.removeAttribute('aria-invalid');
+  }
+}
+
+function clearFormErrors() {
+  for (const err of document.querySelectorAll('#job-form .field-error')) clearFieldError(err.id.slice(4));
+  const formError = $('#form-error');
+  formError.hidden = true;
+  formError.textContent = '';
+}
+
+// A number input read for the job; empty or unreadable input is reported here, range checks are the server's.
+function readNumber(form, name, errors, { required = true } = {}) {
+  const input = form.elements[name];
+  if (input.validity.badInput) {
+    errors.push([name, `${name} must be a number`]);
+    return undefined;
+  }
+  if (input.value.trim() === '') {
+    if (required) errors.push([name, `${name} is required`]);
+    return undefined;
+  }
+  return Number(input.value);
+}
+
+function buildJob(form) {
+  const errors = [];
+  const job = { mesh: form.elements.mesh.value };
+  if (!job.mesh) errors.push(['mesh', 'Choose a shape, or upload a mesh']);
+  job.photons = readNumber(form, 'photons', errors);
+  const threads = readNumber(form, 'threads', errors, { required: false });
+  if (threads !== undefined) job.threads = threads;
+  const seed = readNumber(form, 'seed', errors, { required: false });
+  if (seed !== undefined) job.seed = seed;
+  job.light = {
+    model: form.elements['light.model'].value,
+    tilt_deg: readNumber(form, 'light.tilt_deg', errors),
+  };
+  if (job.light.model === 'hemisphere') {
+    job.light.head_shadow_deg = readNumber(form, 'light.head_shadow_deg', errors);
+  }
+  job.material = form.elements.material.value;
+  job.dispersion = form.elements.dispersion.checked;
+  job.max_bounces = readNumber(form, 'max_bounces', errors);
+  if (form.elements.render.checked) {
+    job.render = {
+      width: readNumber(form, 'render.width', errors),
+      height: readNumber(form, 'render.height', errors),
+      samples: readNumber(form, 'render.samples', errors),
+      map_photons: readNumber(form, 'render.map_photons', errors),
+      camera: { elevation_deg: readNumber(form, 'render.camera.elevation_deg', errors) },
+    };
+  } else {
+    job.render = false;
+  }
+  return { job, errors };
+}
+
+function reportError(e) {
+  if (e.field && showFieldError(e.field, e.message)) {
+    const input = fieldError(e.field).closest('.field').querySelector('input, select');
+    if (input) input.focus();
+    return;
+  }
+  const formError = $('#form-error');
+  formError.textContent = e.field ? `${e.field}: ${e.message}` : e.message;
+  formError.hidden = false;
+}
+
+export async function submitJob(event) {
+  event.preventDefault();
+  const form = event.currentTarget;
+  clearFormErrors();
+  const status = $('#submit-status');
+  const { job, errors } = buildJob(form);
+  if (errors.length) {
+    for (const [field, message] of errors) showFieldError(field, message);
+    const first = fieldError(errors[0][0]).closest('.field').querySelector('input, select');
+    if (first) first.focus();
+    status.textContent = '';
+    return;
+  }
+  const button = $('#submit-button');
+  button.disabled = true;
+  status.textContent = 'Submitting…';
+  try {
+    const created = await api('/api/jobs', {
+      method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'application/json' }, body: JSON.stringify(job),
+    });
+    status.textContent = `Job ${shortId(created.id)} queued: ${displayMeshName(created.mesh)}.`;
+    jobsView.offset = 0;
+    await refreshJobs();
+  } catch (e) {
+    status.textContent = '';
+    reportError(e);
+  } finally {
+    button.disabled = false;
+  }
+}
+
+export function syncFormControls() {
+  const form = $('#job-form');
+  const hemisphere = form.elements['light.model'].value === 'hemisphere';
+  form.elements['light.head_shadow_deg'].disabled = !hemisphere;
+  const render = form.elements.render.checked;
+  for (const input of $('#render-options').querySelectorAll('input')) input.disabled = !render;
+  $('#render-options').classList.toggle('disabled', !render);
+}

@@ -1,0 +1,124 @@
+// The heat-map's facets as shapes laid over its picture (heatmap.json): pointing at a facet names it and
+// lights up its row of the facet table; pointing at a row lights up the facet.
+import { api } from './api.js';
+import { h, svg } from './dom.js';
+import { fmtPctErr, humanize } from './format.js';
+
+// Lights up facet `id` (null: none) within `root`: its shapes on the heat-map and its table row.
+export function linkFacet(root, id) {
+  for (const el of root.querySelectorAll('.linked')) el.classList.remove('linked');
+  if (id === null) return;
+  for (const el of root.querySelectorAll(`[data-facet="${id}"]`)) el.classList.add('linked');
+}
+
+// Matplotlib's viridis (van der Walt & Smith, 2015) as core/colormap.h draws it: Matt Zucker's degree-6
+// polynomial fit (shadertoy WlfXRN, CC0), so the page's colours match the pictures'.
+const VIRIDIS_FIT = [[0.2777273272234177, 0.005407344544966578, 0.3340998053353061],
+  [0.1050930431085774, 1.404613529898575, 1.384590162594685], [-0.3308618287255563, 0.214847559468213, 0.09509516302823659],
+  [-4.634230498983486, -5.799100973351585, -19.33244095627987], [6.228269936347081, 14.17993336680509, 56.69055260068105],
+  [4.776384997670288, -13.74514537774601, -65.35303263337234], [-5.435455855934631, 4.645852612178535, 26.3124352495832]];
+function viridis(t) {
+  const x = Math.min(1, Math.max(0, t));
+  const rgb = [0, 1, 2].map((k) => {
+    let v = VIRIDIS_FIT[6][k];
+    for (let i = 5; i >= 0; i--) v = v * x + VIRIDIS_FIT[i][k];
+    return Math.round(255 * Math.min(1, Math.max(0, v)));
+  });
+  return `rgb(${rgb.join(', ')})`;
+}
+
+// The end of a colour scale: the first of 1, 2 or 5 times a power of ten, in fifths, at or above `max`.
+export function scaleEnd(max) {
+  if (!(max > 0)) return 1;
+  const raw = max / 5;
+  const p = 10 ** Math.floor(Math.log10(raw));
+  const step = [1, 2, 5, 10].map((m) => m * p).find((v) => v >= raw);
+  return Math.ceil(max / step - 1e-9) * step;
+}
+
+// Fetches the heat-map's layout and either lays its facets over the picture (overlay) or, with a common
+// colour scale (the comparison), draws them in its place filled on that scale; both name the facet pointed at.
+async function heatmapShapes(figure, href, stats, commonScale) {
+  const anchor = figure.querySelector('a');
+  let layout = null;
+  try {
+    layout = await api(href);
+  } catch {
+    // below: the picture as it is
+  }
+  if (!anchor || !anchor.isConnected) return;
+  const drawing = commonScale > 0;
+  if (!layout) {
+    if (drawing) anchor.replaceChildren(h('img', { src: anchor.href, alt: 'Facet heat-map', decoding: 'async' }));
+    return;
+  }
+  const facets = new Map(((stats && stats.facets) || []).map((f) => [f.id, f]));
+  const describe = (f) => {
+    const s = facets.get(f.id);
+    return s ? `${humanize(f.name)} (${f.side}): ${fmtPctErr(s.leaving_share, s.leaving_share_stderr)} of the light leaving`
+      : humanize(f.name);
+  };
+  const polygons = layout.facets.map((f) => {
+    const share = facets.has(f.id) ? facets.get(f.id).leaving_share : 0;
+    const fill = drawing ? { fill: viridis(share / commonScale), stroke: '#1a1a1a', 'stroke-width': 1.2 } : {};
+    return svg('polygon', { points: f.points.map((p) => p.join(',')).join(' '), 'data-facet': f.id, ...fill },
+      svg('title', {}, describe(f)));
+  });
+  let shapes;
+  if (drawing) {
+    const xs = layout.facets.flatMap((f) => f.points.map((p) => p[0]));
+    const ys = layout.facets.flatMap((f) => f.points.map((p) => p[1]));
+    const [x0, y0] = [Math.min(...xs) - 8, Math.min(...ys) - 40];
+    const [w, hgt] = [Math.max(...xs) + 8 - x0, Math.max(...ys) + 8 - y0];
+    const titles = [['crown', 'Crown, from above'], ['pavilion', 'Pavilion, from below']].map(([side, title]) => {
+      const sx = layout.facets.filter((f) => f.side === side).flatMap((f) => f.points.map((p) => p[0]));
+      return sx.length ? svg('text', { x: (Math.min(...sx) + Math.max(...sx)) / 2, y: y0 + 24, 'text-anchor': 'middle', class: 'heat-side' }, title) : null;
+    }).filter(Boolean);
+    shapes = svg('svg', { class: 'heatmap-drawing', viewBox: `${x0} ${y0} ${w} ${hgt}`, role: 'img',
+      'aria-label': `Facet heat-map: crown from above, pavilion from below, on the comparison's common scale (0 to ${(commonScale * 100).toFixed(1)} %)` },
+    ...titles, ...polygons);
+    anchor.replaceChildren(shapes);
+    figure.insertBefore(h('div', { class: 'heat-legend' },
+      h('span', {}, '0 %'),
+      h('span', { class: 'heat-ramp', 'aria-hidden': 'true', style: `background: linear-gradient(to right, ${[0, 0.25, 0.5, 0.75, 1].map(viridis).join(', ')})` }),
+      h('span', { class: 'heat-max' }, `${(commonScale * 100).toFixed(1)} %`)), figure.querySelector('figcaption'));
+  } else {
+    shapes = svg('svg', { class: 'heatmap-overlay', viewBox: `0 0 ${layout.width} ${layout.height}`, 'aria-hidden': 'true' }, ...polygons);
+    anchor.append(shapes);
+  }
+  const readout = h('p', { class: 'heatmap-readout', 'aria-live': 'polite' }, 'Point at a facet to name it.');
+  const root = figure.closest('.result, .compare-card') || figure;
+  const byId = new Map(layout.facets.map((f) => [String(f.id), f]));
+  shapes.addEventListener('mouseover', (e) => {
+    const id = e.target.getAttribute && e.target.getAttribute('data-facet');
+    if (id === null || !byId.has(id)) return;
+    linkFacet(root, id);
+    readout.textContent = describe(byId.get(id));
+  });
+  shapes.addEventListener('mouseleave', () => linkFacet(root, null));
+  figure.append(readout);
+}
+
+// `commonScale` (the comparison): the heat-map is drawn on the page, its colours running from 0 to this share
+// for every design compared, instead of each picture's own scale.
+export function pictures(job, name, stats, commonScale = 0) {
+  const links = job.links || {};
+  const render = job.settings && job.settings.render;
+  if (!links.render) {
+    return h('p', { class: 'empty' }, 'No pictures: this job ran without rendering (statistics only).');
+  }
+  const size = render ? { width: render.width, height: render.height } : {};
+  const items = [
+    { href: links.render, cls: 'pic-render', title: 'Render', alt: `Render of ${name} as the camera sees it` },
+    { href: links.heatmap, cls: 'pic-heatmap', title: 'Facet heat-map', alt: `Heat-map of ${name}: facets shaded by the share of light leaving them` },
+    { href: links.angular, cls: 'pic-angular', title: 'Exit angles', alt: `Chart of ${name}: where the light leaves, by angle from vertical` },
+  ];
+  const drawHeatmap = commonScale > 0 && links.heatmap_layout;
+  const figures = items.map((p) => h('figure', { class: `picture ${p.cls}` },
+    h('a', { href: p.href, target: '_blank', rel: 'noopener' },
+      drawHeatmap && p.cls === 'pic-heatmap' ? h('div', { class: 'heatmap-pending' })
+        : h('img', { src: p.href, alt: p.alt, ...(p.cls === 'pic-angular' ? {} : size), decoding: 'async' })),
+    h('figcaption', {}, p.title)));
+  if (links.heatmap_layout) heatmapShapes(figures[1], links.heatmap_layout, stats, drawHeatmap ? commonScale : 0);
+  return h('div', { class: 'pictures' }, figures);
+}

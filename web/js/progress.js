@@ -1,0 +1,52 @@
+// A job's state badge, settings summary and progress bar (the server sends the overall progress).
+import { STATES } from './constants.js';
+import { h } from './dom.js';
+import { fmtInt, humanize } from './format.js';
+
+// Overall fraction and a caption, from the server's progress (overall, step of steps, current phase).
+function overallProgress(job) {
+  const p = job.progress || {};
+  if (job.state === 'succeeded') return { fraction: 1, caption: 'Done' };
+  if (job.state === 'queued') {
+    return { fraction: 0, caption: job.queue_position ? `Waiting, position ${job.queue_position} in the queue` : 'Waiting' };
+  }
+  if (job.state === 'failed') return { fraction: p.fraction || 0, caption: 'Failed' };
+  if (job.state === 'canceled') return { fraction: p.fraction || 0, caption: 'Canceled' };
+  const within = Math.min(1, Math.max(0, Number(p.fraction) || 0));
+  const fraction = Math.min(1, Math.max(0, Number(p.overall) || 0));
+  const step = p.step > 0 ? ` · step ${p.step} of ${p.steps}` : '';
+  const detail = p.total ? ` ${Math.floor(within * 100)} %` : '';
+  const cancel = job.cancel_requested ? ' · canceling' : '';
+  return { fraction, caption: `${humanize(p.phase || 'starting')}${detail}${step}${cancel}` };
+}
+
+export function progressBar(job, label) {
+  const { fraction, caption } = overallProgress(job);
+  const pct = Math.round(fraction * 100);
+  return h('div', { class: 'progress-block' },
+    h('div', {
+      class: `progress state-${job.state}`, role: 'progressbar', 'aria-valuemin': 0, 'aria-valuemax': 100,
+      'aria-valuenow': pct, 'aria-valuetext': `${pct} %, ${caption}`, 'aria-label': label,
+    }, h('div', { class: 'progress-fill', style: `width:${pct}%` })),
+    h('p', { class: 'progress-text' }, h('span', { class: 'progress-pct' }, `${pct} %`), h('span', {}, caption)));
+}
+
+export function stateBadge(state) {
+  const s = STATES[state] || { glyph: '?', label: state };
+  return h('span', { class: `state state-${state}` }, h('span', { 'aria-hidden': 'true', class: 'glyph' }, s.glyph), s.label);
+}
+
+export function jobSummary(settings) {
+  if (!settings) return '';
+  const parts = [`${fmtInt(settings.photons)} photons`, humanize(settings.material || '')];
+  if (settings.light) {
+    let light = settings.light.model;
+    if (settings.light.tilt_deg) light += `, tilt ${settings.light.tilt_deg}°`;
+    if (settings.light.model === 'hemisphere' && settings.light.head_shadow_deg) {
+      light += `, head shadow ${settings.light.head_shadow_deg}°`;
+    }
+    parts.push(light);
+  }
+  if (settings.dispersion === false) parts.push('no dispersion');
+  return parts.filter(Boolean).join(' · ');
+}

@@ -1,0 +1,169 @@
+// One job's result: the figures, the pictures, the region and facet tables.
+import { api, jobUrl } from './api.js';
+import { FACET_COLUMNS, FIGURES, POLL_ACTIVE_MS, REGIONS } from './constants.js';
+import { $, h } from './dom.js';
+import { decimalsFor, fmtDuration, fmtInt, fmtNumber, fmtPct, fmtPctErr, fmtTime, humanize, shortId } from './format.js';
+import { linkFacet, pictures } from './heatmap.js';
+import { displayMeshName } from './meshes.js';
+import { jobSummary, progressBar, stateBadge } from './progress.js';
+
+export const resultView = { id: '', timer: 0, stats: null, sort: { key: 'leaving_share', dir: -1 } };
+
+export async function showResult(id) {
+  clearTimeout(resultView.timer);
+  resultView.id = id;
+  const body = $('#result-body');
+  let job;
+  try {
+    job = await api(jobUrl(id));
+  } catch (e) {
+    if (resultView.id !== id) return;
+    body.replaceChildren(h('h1', { id: 'result-title' }, 'Job not found'), h('p', { class: 'form-error', role: 'alert' }, e.message));
+    return;
+  }
+  if (resultView.id !== id) return;
+  if (job.state !== 'succeeded') {
+    body.replaceChildren(
+      h('h1', { id: 'result-title' }, `${displayMeshName(job.mesh)} `, stateBadge(job.state)),
+      h('p', { class: 'lede' }, jobSummary(job.settings)),
+      h('div', { class: 'card' }, progressBar(job, `Progress of job ${shortId(job.id)}`),
+        job.error ? h('p', { class: 'job-error' }, h('strong', {}, 'Error: '), job.error) : null));
+    if (job.state === 'queued' || job.state === 'running') {
+      resultView.timer = setTimeout(() => showResult(id), POLL_ACTIVE_MS);
+    }
+    return;
+  }
+  let stats;
+  try {
+    stats = await api(jobUrl(id, '/stats'));
+  } catch (e) {
+    body.replaceChildren(h('h1', { id: 'result-title' }, 'Statistics unavailable'), h('p', { class: 'form-error', role: 'alert' }, e.message));
+    return;
+  }
+  if (resultView.id !== id) return;
+  resultView.stats = stats;
+  body.replaceChildren(resultPage(job, stats));
+  $('#result-title').focus();
+}
+
+function figureCard(f, totals, emphasis = false) {
+  const value = totals[f.key];
+  const stderr = totals[`${f.key}_stderr`];
+  return h('div', { class: `figure${emphasis ? ' emphasis' : ''}`, 'data-figure': f.key },
+    h('dt', {}, f.label),
+    h('dd', {},
+      h('span', { class: 'figure-value' }, fmtPct(value, stderr)),
+      h('span', { class: 'figure-err' }, Number.isFinite(stderr) ? `± ${(stderr * 100).toFixed(decimalsFor(stderr * 100))} pts` : ''),
+      h('span', { class: 'figure-hint' }, f.hint)));
+}
+
+// `compact` (the comparison's narrow cards) leaves the bars out.
+export function regionTable(regions, caption, compact = false) {
+  const max = Math.max(1e-12, ...REGIONS.map((r) => (regions[r] ? regions[r].share : 0)));
+  return h('div', { class: 'table-scroll' }, h('table', { class: `data regions${compact ? ' compact' : ''}` },
+    h('caption', {}, caption),
+    h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'Region'), h('th', { scope: 'col', class: 'num' }, 'Photons leaving'),
+      h('th', { scope: 'col', class: 'num' }, 'Share ± s.e.'), h('th', { scope: 'col' }, h('span', { class: 'visually-hidden' }, 'Bar')))),
+    h('tbody', {}, REGIONS.filter((r) => regions[r]).map((r) => h('tr', { 'data-region': r },
+      h('th', { scope: 'row' }, h('span', { class: `swatch region-${r}`, 'aria-hidden': 'true' }), humanize(r)),
+      h('td', { class: 'num' }, fmtInt(regions[r].leaving)),
+      h('td', { class: 'num' }, fmtPctErr(regions[r].share, regions[r].share_stderr)),
+      h('td', { class: 'bar-cell' }, h('span', { class: `bar region-${r}`, style: `width:${(regions[r].share / max) * 100}%` })))))));
+}
+
+function facetTable(facets) {
+  const wrap = h('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-labelledby': 'facet-caption' });
+  const draw = () => {
+    const { key, dir } = resultView.sort;
+    const col = FACET_COLUMNS.find((c) => c.key === key);
+    const sorted = [...facets].sort((a, b) => {
+      const x = a[key];
+      const y = b[key];
+      const c = col.numeric ? x - y : String(x).localeCompare(String(y), 'en', { numeric: true });
+      return c * dir || a.id - b.id;
+    });
+    const maxShare = Math.max(1e-12, ...facets.map((f) => f.leaving_share));
+    const head = h('tr', {}, FACET_COLUMNS.map((c) => {
+      const active = c.key === key;
+      const sortState = active ? (dir > 0 ? 'ascending' : 'descending') : 'none';
+      return h('th', { scope: 'col', class: c.numeric ? 'num' : '', 'aria-sort': sortState },
+        h('button', {
+          type: 'button', class: 'sort', 'data-sort': c.key,
+          onclick: () => {
+            resultView.sort = { key: c.key, dir: active ? -dir : (c.numeric ? -1 : 1) };
+            draw();
+            wrap.querySelector(`button[data-sort="${c.key}"]`).focus();
+          },
+        }, c.label, h('span', { class: 'sort-mark', 'aria-hidden': 'true' }, active ? (dir > 0 ? ' ▲' : ' ▼') : ' ↕')));
+    }));
+    const rows = sorted.map((f) => h('tr', {
+      'data-facet': f.id, 'data-region': f.region,
+      onmouseenter: (e) => linkFacet(e.currentTarget.closest('.result') || document, f.id),
+      onmouseleave: (e) => linkFacet(e.currentTarget.closest('.result') || document, null),
+    }, FACET_COLUMNS.map((c) => {
+      if (c.key === 'leaving_share') {
+        return h('td', { class: 'num share-cell' },
+          h('span', { class: 'mini-track', 'aria-hidden': 'true' },
+            h('span', { class: `bar mini region-${f.region}`, style: `width:${(f.leaving_share / maxShare) * 100}%` })),
+          h('span', { class: 'share-text' }, fmtPct(f.leaving_share, f.leaving_share_stderr)));
+      }
+      if (c.key === 'region') {
+        return h('td', {}, h('span', { class: `swatch region-${f.region}`, 'aria-hidden': 'true' }), humanize(f.region));
+      }
+      const v = f[c.key];
+      return h('td', { class: c.numeric ? 'num' : '' }, c.format ? c.format(v) : String(v ?? ''));
+    })));
+    wrap.replaceChildren(h('table', { class: 'data facets' },
+      h('caption', { id: 'facet-caption' }, `Facets (${facets.length}) — sorted by ${FACET_COLUMNS.find((c) => c.key === key).label.toLowerCase()}, ${dir > 0 ? 'ascending' : 'descending'}`),
+      h('thead', {}, head), h('tbody', {}, rows)));
+  };
+  draw();
+  return wrap;
+}
+
+function proportionList(mesh) {
+  const p = (mesh && mesh.proportions) || {};
+  const rows = [
+    ['Facets', mesh && mesh.facets], ['Table', p.table_pct, '%'], ['Crown height', p.crown_height_pct, '%'],
+    ['Pavilion depth', p.pavilion_depth_pct, '%'], ['Girdle', p.girdle_pct, '%'], ['Total depth', p.total_depth_pct, '%'],
+    ['Crown angle', p.crown_angle_deg, '°'], ['Pavilion angle', p.pavilion_angle_deg, '°'],
+  ].filter(([, v]) => v !== undefined && v !== null);
+  return h('dl', { class: 'kv' }, rows.map(([k, v, unit]) => [h('dt', {}, k), h('dd', {}, unit ? `${fmtNumber(v, 2)}${unit === '%' ? ' %' : unit}` : String(v))]));
+}
+
+function resultPage(job, stats) {
+  const name = displayMeshName(job.mesh);
+  const totals = stats.totals || {};
+  const timing = stats.timing || {};
+  const base = jobUrl(job.id);
+  return h('article', { class: 'result' },
+    h('header', { class: 'result-head' },
+      h('h1', { id: 'result-title', tabindex: -1 }, name, ' ', stateBadge(job.state)),
+      h('p', { class: 'lede' }, `${jobSummary(job.settings)} · job ${shortId(job.id)} · finished ${fmtTime(job.finished_at)}`),
+      h('p', { class: 'downloads' }, 'Download: ',
+        h('a', { href: `${base}/stats`, download: `facetlight-${shortId(job.id)}.json` }, 'Statistics (JSON)'), ' · ',
+        h('a', { href: `${base}/stats.csv`, download: `facetlight-${shortId(job.id)}.csv` }, 'Facet table (CSV)'))),
+    h('section', { class: 'card', 'aria-labelledby': 'merit-title' },
+      h('h2', { id: 'merit-title' }, 'Figures of merit'),
+      h('p', { class: 'hint' }, 'Shares of the photons that hit the stone, with one standard error.'),
+      h('dl', { class: 'figures' }, FIGURES.map((f, i) => figureCard(f, totals, i === 0)))),
+    h('section', { class: 'card', 'aria-labelledby': 'pictures-title' },
+      h('h2', { id: 'pictures-title' }, 'Pictures'), pictures(job, name, stats)),
+    h('div', { class: 'result-grid' },
+      h('section', { class: 'card', 'aria-labelledby': 'regions-title' },
+        h('h2', { id: 'regions-title' }, 'Where the light leaves'), regionTable(stats.regions || {}, 'Light leaving each region')),
+      h('section', { class: 'card', 'aria-labelledby': 'run-title' },
+        h('h2', { id: 'run-title' }, 'The run'),
+        h('dl', { class: 'kv' },
+          h('dt', {}, 'Photons'), h('dd', {}, fmtInt(totals.photons)),
+          h('dt', {}, 'Hit the stone'), h('dd', {}, fmtInt(totals.hit)),
+          h('dt', {}, 'Reflected at entry'), h('dd', {}, fmtInt(totals.reflected_at_entry)),
+          h('dt', {}, 'Entered'), h('dd', {}, fmtInt(totals.entered)),
+          h('dt', {}, 'Exited'), h('dd', {}, fmtInt(totals.exited)),
+          h('dt', {}, 'Trapped'), h('dd', {}, fmtInt(totals.trapped)),
+          h('dt', {}, 'Time'), h('dd', {}, `${fmtDuration(timing.seconds)} on ${timing.threads} thread${timing.threads === 1 ? '' : 's'}`),
+          h('dt', {}, 'Speed'), h('dd', {}, `${fmtInt(timing.photons_per_second)} photons/s`))),
+      h('section', { class: 'card', 'aria-labelledby': 'stone-title' },
+        h('h2', { id: 'stone-title' }, 'The stone'), proportionList(stats.mesh))),
+    h('section', { class: 'card', 'aria-labelledby': 'facet-caption' }, facetTable(stats.facets || [])));
+}
