@@ -44,6 +44,8 @@ std::string_view reasonPhrase(int status) {
             return "Internal Server Error";
         case 503:
             return "Service Unavailable";
+        case 507:
+            return "Insufficient Storage";
         default:
             return status >= 500 ? "Server Error" : "Client Error";
     }
@@ -251,6 +253,19 @@ json Api::statusJson(const JobRecord& job) const {
     return doc;
 }
 
+// New work stops before the disk fills: jobs and uploads would fail half-written, and a full disk kept
+// finished jobs from being deleted (issue 18). Status, results, cancel and delete go on.
+bool Api::refuseWhenStorageLow(Response& res) const {
+    const uint64_t free = results_.freeBytes();
+    if (free >= limits_.minFreeBytes) return false;
+    res.set_header("Retry-After", "60");
+    problem(res, 507,
+            "the server's storage is nearly full (" + std::to_string(free >> 20) + " MiB free, " +
+                std::to_string(limits_.minFreeBytes >> 20) +
+                " MiB kept free): no new work until space is freed, e.g. by deleting finished jobs");
+    return true;
+}
+
 void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
     const std::string type = mediaType(req);
     BodyCollector body(limits_, req);
@@ -258,6 +273,7 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     if (body.tooLarge())
         return problem(res, 413, "the job is larger than " + std::to_string(body.limit()) + " bytes");
     if (!body.complete()) return problem(res, 400, kShortBody);
+    if (refuseWhenStorageLow(res)) return;
     if (!type.empty() && type != kJsonType && type != "application/x-www-form-urlencoded" &&
         type != "text/plain") {
         return problem(res, 415, "send the job as application/json (got " + type + ")");
@@ -310,6 +326,7 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
     if (body.tooLarge())
         return problem(res, 413, "the upload is larger than " + std::to_string(body.limit()) + " bytes");
     if (!body.complete()) return problem(res, 400, kShortBody);
+    if (refuseWhenStorageLow(res)) return;
     std::optional<MeshFormat> format;
     if (req.has_param("format")) {
         format = parseMeshFormat(req.get_param_value("format"));

@@ -28,6 +28,7 @@ class Api {
 
   private:
     nlohmann::json statusJson(const JobRecord& job) const;
+    bool refuseWhenStorageLow(httplib::Response& res) const;  // true: answered 507
     void submitJob(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader);
     void uploadMesh(const httplib::Request& req, httplib::Response& res,
                     const httplib::ContentReader& reader);

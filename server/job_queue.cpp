@@ -108,6 +108,9 @@ void JobQueue::workerLoop() {
     }
 }
 
+// What a client reads when the server's own storage failed under a job.
+constexpr const char* kStorageFailed = "the server could not store the results (its storage is full or failing)";
+
 void JobQueue::runJob(const std::string& id, RunControl& control) {
     try {
         const auto job = store_.job(id);
@@ -118,12 +121,21 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
         store_.markRunning(id, threads);
         results_.clear(id);  // a job re-run after a crash starts from nothing
         const StudyResult result = runner_.run(spec, control);
-        results_.write(id, "stats.json", result.stats.dump(2));
-        results_.write(id, "stats.csv", result.statsCsv);
-        if (!result.renderPng.empty()) results_.write(id, "render.png", result.renderPng);
-        if (!result.heatmapPng.empty()) results_.write(id, "heatmap.png", result.heatmapPng);
-        if (!result.heatmapLayout.empty()) results_.write(id, "heatmap.json", result.heatmapLayout);
-        if (!result.angularPng.empty()) results_.write(id, "angular.png", result.angularPng);
+        try {
+            results_.write(id, "stats.json", result.stats.dump(2));
+            results_.write(id, "stats.csv", result.statsCsv);
+            if (!result.renderPng.empty()) results_.write(id, "render.png", result.renderPng);
+            if (!result.heatmapPng.empty()) results_.write(id, "heatmap.png", result.heatmapPng);
+            if (!result.heatmapLayout.empty()) results_.write(id, "heatmap.json", result.heatmapLayout);
+            if (!result.angularPng.empty()) results_.write(id, "angular.png", result.angularPng);
+        } catch (const std::exception& e) {
+            // A full or failing disk: the detail (with paths) goes to the log, the job gets a reason a
+            // client may see, and no partial results stay behind.
+            std::cerr << "facetlight-server: job " << id << ": storing results failed: " << e.what() << "\n";
+            results_.clear(id);
+            store_.markFinished(id, JobState::Failed, kStorageFailed);
+            return;
+        }
         store_.markFinished(id, JobState::Succeeded);
     } catch (const Canceled&) {
         bool shuttingDown;

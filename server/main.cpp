@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
     app.add_option("--max-body", l.maxBodyBytes, "Largest job request body in bytes")
         ->capture_default_str()
         ->check(CLI::Range(size_t(256), size_t(64) << 20));
+    app.add_option("--min-free", l.minFreeBytes,
+                   "Bytes kept free on the data disk: below this, new jobs and uploads get 507")
+        ->capture_default_str();
     app.add_option("--http-threads", config.http.threads, "Threads answering HTTP requests at first")
         ->capture_default_str()
         ->check(CLI::Range(1, 256));

@@ -3,7 +3,7 @@
 namespace facetlight::server {
 
 StudyResult InProcessRunner::run(const JobSpec& spec, RunControl& control) {
-    return runStudy(catalog_.resolve(spec.mesh), spec.settings, control);
+    return runStudy(*catalog_.resolve(spec.mesh), spec.settings, control);
 }
 
 StudyResult LauncherRunner::run(const JobSpec& spec, RunControl& control) {

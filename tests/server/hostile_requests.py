@@ -29,15 +29,16 @@ def free_port():
 
 
 class Server:
-    def __init__(self, binary, work):
+    def __init__(self, binary, work, *extra):
         self.port = free_port()
+        os.makedirs(os.path.join(work, "meshes"), exist_ok=True)
         self.log_path = os.path.join(work, "server.log")
         self.log = open(self.log_path, "wb")
         self.proc = subprocess.Popen(
             [binary, "--host", "127.0.0.1", "--port", str(self.port), "--data", os.path.join(work, "data"),
              "--meshes", os.path.join(work, "meshes"), "--web", os.path.join(work, "web"), "--cores", "1",
              "--http-threads", str(HTTP_THREADS), "--max-connections-per-peer", str(MAX_PER_PEER),
-             "--request-timeout", str(REQUEST_TIMEOUT_S), "--max-body", str(MAX_BODY)],
+             "--request-timeout", str(REQUEST_TIMEOUT_S), "--max-body", str(MAX_BODY), *extra],
             stdout=self.log, stderr=self.log)
         deadline = time.time() + 20
         while time.time() < deadline:
@@ -375,6 +376,24 @@ def run_log_forgery(server):
     return 1
 
 
+def run_storage_guard(binary, work):
+    """A disk with less than --min-free left refuses new jobs and uploads with 507 and keeps answering."""
+    server = Server(binary, os.path.join(work, "full"), "--min-free", str(10 ** 18))
+    try:
+        for name, raw in (("job on a full disk", post_job(job())), ("upload on a full disk", upload(CUBE_OBJ))):
+            status, headers, body = server.request(raw)
+            if status != 507:
+                fail(name, "status %d, expected 507: %s" % (status, body[:200]))
+            else:
+                check_problem(name, status, headers, body, None)
+            healthz_fast(server, name)
+        if json.loads(server.request(http("GET", "/api/jobs"))[2])["total"] != 0:
+            fail("full disk", "a job was stored")
+    finally:
+        server.stop()
+    return 3
+
+
 def main():
     binary = sys.argv[1]
     work = tempfile.mkdtemp()
@@ -392,6 +411,9 @@ def main():
             fail("server", "exited with %s" % server.proc.returncode)
     finally:
         server.stop()
+    try:
+        total += run_storage_guard(binary, work)
+    finally:
         shutil.rmtree(work, ignore_errors=True)
     print("%d hostile requests, %d failures" % (total, len(failures)))
     sys.exit(1 if failures else 0)
