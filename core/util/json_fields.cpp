@@ -24,7 +24,11 @@ uint64_t getCount(const json& j, const std::string& field, uint64_t lo, uint64_t
         if (v >= 0 && uint64_t(v) >= lo && uint64_t(v) <= hi) return uint64_t(v);
     } else if (j.is_number_float()) {
         const double v = j.get<double>();
-        if (v == std::floor(v) && v >= double(lo) && v <= double(hi)) return uint64_t(v);
+        // 2^64 and above do not fit (double(UINT64_MAX) rounds up to 2^64): converting them is undefined.
+        if (v == std::floor(v) && v >= 0 && v < 0x1p64) {
+            const uint64_t u = uint64_t(v);
+            if (u >= lo && u <= hi) return u;
+        }
     }
     throw Error(field + " must be an integer between " + std::to_string(lo) + " and " + std::to_string(hi));
 }

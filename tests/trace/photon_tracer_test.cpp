@@ -460,6 +460,9 @@ TEST(TraceSettings, StrictJsonNamesTheField) {
     expectError(json{{"photons", 0}}, "photons");
     expectError(json{{"photons", 2e10}}, "photons");
     expectError(json{{"photons", 1.5}}, "photons");
+    // Issue 18: 2^64 written as a float passed the range check and converted with undefined behaviour.
+    expectError(json{{"seed", 1.8446744073709552e19}}, "seed must be an integer");
+    expectError(json{{"seed", -1}}, "seed must be an integer");
     expectError(json{{"photons", "many"}}, "photons");
     expectError(json{{"threads", -1}}, "threads");
     expectError(json{{"colour", "red"}}, "colour");
