@@ -9,7 +9,8 @@
 #include "io/mesh_resolver.h"
 #include "process_communicator.h"
 #include "progress_json.h"
-#include "study/study.h"
+#include "result_folder.h"
+#include "study/study_spec.h"
 #include "terminal_output.h"
 #include "util/bounded_read.h"
 #include "util/error.h"
@@ -35,14 +36,23 @@ nlohmann::json readJob(const std::string& path) {
 
 void runStudyCommand(const StudyOptions& options) {
     Communicator& comm = processCommunicator();
-    const nlohmann::json job = readJob(options.job);
-    if (!job.is_object() || !job.contains("mesh") || !job["mesh"].is_string())
-        throw Error("job file " + options.job + ": \"mesh\" must be a string");
-    StudySettings settings;
-    settings.trace = TraceSettings::fromJson(job.value("trace", nlohmann::json::object()));
-    if (job.contains("render")) settings.render = RenderSettings::fromJson(job["render"]);
-    Stone stone = resolveStone(job["mesh"].get<std::string>());
-    if (job.contains("name") && job["name"].is_string()) stone.name = job["name"];
+    StudySpec spec;
+    try {
+        nlohmann::json job = readJob(options.job);
+        // Job files of earlier versions hold the trace settings under "trace", as scripts/same-results
+        // writes them for both builds.
+        if (job.is_object() && job.contains("trace") && job["trace"].is_object()) {
+            const nlohmann::json trace = job["trace"];
+            job.erase("trace");
+            job.update(trace);
+        }
+        spec = StudySpec::fromJson(job);
+    } catch (const Error& e) {
+        throw Error(e.field(), "job file " + options.job + ": " + e.what());
+    }
+    const StudySettings& settings = spec.settings;
+    Stone stone = resolveStone(spec.mesh);
+    if (!spec.name.empty()) stone.name = spec.name;
 
     RunControl control;
     StudyResult result;
@@ -53,16 +63,7 @@ void runStudyCommand(const StudyOptions& options) {
     }
     if (!comm.isRoot()) return;
     if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();
-    const fs::path out(options.out);
-    // stats.json last: its presence tells the launcher the folder is complete.
-    writeFile(out / "stats.csv", result.statsCsv);
-    // A trace-only study still has its heat-map; the render and the angular plot come with a render.
-    for (const auto& [name, bytes] : {std::pair{"render.png", &result.renderPng},
-                                      std::pair{"heatmap.png", &result.heatmapPng},
-                                      std::pair{"heatmap.json", &result.heatmapLayout},
-                                      std::pair{"angular.png", &result.angularPng}})
-        if (!bytes->empty()) writeFile(out / name, *bytes);
-    writeFile(out / "stats.json", result.stats.dump(2));
+    writeResultFiles(options.out, result);
 }
 
 }  // namespace
@@ -71,7 +72,9 @@ void addStudyCommand(CLI::App& app) {
     auto options = std::make_shared<StudyOptions>();
     CLI::App* cmd = app.add_subcommand(
         "study", "Run a job file's study into a folder (how the service runs jobs through a launcher)");
-    cmd->add_option("--job", options->job, "JSON: {\"mesh\", \"name\", \"trace\": {...}, \"render\": {...}}")
+    cmd->add_option(
+           "--job", options->job,
+           "JSON, as POST /api/jobs takes it: {\"mesh\", \"name\", \"photons\", ..., \"render\": {...}}")
         ->required();
     cmd->add_option("--out", options->out, "Folder for stats.json, stats.csv and the PNGs (rank 0 writes)")
         ->required();

@@ -4,9 +4,9 @@
 #include <functional>
 #include <iostream>
 #include <map>
-#include <regex>
 
 #include "stats/facet_stats.h"
+#include "study/result_files.h"
 #include "util/error.h"
 #include "util/json_text.h"
 
@@ -49,16 +49,6 @@ std::string_view reasonPhrase(int status) {
         default:
             return status >= 500 ? "Server Error" : "Client Error";
     }
-}
-
-// The field an Error message names: "photons must be ...", "render.width must ...", "unknown field 'x'".
-std::string fieldOf(const std::string& message) {
-    static const std::regex leading(R"(^([a-z_]+(\.[a-z_]+)*)(:| must| is required))");
-    static const std::regex unknown(R"(^unknown field '([^']{1,64})')");
-    std::smatch m;
-    if (std::regex_search(message, m, unknown)) return m[1];
-    if (std::regex_search(message, m, leading)) return m[1];
-    return {};
 }
 
 void problem(Response& res, int status, const std::string& detail, const std::string& field = {}) {
@@ -129,9 +119,9 @@ int64_t queryInt(const Request& req, const std::string& name, int64_t fallback, 
     const std::string msg =
         name + " must be an integer between " + std::to_string(lo) + " and " + std::to_string(hi);
     if (v.empty() || v.size() > 12 || v.find_first_not_of("0123456789") != std::string::npos)
-        throw Error(msg);
+        throw Error(name, msg);
     const int64_t x = std::stoll(v);
-    if (x < lo || x > hi) throw Error(msg);
+    if (x < lo || x > hi) throw Error(name, msg);
     return x;
 }
 
@@ -156,7 +146,7 @@ Api::Api(JobStore& store, ResultFiles& results, JobQueue& queue, MeshCatalog& ca
     : store_(store), results_(results), queue_(queue), catalog_(catalog), limits_(limits) {}
 
 std::vector<Route> Api::routes() {
-    return {
+    std::vector<Route> routes = {
         {"GET", "/healthz"},
         {"GET", "/api/openapi.json"},
         {"GET", "/api/jobs"},
@@ -164,15 +154,12 @@ std::vector<Route> Api::routes() {
         {"GET", "/api/jobs/{id}"},
         {"DELETE", "/api/jobs/{id}"},
         {"POST", "/api/jobs/{id}/cancel"},
-        {"GET", "/api/jobs/{id}/stats"},
-        {"GET", "/api/jobs/{id}/stats.csv"},
-        {"GET", "/api/jobs/{id}/render.png"},
-        {"GET", "/api/jobs/{id}/heatmap.png"},
-        {"GET", "/api/jobs/{id}/heatmap.json"},
-        {"GET", "/api/jobs/{id}/angular.png"},
-        {"GET", "/api/meshes"},
-        {"POST", "/api/meshes"},
     };
+    for (const ResultFile& f : kResultFiles)
+        routes.push_back({"GET", "/api/jobs/{id}/" + std::string(f.route)});
+    routes.push_back({"GET", "/api/meshes"});
+    routes.push_back({"POST", "/api/meshes"});
+    return routes;
 }
 
 json Api::statusJson(const JobRecord& job) const {
@@ -229,14 +216,9 @@ json Api::statusJson(const JobRecord& job) const {
             progress = {{"phase", "done"}, {"done", 1}, {"total", 1}, {"fraction", 1.0}};
             step = steps;
             overall = 1;
-            links["stats"] = self + "/stats";
-            links["stats_csv"] = self + "/stats.csv";
-            if (rendered) {
-                links["render"] = self + "/render.png";
-                links["heatmap"] = self + "/heatmap.png";
-                links["heatmap_layout"] = self + "/heatmap.json";
-                links["angular"] = self + "/angular.png";
-            }
+            for (const ResultFile& f : kResultFiles)
+                if (!f.rendered || rendered)
+                    links[std::string(f.link)] = self + "/" + std::string(f.route);
             break;
         }
         case JobState::Failed:
@@ -285,12 +267,16 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
         return problem(res, 400, e.what());
     }
     if (!j.is_object()) return problem(res, 400, "the job must be a JSON object");
-    JobSpec spec;
+    StudySpec spec;
     try {
         spec = parseJobSpec(j, queue_.cores(), &limits_);
+    } catch (const Error& e) {
+        return problem(res, 422, e.what(), e.field());
+    }
+    try {
         catalog_.resolve(spec.mesh);
     } catch (const Error& e) {
-        return problem(res, 422, e.what(), fieldOf(e.what()));
+        return problem(res, 422, e.what(), "mesh");
     }
     JobRecord job;
     job.id = newId();
@@ -351,7 +337,7 @@ void Api::listJobs(const Request& req, Response& res) {
         limit = queryInt(req, "limit", 20, 1, 100);
         offset = queryInt(req, "offset", 0, 0, 1'000'000'000);
     } catch (const Error& e) {
-        return problem(res, 400, e.what(), fieldOf(e.what()));
+        return problem(res, 400, e.what(), e.field());
     }
     json jobs = json::array();
     for (const auto& job : store_.jobs(int(limit), int(offset))) jobs.push_back(statusJson(job));
@@ -433,14 +419,11 @@ void Api::install(httplib::Server& server, bool accessLog) {
         {"GET /api/jobs", [this](const Request& req, Response& res) { listJobs(req, res); }},
         {"GET /api/jobs/{id}", [this](const Request& req, Response& res) { getJob(req, res); }},
         {"DELETE /api/jobs/{id}", [this](const Request& req, Response& res) { deleteJob(req, res); }},
-        {"GET /api/jobs/{id}/stats", result("stats.json", kJsonType)},
-        {"GET /api/jobs/{id}/stats.csv", result("stats.csv", "text/csv")},
-        {"GET /api/jobs/{id}/render.png", result("render.png", "image/png")},
-        {"GET /api/jobs/{id}/heatmap.png", result("heatmap.png", "image/png")},
-        {"GET /api/jobs/{id}/heatmap.json", result("heatmap.json", kJsonType)},
-        {"GET /api/jobs/{id}/angular.png", result("angular.png", "image/png")},
         {"GET /api/meshes", [this](const Request&, Response& res) { sendJson(res, 200, catalog_.list()); }},
     };
+    for (const ResultFile& f : kResultFiles)
+        plain["GET /api/jobs/{id}/" + std::string(f.route)] =
+            result(std::string(f.name), std::string(f.mediaType));
     // Routes that take a body read it themselves: that skips httplib's 8 KiB cap on form-encoded bodies
     // (what a plain `curl -d` sends) and lets each route count the bytes against its own limit.
     std::map<std::string, WithReader> withReader = {

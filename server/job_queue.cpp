@@ -5,6 +5,7 @@
 #include <new>
 
 #include "job_spec.h"
+#include "study/result_files.h"
 #include "util/error.h"
 
 namespace facetlight::server {
@@ -115,23 +116,21 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
     try {
         const auto job = store_.job(id);
         if (!job) return;  // deleted while queued
-        JobSpec spec = parseJobSpec(job->request, cores_);
+        StudySpec spec = parseJobSpec(job->request, cores_);
         const int threads = std::min(spec.settings.trace.threads, cores_);
         spec.settings.trace.threads = threads;
         store_.markRunning(id, threads);
         results_.clear(id);  // a job re-run after a crash starts from nothing
         const StudyResult result = runner_.run(spec, control);
         try {
-            results_.write(id, "stats.json", result.stats.dump(2));
-            results_.write(id, "stats.csv", result.statsCsv);
-            if (!result.renderPng.empty()) results_.write(id, "render.png", result.renderPng);
-            if (!result.heatmapPng.empty()) results_.write(id, "heatmap.png", result.heatmapPng);
-            if (!result.heatmapLayout.empty()) results_.write(id, "heatmap.json", result.heatmapLayout);
-            if (!result.angularPng.empty()) results_.write(id, "angular.png", result.angularPng);
+            for (const ResultFile& f : kResultFiles)
+                if (std::string bytes = f.bytes(result); !bytes.empty())
+                    results_.write(id, std::string(f.name), bytes);
         } catch (const std::exception& e) {
             // A full or failing disk: the detail (with paths) goes to the log, the job gets a reason a
             // client may see, and no partial results stay behind.
-            std::cerr << "facetlight-server: job " << id << ": storing results failed: " << e.what() << "\n";
+            std::cerr << "facetlight-server: job " << id << ": storing results failed: " << e.what() << "
+";
             results_.clear(id);
             store_.markFinished(id, JobState::Failed, kStorageFailed);
             return;

@@ -1,61 +1,37 @@
 #include "job_spec.h"
 
 #include "util/error.h"
-#include "util/json_fields.h"
 
 namespace facetlight::server {
 
 namespace {
 
-void checkRenderLimits(const JobSpec& spec, const ServiceLimits& limits) {
+void checkRenderLimits(const StudySpec& spec, const ServiceLimits& limits) {
     const auto& r = spec.settings.render;
     if (!r) return;
-    const std::string maxPhotons = std::to_string(limits.maxPhotons);
     const std::string side = std::to_string(limits.maxImageSide);
     if (r->width > limits.maxImageSide)
-        throw Error("render.width must be at most " + side + " on this server");
-    if (r->height > limits.maxImageSide) {
-        throw Error("render.height must be at most " + side + " on this server");
-    }
+        throw Error("render.width", "render.width must be at most " + side + " on this server");
+    if (r->height > limits.maxImageSide)
+        throw Error("render.height", "render.height must be at most " + side + " on this server");
     if (r->mapPhotons > limits.maxPhotons) {
-        throw Error("render.map_photons must be at most " + maxPhotons + " on this server");
+        throw Error("render.map_photons", "render.map_photons must be at most " +
+                                              std::to_string(limits.maxPhotons) + " on this server");
     }
 }
 
 }  // namespace
 
-JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits) {
-    if (!body.is_object()) throw Error("the job must be a JSON object");
-    JobSpec spec;
-    nlohmann::json trace = body;
-    if (!body.contains("mesh")) throw Error("mesh is required");
-    if (!body["mesh"].is_string()) throw Error("mesh must be a string");
-    spec.mesh = body["mesh"].get<std::string>();
-    trace.erase("mesh");
-    if (!body.contains("photons")) throw Error("photons is required");
+StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits) {
     // This server's cap, not only the core's, names the range a user may ask for.
-    if (limits) json_fields::getCount(body["photons"], "photons", 1, limits->maxPhotons);
-    if (!body.contains("threads")) trace["threads"] = defaultThreads;
-    if (body.contains("render")) {
-        const nlohmann::json& r = body["render"];
-        if (r.is_object()) {
-            spec.settings.render = RenderSettings::fromJson(r);
-        } else if (r.is_boolean()) {
-            if (r.get<bool>()) spec.settings.render = RenderSettings{};
-        } else if (!r.is_null()) {
-            throw Error("render must be false or an object {width, height, samples, camera}");
-        }
-        trace.erase("render");
-    }
-    spec.settings.trace = TraceSettings::fromJson(trace);
+    if (limits && body.is_object() && body.contains("photons"))
+        settings::readCount(body["photons"], "photons", 1, limits->maxPhotons);
+    StudySpec defaults;
+    defaults.settings.trace.threads = defaultThreads;
+    const StudySpec spec = StudySpec::fromJson(body, defaults);
+    if (!body.contains("photons")) throw Error("photons", "photons is required");
     if (limits) checkRenderLimits(spec, *limits);
     return spec;
-}
-nlohmann::json toJson(const JobSpec& spec) {
-    nlohmann::json j = toJson(spec.settings.trace);
-    j["mesh"] = spec.mesh;
-    j["render"] = spec.settings.render ? toJson(*spec.settings.render) : nlohmann::json(false);
-    return j;
 }
 
 }  // namespace facetlight::server

@@ -1,13 +1,13 @@
 #pragma once
-// What a client may ask of the service, read strictly from untrusted JSON: the study settings of core plus
-// the mesh name, checked against the service's limits.
+// What a client may ask of the service: a StudySpec (core's one job format), read strictly from untrusted
+// JSON and checked against the service's limits.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-#include "study/study.h"
+#include "study/study_spec.h"
 
 namespace facetlight::server {
 
@@ -22,15 +22,8 @@ struct ServiceLimits {
     uint64_t minFreeBytes = 256 << 20;  // new jobs and uploads get 507 when the data disk has less free
 };
 
-struct JobSpec {
-    std::string mesh;
-    StudySettings settings;
-};
-
 // Throws Error naming the field, also when it exceeds a limit of this service (with `limits`: new jobs;
 // without: jobs already accepted). Missing `threads` means `defaultThreads`.
-JobSpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits = nullptr);
-// Every setting written out, so a stored job runs the same after a restart even if defaults change.
-nlohmann::json toJson(const JobSpec& spec);
+StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits = nullptr);
 
 }  // namespace facetlight::server

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "study/result_files.h"
+#include "study/study_spec.h"
 #include "util/error.h"
 
 namespace facetlight::server {
@@ -112,13 +114,10 @@ bool applyProgressLine(std::string_view line, RunControl& control) {
 StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
                             const StudySettings& settings, RunControl& control) {
     const JobFolder folder(launch.workDir);
-    nlohmann::json job = {{"mesh", mesh.source}, {"trace", toJson(settings.trace)}};
-    if (!mesh.name.empty()) job["name"] = mesh.name;
-    if (settings.render) job["render"] = toJson(*settings.render);
     const fs::path jobFile = folder.path() / "job.json";
     {
         std::ofstream out(jobFile);
-        out << job.dump(2);
+        out << toJson(StudySpec{mesh.source, mesh.name, settings}).dump(2);
         if (!(out << std::flush)) throw Error("launcher: cannot write " + jobFile.string());
     }
 
@@ -141,17 +140,12 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
         throw Error("launcher: '" + command + "' failed with exit code " + std::to_string(exit.exitCode) +
                     ": " + exit.tail);
 
-    StudyResult result;
-    const auto stats = readFile(folder.path() / "stats.json");
-    if (!stats)
+    if (!fs::exists(folder.path() / "stats.json"))
         throw Error("launcher: the job left no results in " + folder.path().string() +
                     " (is it a directory every node shares?): " + exit.tail);
-    result.stats = nlohmann::json::parse(*stats);
-    result.statsCsv = readFile(folder.path() / "stats.csv").value_or("");
-    result.renderPng = readFile(folder.path() / "render.png").value_or("");
-    result.heatmapPng = readFile(folder.path() / "heatmap.png").value_or("");
-    result.heatmapLayout = readFile(folder.path() / "heatmap.json").value_or("");
-    result.angularPng = readFile(folder.path() / "angular.png").value_or("");
+    StudyResult result;
+    for (const ResultFile& f : kResultFiles)
+        if (auto bytes = readFile(folder.path() / f.name)) f.load(result, std::move(*bytes));
     return result;
 }
 

@@ -2,14 +2,20 @@
 
 namespace facetlight::server {
 
-StudyResult InProcessRunner::run(const JobSpec& spec, RunControl& control) {
-    return runStudy(*catalog_.resolve(spec.mesh), spec.settings, control);
+StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control) {
+    const std::shared_ptr<const Stone> stone = catalog_.resolve(spec.mesh);
+    if (spec.name.empty() || spec.name == stone->name) return runStudy(*stone, spec.settings, control);
+    Stone named = *stone;  // a copy to rename: the catalog's stone is shared
+    named.name = spec.name;
+    return runStudy(named, spec.settings, control);
 }
 
-StudyResult LauncherRunner::run(const JobSpec& spec, RunControl& control) {
+StudyResult LauncherRunner::run(const StudySpec& spec, RunControl& control) {
     if (!useLauncher(launch_, spec.settings)) return inProcess_.run(spec, control);
     catalog_.resolve(spec.mesh);  // a mesh that does not build fails here, as it would in-process
-    return runStudyInChild(launch_, catalog_.locate(spec.mesh), spec.settings, control);
+    ChildMesh child = catalog_.locate(spec.mesh);
+    if (!spec.name.empty()) child.name = spec.name;
+    return runStudyInChild(launch_, child, spec.settings, control);
 }
 
 std::unique_ptr<StudyRunner> makeStudyRunner(const MeshCatalog& catalog,

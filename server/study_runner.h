@@ -15,14 +15,14 @@ namespace facetlight::server {
 class StudyRunner {
   public:
     virtual ~StudyRunner() = default;
-    virtual StudyResult run(const JobSpec& spec, RunControl& control) = 0;
+    virtual StudyResult run(const StudySpec& spec, RunControl& control) = 0;
 };
 
 // In the service's own process, on the worker's thread.
 class InProcessRunner final : public StudyRunner {
   public:
     explicit InProcessRunner(const MeshCatalog& catalog) : catalog_(catalog) {}
-    StudyResult run(const JobSpec& spec, RunControl& control) override;
+    StudyResult run(const StudySpec& spec, RunControl& control) override;
 
   private:
     const MeshCatalog& catalog_;
@@ -34,7 +34,7 @@ class LauncherRunner final : public StudyRunner {
   public:
     LauncherRunner(const MeshCatalog& catalog, LaunchSettings launch)
         : catalog_(catalog), launch_(std::move(launch)), inProcess_(catalog) {}
-    StudyResult run(const JobSpec& spec, RunControl& control) override;
+    StudyResult run(const StudySpec& spec, RunControl& control) override;
 
   private:
     const MeshCatalog& catalog_;

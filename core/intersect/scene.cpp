@@ -23,8 +23,7 @@ double smoothstep(double lo, double hi, double x) {
 Scene::Scene(const Stone& stone, const TraceSettings& settings)
     : stone_(stone),
       settings_(settings),
-      material_((settings.validate(),
-                 settings.n ? Material::constant(*settings.n) : Material::byName(settings.material))),
+      material_(settings.n ? Material::constant(*settings.n) : Material::byName(settings.material)),
       light_(settings.light, stone),
       fixedIndex_(float(material_.indexD())) {
     if (stone.facets.empty()) throw Error("stone '" + stone.name + "' has no facets");

@@ -1,9 +1,11 @@
 #pragma once
-// The inputs of a render (settings apart from the algorithm, as in Tungsten). fromJson() is strict: the
-// service feeds it untrusted job JSON.
+// The inputs of a render (settings apart from the algorithm, as in Tungsten), each described once in
+// renderSettingsSchema(): JSON, checks, CLI flags and the API schema follow from it.
 #include <cstdint>
 
 #include <nlohmann/json.hpp>
+
+#include "util/settings_schema.h"
 
 namespace facetlight {
 
@@ -22,7 +24,7 @@ struct RenderSettings {
     uint64_t mapPhotons = 200'000;  // photons stored for the caustic and global maps
     CameraSettings camera;
 
-    void validate() const;  // throws Error naming the field
+    // Missing keys keep their defaults; throws Error naming the field ("render.width").
     static RenderSettings fromJson(const nlohmann::json& j);
 };
 
@@ -30,10 +32,9 @@ constexpr int kMinImageSide = 16;
 constexpr int kMaxImageSide = 4096;
 constexpr int kMaxSamples = 256;
 constexpr int kMaxDepth = 64;
-constexpr double kMinCameraDistance = 1;
-constexpr double kMaxCameraDistance = 1000;
-constexpr double kMaxFovDeg = 120;
 
+// Its paths start with "render.", where a job holds it.
+const settings::Schema<RenderSettings>& renderSettingsSchema();
 nlohmann::json toJson(const RenderSettings& s);
 
 }  // namespace facetlight

@@ -214,7 +214,6 @@ void placeSharePixels(RenderedImage& image, TileShare share, std::span<const Vec
 
 RenderedImage render(const Scene& scene, const PhotonMap& caustics, const RenderSettings& settings,
                      int threads, uint64_t seed, RunControl* control, TileShare share) {
-    settings.validate();
     checkShare(share);
     const Vec3 target = scene.toWorld(scene.center());
     const Camera camera(settings.camera, target, scene.diameter(), settings.width, settings.height);

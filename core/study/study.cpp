@@ -45,7 +45,6 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunControl& control,
                      Communicator& comm) {
     const Scene scene(stone, settings.trace);
-    if (settings.render) settings.render->validate();
     StudyResult result;
     const int threads = settings.trace.threads;
 
@@ -74,11 +73,11 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
     if (photons.cancelled || control.cancelled()) throw Canceled();
     const PhotonMap caustics(std::move(photons.caustic), threads);
     if (comm.isRoot()) {
-        result.angularPng = encodePng(
-            angularPlot(photons.crownExits, std::to_string(photons.crownExits.total) + " of " +
-                                                std::to_string(r.mapPhotons) + " photons (" +
-                                                std::string(lightModelName(settings.trace.light.model)) +
-                                                " light), refracted out of table and crown"));
+        result.angularPng = encodePng(angularPlot(
+            photons.crownExits, std::to_string(photons.crownExits.total) + " of " +
+                                    std::to_string(r.mapPhotons) + " photons (" +
+                                    std::string(kLightModelNames.name(settings.trace.light.model)) +
+                                    " light), refracted out of table and crown"));
     }
 
     enterPhase(control, RunPhase::Rendering, sharePixelCount(r.width, r.height, {comm.rank(), comm.size()}));

@@ -1,7 +1,6 @@
 #pragma once
-// The inputs of a photon trace (after Tungsten: plain settings structs with JSON read/write, kept apart from
-// the algorithm). fromJson() is strict, since the server feeds it untrusted job JSON: unknown keys, wrong
-// types and out-of-range values throw Error naming the field.
+// The inputs of a photon trace (after Tungsten: plain settings structs, kept apart from the algorithm), each
+// setting described once in traceSettingsSchema(): JSON, checks, CLI flags and the API schema follow from it.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -9,11 +8,20 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/geometry.h"
+#include "util/name_table.h"
+#include "util/settings_schema.h"
 
 namespace facetlight {
 
 enum class LightModelKind { Collimated, Hemisphere, Point };
 enum class IntersectorKind { Auto, Convex, Embree };
+
+inline constexpr NameTable<LightModelKind, 3> kLightModelNames{{{{LightModelKind::Collimated, "collimated"},
+                                                                 {LightModelKind::Hemisphere, "hemisphere"},
+                                                                 {LightModelKind::Point, "point"}}}};
+inline constexpr NameTable<IntersectorKind, 3> kIntersectorNames{{{{IntersectorKind::Auto, "auto"},
+                                                                   {IntersectorKind::Convex, "convex"},
+                                                                   {IntersectorKind::Embree, "embree"}}}};
 
 struct LightSettings {
     LightModelKind model = LightModelKind::Collimated;
@@ -34,21 +42,14 @@ struct TraceSettings {
     IntersectorKind intersector = IntersectorKind::Auto;
     LightSettings light;
 
-    // Throws Error naming the first field out of range.
-    void validate() const;
-    // Missing keys keep their defaults; the result is validated.
+    // Missing keys keep their defaults; throws Error naming the field by its dotted path.
     static TraceSettings fromJson(const nlohmann::json& j);
 };
 
 constexpr uint64_t kMaxPhotons = 10'000'000'000ULL;
 constexpr int kMaxThreads = 1024;
 
-std::string_view lightModelName(LightModelKind kind);
-LightModelKind parseLightModel(std::string_view name);  // throws Error
-std::string_view intersectorName(IntersectorKind kind);
-IntersectorKind parseIntersector(std::string_view name);  // throws Error
-
-nlohmann::json toJson(const LightSettings& s);
+const settings::Schema<TraceSettings>& traceSettingsSchema();
 nlohmann::json toJson(const TraceSettings& s);
 
 }  // namespace facetlight

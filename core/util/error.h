@@ -9,6 +9,15 @@ namespace facetlight {
 class Error : public std::runtime_error {
 public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
+    // About one field of a job: `field` is its dotted path ("light.direction", "render.width"), which the
+    // message names; the server reports it as the problem's `field`.
+    Error(const std::string& field, const std::string& message)
+        : std::runtime_error(message), field_(field) {}
+
+    const std::string& field() const { return field_; }
+
+  private:
+    std::string field_;
 };
 
 }  // namespace facetlight

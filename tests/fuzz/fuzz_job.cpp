@@ -17,10 +17,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         const nlohmann::json body =
             parseUntrustedJson({reinterpret_cast<const char*>(data), size}, "the body");
-        stored = server::toJson(server::parseJobSpec(body, 4, &limits));
+        stored = toJson(server::parseJobSpec(body, 4, &limits));
     } catch (const Error&) {
         return 0;
     }
-    if (server::toJson(server::parseJobSpec(stored, 4)) != stored) std::abort();
+    if (toJson(server::parseJobSpec(stored, 4)) != stored) std::abort();
     return 0;
 }

@@ -1,0 +1,27 @@
+#pragma once
+// The one job format: what `POST /api/jobs` takes, what the service stores and hands its launcher's child,
+// and what `facetlight study --job` reads. The trace settings sit at the top level beside `mesh`:
+//   {"mesh": "round_brilliant", "name": "...", "photons": 1e6, ..., "light": {...}, "render": false | true |
+//   {...}}
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "study/study.h"
+
+namespace facetlight {
+
+struct StudySpec {
+    std::string mesh;  // a file, a shipped shape's name, or (in the service) an uploaded mesh's id
+    std::string name;  // the stone's name in the results; empty: the one the mesh gives
+    StudySettings settings;
+
+    // Read through the settings schema onto `defaults` (keys absent keep their values); throws Error naming
+    // the field by its dotted path.
+    static StudySpec fromJson(const nlohmann::json& j, StudySpec defaults = {});
+};
+
+// Every setting written out, so a stored job runs the same after a restart even if defaults change.
+nlohmann::json toJson(const StudySpec& spec);
+
+}  // namespace facetlight

@@ -1,0 +1,242 @@
+// The settings tables: every field refuses a bad value naming its dotted path, JSON round-trips, every field
+// has its CLI flag, and the API's schema (server/openapi.json) says what the tables say.
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "cli/trace_options.h"
+#include "render/render_settings.h"
+#include "study/study_spec.h"
+#include "util/error.h"
+
+namespace facetlight {
+namespace {
+
+using nlohmann::json;
+using settings::FieldInfo;
+using settings::FieldType;
+
+// Calls `visit(path, field)` for every leaf field under `path`.
+void forEachField(const std::vector<FieldInfo>& fields, const std::string& path,
+                  const std::function<void(const std::string&, const FieldInfo&)>& visit) {
+    for (const FieldInfo& f : fields) {
+        const std::string at = settings::fieldPath(path, f.key);
+        if (f.type == FieldType::Object) {
+            forEachField(*f.fields, at, visit);
+        } else {
+            visit(at, f);
+        }
+    }
+}
+
+// Every leaf of a job: the trace settings at the top, the render settings under "render".
+void forEachJobField(const std::function<void(const std::string&, const FieldInfo&)>& visit) {
+    forEachField(traceSettingsSchema().fields(), "", visit);
+    forEachField(renderSettingsSchema().fields(), "render", visit);
+}
+
+json::json_pointer pointer(const std::string& path) {
+    std::string p = "/" + path;
+    for (char& c : p) c = c == '.' ? '/' : c;
+    return json::json_pointer(p);
+}
+
+// A value of the wrong type or out of the field's range.
+std::vector<json> badValues(const FieldInfo& f) {
+    switch (f.type) {
+        case FieldType::Integer:
+            return {"1", 1.5, double(f.maxCount) * 4 + 1e20,
+                    f.minCount > 0 ? json(f.minCount - 1) : json(-1)};
+        case FieldType::Number:
+            return {"1", true, f.range.lo - 1, f.range.hi + 1};
+        case FieldType::Boolean:
+            return {1, "true"};
+        case FieldType::Text:
+            return {5, json::array()};
+        case FieldType::Choice:
+            return {"nope", 3};
+        case FieldType::Vec3:
+            return {json::array({0, 0}), json::array({0, "x", 0}), 2};
+        case FieldType::Object:
+            break;
+    }
+    return {};
+}
+
+std::string errorField(const json& job) {
+    try {
+        StudySpec::fromJson(job);
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(e.field()), std::string::npos) << e.what();
+        return e.field();
+    }
+    return "no error";
+}
+
+TEST(SettingsSchema, ABadValueInEachFieldNamesItsDottedPath) {
+    int checked = 0;
+    forEachJobField([&](const std::string& path, const FieldInfo& f) {
+        for (const json& bad : badValues(f)) {
+            json job = {{"mesh", "round_brilliant"}, {"render", json::object()}};
+            job[pointer(path)] = bad;
+            EXPECT_EQ(errorField(job), path) << bad.dump();
+            ++checked;
+        }
+    });
+    EXPECT_GT(checked, 60);
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"light", {{"direction", {0, 0, 0}}}}}), "light.direction");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"light", {{"colour", 1}}}}), "light.colour");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"render", {{"camera", 5}}}}), "render.camera");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"material", "unobtainium"}}), "material");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"material", "unobtainium"}, {"n", 2}}), "no error");
+    EXPECT_EQ(errorField({{"mesh", 3}}), "mesh");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"render", "yes"}}), "render");
+}
+
+TEST(SettingsSchema, IntegerRangesAreExact) {
+    const auto seed = [](const json& v) { return errorField({{"mesh", "m"}, {"seed", v}}); };
+    EXPECT_EQ(seed(1.8446744073709552e19), "seed");  // 2^64 as a double: no uint64 holds it
+    EXPECT_EQ(seed(1e300), "seed");
+    EXPECT_EQ(seed(-0.5), "seed");
+    EXPECT_EQ(seed(json(UINT64_MAX)), "no error");
+    EXPECT_EQ(StudySpec::fromJson({{"mesh", "m"}, {"seed", UINT64_MAX}}).settings.trace.seed, UINT64_MAX);
+    EXPECT_EQ(StudySpec::fromJson({{"mesh", "m"}, {"photons", 1e10}}).settings.trace.photons, kMaxPhotons);
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"photons", kMaxPhotons + 1}}), "photons");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"threads", int64_t(-1)}}), "threads");
+}
+
+TEST(SettingsSchema, JsonRoundTrip) {
+    StudySpec spec;
+    spec.mesh = "round_brilliant";
+    spec.name = "test stone";
+    TraceSettings& t = spec.settings.trace;
+    t.photons = 1234;
+    t.threads = 3;
+    t.seed = UINT64_MAX;
+    t.material = "sapphire";
+    t.n = 2.5;
+    t.dispersion = false;
+    t.maxBounces = 7;
+    t.intersector = IntersectorKind::Embree;
+    t.light = {LightModelKind::Point, {1, 2, -3}, 12.5, 30, {4, 5, 60}};
+    spec.settings.render = RenderSettings{64, 48, 2, 5, 5000, {45, -30, 6, 33}};
+    const json written = toJson(spec);
+    const StudySpec back = StudySpec::fromJson(written);
+    EXPECT_EQ(toJson(back), written);
+    EXPECT_EQ(back.settings.trace.seed, UINT64_MAX);
+    EXPECT_EQ(back.settings.render->camera.fovDeg, 33);
+    // Every field is written, and each differs from its default, so none is lost on the way.
+    forEachJobField([&](const std::string& path, const FieldInfo&) {
+        ASSERT_TRUE(written.contains(pointer(path))) << path;
+        StudySpec defaults;
+        defaults.settings.render.emplace();
+        EXPECT_NE(written[pointer(path)], toJson(defaults)[pointer(path)]) << path;
+    });
+    spec.settings.render.reset();
+    EXPECT_EQ(toJson(StudySpec::fromJson(toJson(spec))), toJson(spec));
+}
+
+TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
+    CLI::App app;
+    cli::TraceOptions trace;
+    cli::addTraceOptions(&app, trace);
+    cli::SettingsFlags render;
+    render.add(&app, renderSettingsSchema().fields(), toJson(RenderSettings{}), "render");
+    std::set<std::string> flags;
+    forEachJobField([&](const std::string& path, const FieldInfo& f) {
+        EXPECT_NE(app.get_option_no_throw(f.doc.flag), nullptr) << path;
+        EXPECT_FALSE(f.doc.help.empty()) << path;
+        EXPECT_TRUE(flags.insert(f.doc.flag).second) << "two fields share " << f.doc.flag;
+    });
+    app.parse(std::vector<std::string>{"1", "0", "0", "--light-direction", "30", "--fov", "point", "--light",
+                                       "1e6", "--photons", "round_brilliant", "--mesh"});
+    const TraceSettings t = cli::toTraceSettings(trace);
+    EXPECT_EQ(t.photons, 1'000'000u);
+    EXPECT_EQ(t.light.model, LightModelKind::Point);
+    EXPECT_EQ(t.light.direction.x, 0);
+    EXPECT_EQ(t.light.direction.z, 1);
+    RenderSettings r;
+    render.apply(renderSettingsSchema(), r);
+    EXPECT_EQ(r.camera.fovDeg, 30);
+
+    CLI::App bad;
+    cli::TraceOptions badTrace;
+    cli::addTraceOptions(&bad, badTrace);
+    bad.parse(std::vector<std::string>{"95", "--tilt", "m", "--mesh"});
+    try {
+        cli::toTraceSettings(badTrace);
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), "--tilt must be a number from -90 to 90 (got '95')");
+    }
+}
+
+// The OpenAPI schema of one field, as the table gives it.
+void expectOpenApiAgrees(const json& api, const FieldInfo& f, const std::string& path) {
+    SCOPED_TRACE(path);
+    switch (f.type) {
+        case FieldType::Integer:
+            EXPECT_EQ(api.value("type", ""), "integer");
+            EXPECT_EQ(api.value("minimum", json()), json(f.minCount));
+            EXPECT_EQ(api.value("maximum", json()), json(f.maxCount));
+            break;
+        case FieldType::Number:
+            EXPECT_EQ(api.value("type", ""), "number");
+            EXPECT_EQ(api.value("nullable", false), f.nullable);
+            EXPECT_EQ(api.value("minimum", json()), std::isfinite(f.range.lo) ? json(f.range.lo) : json());
+            EXPECT_EQ(api.value("maximum", json()), std::isfinite(f.range.hi) ? json(f.range.hi) : json());
+            EXPECT_EQ(api.value("exclusiveMinimum", false), f.range.openLo);
+            EXPECT_EQ(api.value("exclusiveMaximum", false), f.range.openHi);
+            break;
+        case FieldType::Boolean:
+            EXPECT_EQ(api.value("type", ""), "boolean");
+            break;
+        case FieldType::Text:
+            EXPECT_EQ(api.value("type", ""), "string");
+            EXPECT_FALSE(api.contains("enum"));
+            break;
+        case FieldType::Choice:
+            EXPECT_EQ(api.value("type", ""), "string");
+            EXPECT_EQ(api.value("enum", json()), json(f.choices));
+            break;
+        case FieldType::Vec3:
+            EXPECT_EQ(api.value("$ref", ""), "#/components/schemas/Vec3");
+            break;
+        case FieldType::Object: {
+            EXPECT_EQ(api.value("type", ""), "object");
+            EXPECT_EQ(api.value("additionalProperties", true), false);
+            const json& properties = api.at("properties");
+            EXPECT_EQ(properties.size(), f.fields->size());
+            for (const FieldInfo& sub : *f.fields) {
+                ASSERT_TRUE(properties.contains(sub.key)) << sub.key;
+                expectOpenApiAgrees(properties[sub.key], sub, settings::fieldPath(path, sub.key));
+            }
+            break;
+        }
+    }
+}
+
+TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
+    std::ifstream in(FACETLIGHT_SOURCE_DIR "/server/openapi.json");
+    const json api = json::parse(in);
+    const json& job = api["components"]["schemas"]["JobRequest"];
+    const json& properties = job["properties"];
+    std::set<std::string> keys = {"mesh", "name", "render"};
+    for (const FieldInfo& f : traceSettingsSchema().fields()) {
+        keys.insert(f.key);
+        ASSERT_TRUE(properties.contains(f.key)) << f.key;
+        expectOpenApiAgrees(properties[f.key], f, f.key);
+    }
+    std::set<std::string> documented;
+    for (const auto& [key, value] : properties.items()) documented.insert(key);
+    EXPECT_EQ(documented, keys);
+    FieldInfo render = settings::describe("render", FieldType::Object);
+    render.fields = &renderSettingsSchema().fields();
+    expectOpenApiAgrees(properties["render"]["oneOf"][1], render, "render");
+}
+
+}  // namespace
+}  // namespace facetlight
