@@ -129,8 +129,7 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
         } catch (const std::exception& e) {
             // A full or failing disk: the detail (with paths) goes to the log, the job gets a reason a
             // client may see, and no partial results stay behind.
-            std::cerr << "facetlight-server: job " << id << ": storing results failed: " << e.what() << "
-";
+            std::cerr << "facetlight-server: job " << id << ": storing results failed: " << e.what() << "\n";
             results_.clear(id);
             store_.markFinished(id, JobState::Failed, kStorageFailed);
             return;

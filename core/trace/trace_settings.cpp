@@ -5,6 +5,7 @@
 
 #include "geometry/polygon_mesh.h"
 #include "optics/material.h"
+#include "util/error.h"
 
 namespace facetlight {
 namespace {
