@@ -12,7 +12,9 @@
 #include "result_folder.h"
 #include "study/study_spec.h"
 #include "terminal_output.h"
+#include "util/bounded_read.h"
 #include "util/error.h"
+#include "util/json_text.h"
 
 namespace facetlight::cli {
 namespace {
@@ -25,14 +27,11 @@ struct StudyOptions {
     bool progressJson = false;
 };
 
+// A job file is a few hundred bytes; the cap is the service's default body limit.
+constexpr size_t kMaxJobFileBytes = 1 << 20;
+
 nlohmann::json readJob(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error("cannot read job file " + path);
-    try {
-        return nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw Error("job file " + path + " is not JSON: " + e.what());
-    }
+    return parseUntrustedJson(readFileUpTo(path, kMaxJobFileBytes, "job file"), "job file " + path);
 }
 
 void runStudyCommand(const StudyOptions& options) {

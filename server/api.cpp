@@ -8,6 +8,7 @@
 #include "stats/facet_stats.h"
 #include "study/result_files.h"
 #include "util/error.h"
+#include "util/json_text.h"
 #include "util/simd_target.h"
 
 namespace facetlight::server {
@@ -44,6 +45,8 @@ std::string_view reasonPhrase(int status) {
             return "Internal Server Error";
         case 503:
             return "Service Unavailable";
+        case 507:
+            return "Insufficient Storage";
         default:
             return status >= 500 ? "Server Error" : "Client Error";
     }
@@ -76,7 +79,9 @@ size_t bodyLimit(const ServiceLimits& limits, const std::string& path) {
     return path == "/api/meshes" ? limits.maxUploadBytes : limits.maxBodyBytes;
 }
 
-// Collects a request body as it arrives, stopping the read once it passes its route's limit.
+// Collects a request body as it arrives, stopping the read once it passes its route's limit. `read` says
+// whether every byte of the Content-Length arrived: a body cut short (the client went away, or lied) stores
+// nothing.
 class BodyCollector {
   public:
     BodyCollector(const ServiceLimits& limits, const Request& req) : limit_(bodyLimit(limits, req.path)) {}
@@ -88,7 +93,13 @@ class BodyCollector {
         bytes_.append(data, n);
         return true;
     }
+    void read(const httplib::ContentReader& reader) { complete_ = reader(std::ref(*this)); }
+    void readMultipart(const httplib::ContentReader& reader, const httplib::MultipartContentHeader& header,
+                       const std::function<bool()>& wanted) {
+        complete_ = reader(header, [&](const char* data, size_t n) { return wanted() ? (*this)(data, n) : true; });
+    }
     bool tooLarge() const { return tooLarge_; }
+    bool complete() const { return complete_; }
     size_t limit() const { return limit_; }
     std::string& bytes() { return bytes_; }
 
@@ -96,7 +107,11 @@ class BodyCollector {
     size_t limit_;
     std::string bytes_;
     bool tooLarge_ = false;
+    bool complete_ = false;
 };
+
+// A body that stopped short of its Content-Length (the client went away, or lied): nothing is stored.
+constexpr const char* kShortBody = "the body ended before its Content-Length; nothing was stored";
 
 // A query parameter as an integer in [lo, hi]; `fallback` when absent. Throws Error naming it.
 int64_t queryInt(const Request& req, const std::string& name, int64_t fallback, int64_t lo, int64_t hi) {
@@ -120,10 +135,10 @@ json nullIfEmpty(const std::string& s) {
 }
 
 void logRequest(const Request& req, const Response& res) {
-    char line[512];
-    std::snprintf(line, sizeof line, "%s %s \"%s %.200s\" %d %zu\n", nowIso8601().c_str(),
-                  req.remote_addr.c_str(), req.method.c_str(), req.path.c_str(), res.status, res.body.size());
-    std::fputs(line, stderr);
+    const std::string line = nowIso8601() + " " + req.remote_addr + " \"" + escapeForLog(req.method, 16) + " " +
+                             escapeForLog(req.path) + "\" " + std::to_string(res.status) + " " +
+                             std::to_string(res.body.size()) + "\n";
+    std::fputs(line.c_str(), stderr);
 }
 
 }  // namespace
@@ -221,18 +236,37 @@ json Api::statusJson(const JobRecord& job) const {
     return doc;
 }
 
+// New work stops before the disk fills: jobs and uploads would fail half-written, and a full disk kept
+// finished jobs from being deleted (issue 18). Status, results, cancel and delete go on.
+bool Api::refuseWhenStorageLow(Response& res) const {
+    const uint64_t free = results_.freeBytes();
+    if (free >= limits_.minFreeBytes) return false;
+    res.set_header("Retry-After", "60");
+    problem(res, 507,
+            "the server's storage is nearly full (" + std::to_string(free >> 20) + " MiB free, " +
+                std::to_string(limits_.minFreeBytes >> 20) +
+                " MiB kept free): no new work until space is freed, e.g. by deleting finished jobs");
+    return true;
+}
+
 void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
     const std::string type = mediaType(req);
     BodyCollector body(limits_, req);
-    reader(std::ref(body));
+    body.read(reader);
     if (body.tooLarge())
         return problem(res, 413, "the job is larger than " + std::to_string(body.limit()) + " bytes");
+    if (!body.complete()) return problem(res, 400, kShortBody);
+    if (refuseWhenStorageLow(res)) return;
     if (!type.empty() && type != kJsonType && type != "application/x-www-form-urlencoded" &&
         type != "text/plain") {
         return problem(res, 415, "send the job as application/json (got " + type + ")");
     }
-    json j = json::parse(body.bytes(), nullptr, false);
-    if (j.is_discarded()) return problem(res, 400, "the body is not valid JSON");
+    json j;
+    try {
+        j = parseUntrustedJson(body.bytes(), "the body");
+    } catch (const Error& e) {
+        return problem(res, 400, e.what());
+    }
     if (!j.is_object()) return problem(res, 400, "the job must be a JSON object");
     StudySpec spec;
     try {
@@ -262,19 +296,24 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
     std::string fileName = req.has_param("name") ? req.get_param_value("name") : "upload";
     BodyCollector body(limits_, req);
     if (req.is_multipart_form_data()) {
+        // The first part named "file" is the mesh; other parts are read and dropped.
         int files = 0;
-        reader(
+        bool inFile = false;
+        body.readMultipart(
+            reader,
             [&](const httplib::MultipartFormData& part) {
-                if (part.name != "file") return true;
-                if (!part.filename.empty()) fileName = part.filename;
-                return ++files == 1;
+                inFile = part.name == "file" && ++files == 1;
+                if (inFile && !part.filename.empty()) fileName = part.filename;
+                return true;
             },
-            [&](const char* data, size_t n) { return files == 1 ? body(data, n) : true; });
+            [&] { return inFile; });
     } else {
-        reader(std::ref(body));
+        body.read(reader);
     }
     if (body.tooLarge())
         return problem(res, 413, "the upload is larger than " + std::to_string(body.limit()) + " bytes");
+    if (!body.complete()) return problem(res, 400, kShortBody);
+    if (refuseWhenStorageLow(res)) return;
     std::optional<MeshFormat> format;
     if (req.has_param("format")) {
         format = parseMeshFormat(req.get_param_value("format"));
@@ -428,31 +467,16 @@ void Api::install(httplib::Server& server, bool accessLog) {
     if (!plain.empty() || !withReader.empty()) throw std::logic_error("handler without a route");
 
     const ServiceLimits limits = limits_;
-    const size_t maxUrl = limits.maxUrlBytes;
+    RequestRules rules{routes(), limits.maxUrlBytes,
+                       [limits](const std::string& path) { return bodyLimit(limits, path); },
+                       {"POST /api/jobs", "POST /api/meshes"}};
     server.set_payload_max_length(std::max(limits.maxBodyBytes, limits.maxUploadBytes));
-    server.set_pre_routing_handler([=](const Request& req, Response& res) {
-        using R = httplib::Server::HandlerResponse;
-        if (req.target.size() > maxUrl) {
-            res.set_header("Connection", "close");
-            problem(res, 414, "the URL is longer than " + std::to_string(maxUrl) + " bytes");
-            return R::Handled;
-        }
-        if (req.has_header("Transfer-Encoding")) {
-            res.set_header("Connection", "close");
-            problem(res, 411, "chunked request bodies are not accepted: send Content-Length");
-            return R::Handled;
-        }
-        const size_t limit = bodyLimit(limits, req.path);
-        if (req.has_header("Content-Length")) {
-            const std::string v = req.get_header_value("Content-Length");
-            if (v.size() > 15 || v.find_first_not_of("0123456789") != std::string::npos ||
-                std::stoull(v) > limit) {
-                res.set_header("Connection", "close");
-                problem(res, 413, "the request body is larger than " + std::to_string(limit) + " bytes");
-                return R::Handled;
-            }
-        }
-        return R::Unhandled;
+    server.set_pre_routing_handler([rules = std::move(rules)](const Request& req, Response& res) {
+        const auto refusal = checkRequest(req, rules);
+        if (!refusal) return httplib::Server::HandlerResponse::Unhandled;
+        for (const auto& [name, value] : refusal->headers) res.set_header(name, value);
+        problem(res, refusal->status, refusal->detail);
+        return httplib::Server::HandlerResponse::Handled;
     });
     server.set_error_handler(httplib::Server::HandlerWithResponse([](const Request&, Response& res) {
         if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;

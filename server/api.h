@@ -11,14 +11,10 @@
 #include "job_spec.h"
 #include "job_store.h"
 #include "mesh_catalog.h"
+#include "request_guard.h"
 #include "result_files.h"
 
 namespace facetlight::server {
-
-struct Route {
-    std::string method;  // GET, POST, DELETE
-    std::string path;    // as in the OpenAPI document: /api/jobs/{id}
-};
 
 // The OpenAPI 3 description of the routes below, embedded at build time from server/openapi.json.
 std::string_view openApiDocument();
@@ -32,6 +28,7 @@ class Api {
 
   private:
     nlohmann::json statusJson(const JobRecord& job) const;
+    bool refuseWhenStorageLow(httplib::Response& res) const;  // true: answered 507
     void submitJob(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader);
     void uploadMesh(const httplib::Request& req, httplib::Response& res,
                     const httplib::ContentReader& reader);

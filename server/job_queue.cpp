@@ -109,6 +109,9 @@ void JobQueue::workerLoop() {
     }
 }
 
+// What a client reads when the server's own storage failed under a job.
+constexpr const char* kStorageFailed = "the server could not store the results (its storage is full or failing)";
+
 void JobQueue::runJob(const std::string& id, RunControl& control) {
     try {
         const auto job = store_.job(id);
@@ -119,8 +122,18 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
         store_.markRunning(id, threads);
         results_.clear(id);  // a job re-run after a crash starts from nothing
         const StudyResult result = runner_.run(spec, control);
-        for (const ResultFile& f : kResultFiles)
-            if (std::string bytes = f.bytes(result); !bytes.empty()) results_.write(id, std::string(f.name), bytes);
+        try {
+            for (const ResultFile& f : kResultFiles)
+                if (std::string bytes = f.bytes(result); !bytes.empty())
+                    results_.write(id, std::string(f.name), bytes);
+        } catch (const std::exception& e) {
+            // A full or failing disk: the detail (with paths) goes to the log, the job gets a reason a
+            // client may see, and no partial results stay behind.
+            std::cerr << "facetlight-server: job " << id << ": storing results failed: " << e.what() << "\n";
+            results_.clear(id);
+            store_.markFinished(id, JobState::Failed, kStorageFailed);
+            return;
+        }
         store_.markFinished(id, JobState::Succeeded);
     } catch (const Canceled&) {
         bool shuttingDown;

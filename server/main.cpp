@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <iostream>
 #include <thread>
@@ -44,9 +45,25 @@ int main(int argc, char** argv) {
     app.add_option("--max-body", l.maxBodyBytes, "Largest job request body in bytes")
         ->capture_default_str()
         ->check(CLI::Range(size_t(256), size_t(64) << 20));
-    app.add_option("--http-threads", config.httpThreads, "Threads answering HTTP requests")
+    app.add_option("--min-free", l.minFreeBytes,
+                   "Bytes kept free on the data disk: below this, new jobs and uploads get 507")
+        ->capture_default_str();
+    app.add_option("--http-threads", config.http.threads, "Threads answering HTTP requests at first")
         ->capture_default_str()
         ->check(CLI::Range(1, 256));
+    app.add_option("--max-http-threads", config.http.maxThreads,
+                   "Threads added while every one is busy (slow clients), at most this many")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1024));
+    app.add_option("--max-connections-per-peer", config.http.maxPerPeer,
+                   "Connections one address may hold open at once; more get 429")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 4096));
+    double requestTimeout = std::chrono::duration<double>(config.http.requestTimeout).count();
+    app.add_option("--request-timeout", requestTimeout,
+                   "Seconds a request (line, headers and body) may take to arrive")
+        ->capture_default_str()
+        ->check(CLI::Range(0.1, 3600.0));
     app.add_option("--cores", config.cores, "Cap on a job's threads (0: all the machine's cores)")
         ->capture_default_str()
         ->check(CLI::Range(0, 1024));
@@ -61,6 +78,7 @@ int main(int argc, char** argv) {
     app.add_option("--launcher-workdir", launch.workDir,
                    "With --launcher: folder for the children's job files, shared by every node");
     CLI11_PARSE(app, argc, argv);
+    config.http.requestTimeout = std::chrono::milliseconds(int64_t(requestTimeout * 1000));
     if (!launcher.empty()) {
         try {
             launch.launcher = facetlight::server::splitWords(launcher);

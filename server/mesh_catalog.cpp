@@ -70,20 +70,41 @@ std::optional<fs::path> MeshCatalog::shippedFile(const std::string& name) const 
     return std::nullopt;
 }
 
-Stone MeshCatalog::resolve(const std::string& mesh) const {
+std::shared_ptr<const Stone> MeshCatalog::resolve(const std::string& mesh) const {
+    {
+        std::lock_guard lock(mutex_);
+        for (auto it = stones_.begin(); it != stones_.end(); ++it)
+            if (it->first == mesh) {
+                stones_.splice(stones_.begin(), stones_, it);
+                return it->second;
+            }
+    }
+    auto stone = build(mesh);  // outside the lock: building a large mesh takes seconds
+    remember(mesh, stone);
+    return stone;
+}
+
+void MeshCatalog::remember(const std::string& mesh, std::shared_ptr<const Stone> stone) const {
+    std::lock_guard lock(mutex_);
+    stones_.remove_if([&](const auto& entry) { return entry.first == mesh; });
+    stones_.emplace_front(mesh, std::move(stone));
+    if (stones_.size() > kCachedStones) stones_.pop_back();
+}
+
+std::shared_ptr<const Stone> MeshCatalog::build(const std::string& mesh) const {
     if (isId(mesh)) {
         const auto record = store_.mesh(mesh);
         if (!record) throw Error("mesh: no uploaded mesh with id '" + mesh + "'");
-        Stone stone = loadStone(store_.meshFile(*record).string());
-        stone.name = record->name;
+        auto stone = std::make_shared<Stone>(loadStone(store_.meshFile(*record).string()));
+        stone->name = record->name;
         return stone;
     }
     if (!isShapeName(mesh)) {
         throw Error("mesh must be a shipped shape name (see GET /api/meshes) or an uploaded mesh id");
     }
-    if (const auto file = shippedFile(mesh)) return loadStone(file->string());
+    if (const auto file = shippedFile(mesh)) return std::make_shared<Stone>(loadStone(file->string()));
     for (const auto& shape : cutShapes()) {
-        if (shape.name == mesh) return Stone::build(makeCut(mesh), mesh);
+        if (shape.name == mesh) return std::make_shared<Stone>(Stone::build(makeCut(mesh), mesh));
     }
     throw Error("mesh: unknown mesh '" + mesh + "' (see GET /api/meshes)");
 }
@@ -114,7 +135,7 @@ nlohmann::json MeshCatalog::list() const {
         names.erase(std::unique(names.begin(), names.end()), names.end());
         for (const auto& name : names) {
             try {
-                nlohmann::json j = stoneSummaryJson(resolve(name));
+                nlohmann::json j = stoneSummaryJson(*build(name));
                 j["mesh"] = name;
                 shipped.push_back(std::move(j));
             } catch (const Error& e) {
@@ -143,10 +164,12 @@ MeshRecord MeshCatalog::upload(std::string_view bytes, std::string_view fileName
     if (!format) format = detectFormat(bytes);
     const PolygonMesh polygons = parseMesh(bytes, *format);
     const std::string stem = fs::path(name).stem().string();
-    const Stone stone = Stone::build(polygons, stem.empty() ? "upload" : stem);
+    auto stone = std::make_shared<Stone>(Stone::build(polygons, stem.empty() ? "upload" : stem));
     MeshRecord record{newId(), name, std::string(meshFormatName(*format)), nowIso8601(),
-                      stoneSummaryJson(stone)};
+                      stoneSummaryJson(*stone)};
     store_.insertMesh(record, bytes);
+    stone->name = record.name;  // as resolve() names a stone read back from the store
+    remember(record.id, std::move(stone));
     return record;
 }
 

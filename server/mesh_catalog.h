@@ -3,7 +3,9 @@
 // (by snake_case name) and meshes uploaded to the service (by id). Never a path: job
 // JSON is untrusted.
 #include <filesystem>
+#include <list>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -22,8 +24,10 @@ class MeshCatalog {
   public:
     MeshCatalog(MeshStore& store, std::filesystem::path meshesDir);
 
-    // Throws Error when `mesh` names nothing we know, or its file does not build into a stone.
-    Stone resolve(const std::string& mesh) const;
+    // Throws Error when `mesh` names nothing we know, or its file does not build into a stone. Stones are
+    // built once and kept (the last kCachedStones used): every submission naming a 15 MB upload parsed and
+    // built it again on the HTTP thread (issue 18). Uploads never change under their id.
+    std::shared_ptr<const Stone> resolve(const std::string& mesh) const;
     // What a child process (a launcher's job) reads the same stone from: a file path or a cut shape name.
     ChildMesh locate(const std::string& mesh) const;
     // {"shipped": [...], "uploaded": [...]}, each entry a stone summary with its `mesh` name.
@@ -37,10 +41,15 @@ class MeshCatalog {
   private:
     std::optional<std::filesystem::path> shippedFile(const std::string& name) const;
 
+    std::shared_ptr<const Stone> build(const std::string& mesh) const;
+    void remember(const std::string& mesh, std::shared_ptr<const Stone> stone) const;
+
+    static constexpr size_t kCachedStones = 16;
     MeshStore& store_;
     std::filesystem::path meshesDir_;
     mutable std::mutex mutex_;
     mutable std::optional<nlohmann::json> shippedSummaries_;  // built on first list()
+    mutable std::list<std::pair<std::string, std::shared_ptr<const Stone>>> stones_;  // most recent first
 };
 
 std::string_view meshFormatName(MeshFormat format);

@@ -50,7 +50,13 @@ void writeFileAtomically(const fs::path& path, std::string_view bytes) {
         fs::remove(tmp, ec);
         fail("write", tmp);
     }
-    fs::rename(tmp, path);
+    std::error_code renamed;
+    fs::rename(tmp, path, renamed);
+    if (renamed) {
+        fs::remove(tmp, renamed);
+        errno = renamed.value();
+        fail("rename", tmp);
+    }
     syncDirectory(path.parent_path());
 }
 
@@ -58,6 +64,15 @@ ResultFiles::ResultFiles(fs::path dir) : dir_(std::move(dir)) {
     std::error_code ec;
     fs::create_directories(dir_, ec);
     if (ec) throw Error("cannot create result directory " + dir_.string() + ": " + ec.message());
+    for (auto it = fs::recursive_directory_iterator(dir_, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec))
+        if (it->path().extension() == ".tmp") fs::remove(it->path(), ec);
+}
+
+uint64_t ResultFiles::freeBytes() const {
+    std::error_code ec;
+    const fs::space_info space = fs::space(dir_, ec);
+    return ec ? 0 : space.available;
 }
 
 fs::path ResultFiles::jobDir(const std::string& jobId) const {

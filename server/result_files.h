@@ -2,6 +2,7 @@
 // A job's result files under <dir>/<job id>/. Each is written to a temporary name, flushed to the disk and
 // renamed over its name, and the folder flushed after the rename: after a crash or a power cut a result is
 // there whole or not at all.
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -11,12 +12,15 @@ namespace facetlight::server {
 
 class ResultFiles {
   public:
-    // `dir` holds one folder per job; created when missing.
+    // `dir` holds one folder per job; created when missing. Temporary files left by a crash or a full disk
+    // are removed.
     explicit ResultFiles(std::filesystem::path dir);
 
     void write(const std::string& jobId, const std::string& name, std::string_view bytes);
     std::optional<std::string> read(const std::string& jobId, const std::string& name) const;
     void clear(const std::string& jobId);  // every result of the job, and its folder
+    // Bytes free for results on the disk that holds them (the most a non-root writer may use).
+    uint64_t freeBytes() const;
 
   private:
     std::filesystem::path jobDir(const std::string& jobId) const;

@@ -6,7 +6,7 @@
 
 namespace facetlight::server {
 
-Service::Service(ServiceConfig config) : config_(std::move(config)) {
+Service::Service(ServiceConfig config) : config_(std::move(config)), http_(config_.http) {
     const int cores = config_.cores > 0 ? config_.cores : int(std::thread::hardware_concurrency());
     database_ = std::make_unique<Database>(config_.dataDir);
     store_ = std::make_unique<JobStore>(*database_);
@@ -16,8 +16,6 @@ Service::Service(ServiceConfig config) : config_(std::move(config)) {
     runner_ = makeStudyRunner(*catalog_, config_.launch);
     queue_ = std::make_unique<JobQueue>(*store_, *results_, *runner_, config_.limits.maxQueued, cores);
     api_ = std::make_unique<Api>(*store_, *results_, *queue_, *catalog_, config_.limits);
-    const int httpThreads = std::max(1, config_.httpThreads);
-    http_.new_task_queue = [httpThreads] { return new httplib::ThreadPool(size_t(httpThreads)); };
     http_.set_tcp_nodelay(true);  // headers and body go out as two writes: no Nagle delay between them
     api_->install(http_, config_.accessLog);
     std::error_code ec;
@@ -40,11 +38,11 @@ Service::~Service() {
 }
 
 bool Service::bind(const std::string& host, int port) {
-    return http_.bind_to_port(host, port);
+    return http_.bind(host, port);
 }
 
 int Service::bindToAnyPort(const std::string& host) {
-    return http_.bind_to_any_port(host);
+    return http_.bindToAnyPort(host);
 }
 
 bool Service::listen() {

@@ -9,6 +9,7 @@
 #include <httplib.h>
 
 #include "api.h"
+#include "http_server.h"
 #include "job_queue.h"
 #include "job_spec.h"
 #include "job_store.h"
@@ -24,7 +25,7 @@ struct ServiceConfig {
     std::filesystem::path meshesDir = "meshes";
     std::filesystem::path webDir = "web";
     ServiceLimits limits;
-    int httpThreads = 8;
+    ConnectionLimits http;  // threads, per-peer connections, request deadline
     int cores = 0;  // 0: std::thread::hardware_concurrency()
     bool accessLog = true;
     std::optional<LaunchSettings> launch;  // run jobs through a launcher such as mpirun (docs/distributed.md)
@@ -58,7 +59,7 @@ class Service {
     std::unique_ptr<StudyRunner> runner_;
     std::unique_ptr<JobQueue> queue_;
     std::unique_ptr<Api> api_;
-    httplib::Server http_;
+    HttpServer http_;
     std::atomic<bool> listenStarted_{false}, listenEnded_{false}, stopped_{false};
 };
 

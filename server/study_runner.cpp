@@ -3,9 +3,11 @@
 namespace facetlight::server {
 
 StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control) {
-    Stone stone = catalog_.resolve(spec.mesh);
-    if (!spec.name.empty()) stone.name = spec.name;
-    return runStudy(stone, spec.settings, control);
+    const std::shared_ptr<const Stone> stone = catalog_.resolve(spec.mesh);
+    if (spec.name.empty() || spec.name == stone->name) return runStudy(*stone, spec.settings, control);
+    Stone named = *stone;  // a copy to rename: the catalog's stone is shared
+    named.name = spec.name;
+    return runStudy(named, spec.settings, control);
 }
 
 StudyResult LauncherRunner::run(const StudySpec& spec, RunControl& control) {

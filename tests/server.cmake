@@ -1,7 +1,7 @@
 # The service's in-process tests (tests/server/*_test.cpp: they link the server library, so they stay out of
 # the core test glob) and the end-to-end tests that drive the real binary with curl.
 if(TARGET facetlight_server)
-  foreach(test api_test)
+  foreach(test api_test request_guard_test)
     set(name server_${test})
     add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/server/${test}.cpp)
     target_link_libraries(${name} PRIVATE facetlight::server GTest::gtest_main facetlight_warnings)
@@ -13,5 +13,13 @@ if(TARGET facetlight_server)
     add_test(NAME server_e2e
       COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/e2e/server_e2e.sh $<TARGET_FILE:facetlight-server>)
     set_tests_properties(server_e2e PROPERTIES LABELS e2e TIMEOUT 600)
+  endif()
+  # Issue 18: hostile requests, short bodies, slow clients and a forged log line against the real server.
+  find_program(FACETLIGHT_PYTHON3 python3)
+  if(FACETLIGHT_PYTHON3)
+    add_test(NAME server_hostile_requests
+      COMMAND ${FACETLIGHT_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/server/hostile_requests.py
+              $<TARGET_FILE:facetlight-server>)
+    set_tests_properties(server_hostile_requests PROPERTIES LABELS e2e TIMEOUT 300)
   endif()
 endif()

@@ -44,6 +44,13 @@ constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
 inline Vec3 normalize(const Vec3& v) { return v / length(v); }
+// normalize() for a finite, non-zero vector of any size: where the squared length would overflow (components
+// of 1e308) or lose precision to underflow, the vector is first scaled by its largest component.
+inline Vec3 normalizeAnySize(const Vec3& v) {
+    const double len = length(v);
+    if (std::isfinite(len) && len > 1e-150) return v / len;
+    return normalize(v / std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))));
+}
 inline bool isFinite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // An oriented plane: points p with dot(normal, p) == offset; normal points out of the solid it bounds.

@@ -107,6 +107,9 @@ PolygonMesh intersectHalfSpaces(const std::vector<NamedPlane>& planes) {
     for (const auto& p : planes) {
         if (!isFinite(p.plane.normal) || !std::isfinite(p.plane.offset))
             throw Error("facet '" + p.name + "' has a non-finite plane");
+        if (std::fabs(p.plane.offset) > kMaxMeshCoordinate)
+            throw Error("facet '" + p.name + "' lies too far from the centre (beyond " +
+                        std::to_string(int64_t(kMaxMeshCoordinate)) + ")");
         const double len = length(p.plane.normal);
         if (!(len > 0.5 && len < 2.0)) throw Error("facet '" + p.name + "' has no unit normal");
         reach = std::max(reach, std::fabs(p.plane.offset));

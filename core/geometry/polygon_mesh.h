@@ -23,6 +23,15 @@ struct PolygonMesh {
 struct MeshLimits {
     size_t maxVertices = 2'000'000;
     size_t maxPolygons = 2'000'000;
+    // A file read from disk (the service caps uploads itself): room for 2 M triangles of binary STL.
+    size_t maxFileBytes = size_t(256) << 20;
 };
+
+// Coordinates (and plane distances) beyond this are refused: no stone comes near it in any length unit, and
+// products of three coordinates (volumes) stay far inside the range of a double. Huge ones made every
+// facet's area NaN.
+constexpr double kMaxMeshCoordinate = 1e9;
+// The smallest extent a stone may have; below it areas (squares) and volumes (cubes) lose precision.
+constexpr double kMinMeshExtent = 1e-9;
 
 }  // namespace facetlight

@@ -1,13 +1,10 @@
 #include "io/mesh_io.h"
 
 #include <cctype>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "io/stl_format.h"
+#include "util/bounded_read.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -56,14 +53,7 @@ PolygonMesh parseMesh(std::string_view bytes, MeshFormat format, const MeshLimit
 }
 
 Stone loadStone(const std::string& path, const StoneOptions& options) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not a stone file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot open: " + std::strerror(errno));
-    std::ostringstream content;
-    content << in.rdbuf();
-    if (in.bad()) throw Error(path + ": cannot read: " + std::strerror(errno));
-    const std::string bytes = std::move(content).str();
+    const std::string bytes = readFileUpTo(path, options.limits.maxFileBytes, "stone file");
     const MeshFormat format = formatFromFileName(path).value_or(detectFormat(bytes));
     try {
         return Stone::build(parseMesh(bytes, format, options.limits),

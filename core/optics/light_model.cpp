@@ -8,6 +8,10 @@
 namespace facetlight {
 namespace {
 
+// Photons start at a point light and are traced in single precision: from further than this the error of a
+// float position (6e-8 of the distance) nears a thousandth of the stone, and the light a collimated one.
+constexpr double kMaxPointLightRadii = 1e4;
+
 // An orthonormal basis around a unit vector (Duff et al., "Building an orthonormal basis, revisited",
 // JCGT 6(1), 2017).
 void basis(const Vec3& n, Vec3& u, Vec3& v) {
@@ -54,7 +58,7 @@ LightModel::LightModel(const LightSettings& s, const Stone& stone) : kind_(s.mod
 
     switch (kind_) {
         case LightModelKind::Collimated: {
-            dir_ = untilt(normalize(s.direction), cosTilt_, sinTilt_);
+            dir_ = untilt(normalizeAnySize(s.direction), cosTilt_, sinTilt_);
             basis(dir_, u_, v_);
             // The tightest disc about the centre of the silhouette's bounding rectangle.
             double uLo = INFINITY, uHi = -INFINITY, vLo = INFINITY, vHi = -INFINITY, front = INFINITY;
@@ -87,6 +91,10 @@ LightModel::LightModel(const LightSettings& s, const Stone& stone) : kind_(s.mod
                 throw Error("light.position must lie outside the stone's bounding sphere (centre " +
                             std::to_string(center_.z) + " on the z axis, radius " + std::to_string(radius_) +
                             ")");
+            }
+            if (!(d <= kMaxPointLightRadii * radius_)) {
+                throw Error("light.position must lie within " + std::to_string(int(kMaxPointLightRadii)) +
+                            " stone radii of the stone (a distant light is the collimated model)");
             }
             cosCone_ = std::sqrt(1 - (radius_ / d) * (radius_ / d));
             dir_ = normalize(center_ - position_);

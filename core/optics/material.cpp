@@ -43,7 +43,9 @@ Material Material::byName(std::string_view name) {
     }
     std::string known;
     for (const std::string& n : materialNames()) known += (known.empty() ? "" : ", ") + n;
-    throw Error("unknown material '" + std::string(name) + "' (known: " + known + ")");
+    // Names the field as the settings readers do, and quotes at most 40 bytes of what was sent.
+    throw Error("material must be one of " + known + " (got '" + std::string(name.substr(0, 40)) +
+                (name.size() > 40 ? "...'" : "'") + ")");
 }
 
 Material Material::constant(double n) {

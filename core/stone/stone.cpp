@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <functional>
 #include <map>
 #include <numeric>
 #include <unordered_map>
 
+#include "geometry/self_intersection.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -36,6 +38,14 @@ double Stone::volume() const {
 namespace {
 
 constexpr size_t kMaxPolygonVertices = 4096;
+// A closed surface enclosing less than this fraction of its extent cubed is flat (two-sided), not a solid.
+constexpr double kMinVolumeFraction = 1e-12;
+
+std::string formatLimit(double limit) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", limit);
+    return buf;
+}
 
 Vec3 newellNormal(const std::vector<Vec3>& points, const std::vector<uint32_t>& loop) {
     Vec3 n;
@@ -153,9 +163,14 @@ private:
         if (mesh_.polygons.size() > options_.limits.maxPolygons)
             throw Error("too many faces: " + std::to_string(mesh_.polygons.size()) + " (the limit is " +
                         std::to_string(options_.limits.maxPolygons) + ")");
-        for (size_t i = 0; i < mesh_.vertices.size(); ++i)
-            if (!isFinite(mesh_.vertices[i]))
+        for (size_t i = 0; i < mesh_.vertices.size(); ++i) {
+            const Vec3& v = mesh_.vertices[i];
+            if (!isFinite(v))
                 throw Error("vertex " + std::to_string(i + 1) + " has a coordinate that is not a finite number");
+            if (std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}) > kMaxMeshCoordinate)
+                throw Error("vertex " + std::to_string(i + 1) + " lies too far out: coordinates must be within " +
+                            formatLimit(kMaxMeshCoordinate));
+        }
         for (size_t f = 0; f < mesh_.polygons.size(); ++f) {
             const auto& poly = mesh_.polygons[f].vertices;
             if (poly.size() < 3)
@@ -173,6 +188,8 @@ private:
         for (const auto& v : mesh_.vertices) b.extend(v);
         scale_ = length(b.extent());
         if (!(scale_ > 0)) throw Error("the mesh has no extent: all its vertices coincide");
+        if (scale_ < kMinMeshExtent)
+            throw Error("the mesh is too small: its extent must be at least " + formatLimit(kMinMeshExtent));
     }
 
     void triangulatePolygons() {
@@ -248,10 +265,24 @@ private:
             }
         }
         if (reached != nt) throw Error("the mesh has several separate pieces; a stone must be one closed solid");
-        if (stone_.volume() < 0) {
+        const double volume = stone_.volume();
+        if (!(std::fabs(volume) > kMinVolumeFraction * scale_ * scale_ * scale_))
+            throw Error("the mesh encloses no volume: its faces lie flat against each other");
+        checkEmbedded();
+        if (volume < 0) {
             for (auto& t : stone_.triangles) std::swap(t.v[1], t.v[2]);
             stone_.warnings.push_back("all faces were oriented inward; flipped them outward");
         }
+    }
+
+    // A surface that passes through itself has no inside: refuse it, naming two of the faces that cross.
+    void checkEmbedded() const {
+        std::vector<TriangleIndices> corners(stone_.triangles.size());
+        for (size_t t = 0; t < corners.size(); ++t) corners[t] = stone_.triangles[t].v;
+        if (const auto crossing = findCrossingTriangles(stone_.vertices, corners, 1e-9 * scale_))
+            throw Error("the mesh's surface passes through itself: faces " +
+                        std::to_string(triangleSource_[crossing->first] + 1) + " and " +
+                        std::to_string(triangleSource_[crossing->second] + 1) + " cross");
     }
 
     // Grows facets over edge-connected triangles lying in the seed triangle's plane.
@@ -356,6 +387,8 @@ private:
             f.area = 0.5 * length(areaVector);
             f.centroid = weighted / (2 * f.area);
             f.offset = dot(f.normal, f.centroid);
+            if (!isFinite(f.normal) || !isFinite(f.centroid) || !std::isfinite(f.offset) || !(f.area > 0))
+                throw Error("facet " + std::to_string(f.id + 1) + " has no finite normal, area or centre");
             if (f.name.empty())
                 f.name = "facet_" + std::to_string(f.id + 1);
             else if (nameCount[f.name] > 1)
@@ -380,6 +413,7 @@ private:
             const double area = 0.5 * length(newellNormal(stone_.vertices, f.outline));
             if (area > largestArea) largestArea = area, largest = &f;
         }
+        if (!largest || !(largestArea > 0)) throw Error("the mesh has no facet of positive, finite area");
         if (!horizontal) {
             const Vec3 from = facetNormal(*largest);
             const Vec3 axis = cross(from, Vec3{0, 0, 1});

@@ -1,6 +1,11 @@
 #include "trace/trace_settings.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/polygon_mesh.h"
 #include "optics/material.h"
+#include "util/error.h"
 
 namespace facetlight {
 namespace {
@@ -21,6 +26,15 @@ const Schema<LightSettings>& lightSchema() {
                          "(radiance falling as cos(theta) from the zenith)"}),
         vec3("position", &LightSettings::position, false,
              {"--light-position", "Point: the source position (x y z), outside the stone"}),
+    },
+    // No stone reaches beyond kMaxMeshCoordinate (a light at 1e308 "succeeded" with no photon hitting);
+    // LightModel also refuses a light too far for its stone.
+    [](const LightSettings& s, const std::string& path) {
+        const Vec3& p = s.position;
+        if (std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kMaxMeshCoordinate) {
+            const std::string field = fieldPath(path, "position");
+            throw Error(field, field + " must be finite, each coordinate within 1e9");
+        }
     });
     return schema;
 }

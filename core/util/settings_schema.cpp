@@ -72,7 +72,9 @@ std::string readChoice(const json& j, const std::string& path, const std::vector
         if (c == name) return name;
         known += (known.empty() ? "" : ", ") + c;
     }
-    throw Error(path, path + " must be one of " + known + " (got '" + name + "')");
+    // Quotes at most 40 bytes of what was sent: a 100 KB name came back whole.
+    throw Error(path, path + " must be one of " + known + " (got '" + name.substr(0, 40) +
+                          (name.size() > 40 ? "...'" : "'") + ")");
 }
 
 Vec3 readVec3(const json& j, const std::string& path, bool nonZero) {

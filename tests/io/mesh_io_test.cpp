@@ -308,6 +308,21 @@ TEST(GemCadLoader, Errors) {
                 "GemCad line 4: the design has more than 5 facets");
 }
 
+// Issue 18: a tier at distance 1e300 made every facet area NaN and the stone builder dereference a null
+// "largest facet" (the server died, the CLI exited 139).
+TEST(GemCadLoader, HugeDistanceIsRefusedNotACrash) {
+    const std::string design =
+        "GemCad 5.0\ng 96 0.0\ny 1 y\nI 2.417\na -45 1e300 0 24 48 72\na 45 1 0 24 48 72\na 0 1\n";
+    expectError([&] { Stone::build(parseGemCad(design), "huge"); }, "GemCad line 5: facet 'tier1_1' lies too far");
+}
+
+// Issue 18: a rotated cube scaled 1e155 has finite coordinates whose products overflow.
+TEST(ObjLoader, HugeCoordinatesAreRefusedNotACrash) {
+    const std::string obj = readFile(std::string(FACETLIGHT_SOURCE_DIR) + "/tests/fuzz/corpus/obj/cube_1e155.obj");
+    ASSERT_FALSE(obj.empty());
+    expectError([&] { Stone::build(parseObj(obj), "huge"); }, "vertex 1 lies too far out");
+}
+
 TEST(MeshIo, FormatFromFileName) {
     EXPECT_EQ(formatFromFileName("cut.obj"), MeshFormat::Obj);
     EXPECT_EQ(formatFromFileName("/a/b/Cut.STL"), MeshFormat::Stl);
@@ -340,6 +355,15 @@ TEST(MeshIo, LoadStoneNamesThePathOnFailure) {
     const std::string bad = std::string(FACETLIGHT_BINARY_DIR) + "/mesh_io_test_bad.stl";
     std::ofstream(bad, std::ios::binary) << binaryCube("cut short").substr(0, 300);
     expectError([&] { loadStone(bad); }, bad + ": binary STL truncated");
+}
+
+// Issue 18: `facetlight info --mesh /dev/zero` read until memory ran out.
+TEST(MeshIo, LoadStoneReadsNoMoreThanTheCap) {
+    StoneOptions options;
+    options.limits.maxFileBytes = 1 << 20;
+    expectError([&] { loadStone("/dev/zero", options); }, "/dev/zero: the stone file is larger than 1048576 bytes");
+    options.limits.maxFileBytes = 100;
+    expectError([&] { loadStone(kData + "cube_quads.obj", options); }, "is larger than 100 bytes");
 }
 
 TEST(MeshIo, LoadStoneUsesTheFileStemAsName) {

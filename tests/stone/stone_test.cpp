@@ -112,6 +112,52 @@ TEST(Stone, Errors) {
     EXPECT_THROW(Stone::build(unitCube(), "cube", tight), Error);
 }
 
+PolygonMesh scaledCube(double scale) {
+    PolygonMesh m = unitCube();
+    for (auto& v : m.vertices) v = v * scale;
+    return m;
+}
+
+// An octahedron (vertices +-x, +-y, +-z) whose +z apex is moved to `apex`.
+PolygonMesh octahedronWithApex(const Vec3& apex) {
+    PolygonMesh m;
+    m.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, apex, {0, 0, -1}};
+    for (uint32_t x : {0u, 1u})
+        for (uint32_t y : {2u, 3u})
+            for (uint32_t z : {4u, 5u}) {
+                // Outward when the corners' signs multiply to +1, reversed otherwise.
+                const bool outward = ((x == 0) == (y == 2)) == (z == 4);
+                m.polygons.push_back({outward ? std::vector<uint32_t>{x, y, z} : std::vector<uint32_t>{x, z, y}, ""});
+            }
+    return m;
+}
+
+TEST(Stone, HugeOrTinyCoordinatesAreRefused) {
+    // Issue 18: coordinates of 1e155 made every area NaN and crashed moveToStandardFrame.
+    expectThrowsWith(scaledCube(1e155), "lies too far out");
+    expectThrowsWith(scaledCube(2e9), "coordinates must be within 1e+09");
+    expectThrowsWith(scaledCube(1e-12), "too small");
+    EXPECT_NEAR(Stone::build(scaledCube(1e8), "big").volume(), 1e24, 1e12);
+    EXPECT_NEAR(Stone::build(scaledCube(1e-8), "small").volume(), 1e-24, 1e-36);
+}
+
+TEST(Stone, FlatTwoSidedSquareIsNotASolid) {
+    PolygonMesh m;
+    m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    m.polygons = {{{0, 1, 2, 3}, "up"}, {{3, 2, 1, 0}, "down"}};
+    expectThrowsWith(m, "encloses no volume");
+}
+
+TEST(Stone, SelfIntersectingOctahedronIsRefused) {
+    EXPECT_TRUE(Stone::build(octahedronWithApex({0, 0, 1}), "octahedron").convex);
+    // The apex pushed through the lower half: the upper faces cut through the lower ones.
+    expectThrowsWith(octahedronWithApex({0.5, 0.5, -0.5}), "passes through itself");
+    // The apex folded down into the girdle plane: the upper faces overlap each other flat.
+    expectThrowsWith(octahedronWithApex({-2, 0, 0}), "passes through itself");
+    // Pushed down but inside: a hollow, non-convex solid, which is fine.
+    EXPECT_FALSE(Stone::build(octahedronWithApex({0, 0, -0.5}), "hollow").convex);
+}
+
 TEST(Stone, CollinearFirstVerticesGiveTheRightNormal) {
     // The top face starts with three collinear vertices: the midpoint of an edge is listed between its ends.
     PolygonMesh m = unitCube();

@@ -454,6 +454,46 @@ TEST(PhotonTracer, CollimatedStraightDownHitsAlmostEveryPhoton) {
     EXPECT_NEAR(double(r.stats.hit) / double(r.stats.photons), octagonShare, 0.01);
 }
 
+// Issue 18: a direction of 1e308 components normalised to zero and "succeeded" with no photon hitting.
+TEST(PhotonTracer, HugeDirectionIsTheSameDirection) {
+    const Stone stone = singleCut();
+    TraceSettings huge = baseSettings(2'000);
+    huge.light.direction = {1e308, 1e308, -1e308};
+    TraceSettings unit = huge;
+    unit.light.direction = {1, 1, -1};
+    const TraceResult a = trace(Scene(stone, huge)), b = trace(Scene(stone, unit));
+    EXPECT_GT(a.stats.hit, 0u);
+    EXPECT_EQ(a.stats.hit, b.stats.hit);
+    EXPECT_EQ(a.stats.tallies(), b.stats.tallies());
+}
+
+// Issue 18: a point light at 1e308 "succeeded" with no photon hitting. Settings read from JSON refuse
+// coordinates beyond 1e9; the light model refuses a light further than 10^4 stone radii.
+TEST(PhotonTracer, FarPointLightIsRefused) {
+    const Stone stone = singleCut();
+    TraceSettings settings = baseSettings(100);
+    settings.light.model = LightModelKind::Point;
+    for (const Vec3& far : {Vec3{0, 0, 1e308}, Vec3{1e308, 1e308, 1e308}, Vec3{0, 0, 1e6}}) {
+        settings.light.position = far;
+        try {
+            trace(Scene(stone, settings));
+            ADD_FAILURE() << "a point light at " << far.z << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("light.position must lie within 10000 stone radii"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+    try {
+        TraceSettings::fromJson(json{{"light", {{"model", "point"}, {"position", {0, 0, 1e308}}}}});
+        ADD_FAILURE() << "a light position of 1e308 was read";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), "light.position must be finite, each coordinate within 1e9");
+    }
+    settings.light.position = {0, 0, 100};
+    EXPECT_GT(trace(Scene(stone, settings)).stats.hit, 0u);
+}
+
 TEST(ExitAngleBins, MatchAcosExceptAtBinBoundaries) {
     const ExitAngleBins bin;
     EXPECT_EQ(bin(1.0f), 0);
@@ -543,6 +583,9 @@ TEST(TraceSettings, StrictJsonNamesTheField) {
     expectError(json{{"photons", 0}}, "photons");
     expectError(json{{"photons", 2e10}}, "photons");
     expectError(json{{"photons", 1.5}}, "photons");
+    // Issue 18: 2^64 written as a float passed the range check and converted with undefined behaviour.
+    expectError(json{{"seed", 1.8446744073709552e19}}, "seed must be an integer");
+    expectError(json{{"seed", -1}}, "seed must be an integer");
     expectError(json{{"photons", "many"}}, "photons");
     expectError(json{{"threads", -1}}, "threads");
     expectError(json{{"colour", "red"}}, "colour");

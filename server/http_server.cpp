@@ -1,0 +1,254 @@
+#include "http_server.h"
+
+#include <arpa/inet.h>
+#include <netdb.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <condition_variable>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <functional>
+#include <thread>
+#include <vector>
+
+namespace facetlight::server {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Set while a response is written that must end its connection. httplib 0.11 writes "Connection: close" but
+// goes on reading: the unread body of a refused request would be taken for the next request.
+thread_local bool closeAfterResponse = false;
+
+// Threads added while every one is busy, up to a cap; they stay until shutdown.
+class GrowingThreadPool : public httplib::TaskQueue {
+  public:
+    GrowingThreadPool(size_t threads, size_t maxThreads) : maxThreads_(std::max(threads, maxThreads)) {
+        std::lock_guard lock(mutex_);
+        for (size_t i = 0; i < threads; ++i) addThread();
+    }
+
+    void enqueue(std::function<void()> fn) override {
+        {
+            std::lock_guard lock(mutex_);
+            jobs_.push_back(std::move(fn));
+            if (idle_ < jobs_.size() && threads_.size() < maxThreads_) addThread();
+        }
+        cond_.notify_one();
+    }
+
+    void shutdown() override {
+        {
+            std::lock_guard lock(mutex_);
+            stopping_ = true;
+        }
+        cond_.notify_all();
+        for (auto& t : threads_) t.join();  // no thread is added once stopping_ is set
+    }
+
+  private:
+    void addThread() {
+        threads_.emplace_back([this] {
+            for (;;) {
+                std::function<void()> fn;
+                {
+                    std::unique_lock lock(mutex_);
+                    ++idle_;
+                    cond_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
+                    --idle_;
+                    if (jobs_.empty()) return;  // stopping, nothing left
+                    fn = std::move(jobs_.front());
+                    jobs_.pop_front();
+                }
+                fn();
+            }
+        });
+    }
+
+    const size_t maxThreads_;
+    std::mutex mutex_;
+    std::condition_variable cond_;
+    std::deque<std::function<void()>> jobs_;
+    std::vector<std::thread> threads_;
+    size_t idle_ = 0;
+    bool stopping_ = false;
+};
+
+int millisecondsUntil(Clock::time_point deadline) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    return int(std::clamp<long long>(left, 0, 1 << 30));
+}
+
+// Waits until `sock` is ready for `events` or the deadline passes.
+bool waitFor(int sock, short events, Clock::time_point deadline) {
+    pollfd p{sock, events, 0};
+    for (;;) {
+        const int n = ::poll(&p, 1, millisecondsUntil(deadline));
+        if (n > 0) return (p.revents & (events | POLLHUP | POLLERR)) != 0;
+        if (n == 0 || errno != EINTR) return false;
+    }
+}
+
+std::string peerAddress(int sock, int& port, bool local) {
+    sockaddr_storage addr{};
+    socklen_t len = sizeof addr;
+    const int rc = local ? ::getsockname(sock, reinterpret_cast<sockaddr*>(&addr), &len)
+                         : ::getpeername(sock, reinterpret_cast<sockaddr*>(&addr), &len);
+    char host[NI_MAXHOST] = "", service[NI_MAXSERV] = "";
+    if (rc != 0 || ::getnameinfo(reinterpret_cast<sockaddr*>(&addr), len, host, sizeof host, service,
+                                 sizeof service, NI_NUMERICHOST | NI_NUMERICSERV) != 0)
+        return {};
+    port = std::atoi(service);
+    return host;
+}
+
+// httplib's SocketStream with a deadline for the request: reads wait for the sooner of the read timeout and
+// the deadline, so a request trickling in byte by byte ends when the deadline passes.
+class DeadlineStream : public httplib::Stream {
+  public:
+    DeadlineStream(int sock, std::chrono::microseconds readTimeout, std::chrono::microseconds writeTimeout)
+        : sock_(sock), readTimeout_(readTimeout), writeTimeout_(writeTimeout) {}
+
+    void startRequest(Clock::time_point deadline) { deadline_ = deadline; }
+
+    bool is_readable() const override {
+        const auto now = Clock::now();
+        return now < deadline_ && waitFor(sock_, POLLIN, std::min(deadline_, now + readTimeout_));
+    }
+    bool is_writable() const override { return waitFor(sock_, POLLOUT, Clock::now() + writeTimeout_); }
+
+    ssize_t read(char* ptr, size_t size) override {
+        if (bufferBegin_ == bufferEnd_) {
+            if (!is_readable()) return -1;
+            const ssize_t n = recvRetrying(size < sizeof buffer_ ? buffer_ : ptr, std::max(size, sizeof buffer_));
+            if (n <= 0 || size >= sizeof buffer_) return n;
+            bufferBegin_ = 0, bufferEnd_ = size_t(n);
+        }
+        const size_t n = std::min(size, bufferEnd_ - bufferBegin_);
+        std::memcpy(ptr, buffer_ + bufferBegin_, n);
+        bufferBegin_ += n;
+        return ssize_t(n);
+    }
+
+    ssize_t write(const char* ptr, size_t size) override {
+        if (!is_writable()) return -1;
+        for (;;) {
+            const ssize_t n = ::send(sock_, ptr, size, MSG_NOSIGNAL);
+            if (n >= 0 || errno != EINTR) return n;
+        }
+    }
+
+    void get_remote_ip_and_port(std::string& ip, int& port) const override {
+        ip = peerAddress(sock_, port, false);
+    }
+    void get_local_ip_and_port(std::string& ip, int& port) const override { ip = peerAddress(sock_, port, true); }
+    socket_t socket() const override { return sock_; }
+
+    bool hasBufferedBytes() const { return bufferBegin_ < bufferEnd_; }
+
+  private:
+    ssize_t recvRetrying(char* ptr, size_t size) {
+        for (;;) {
+            const ssize_t n = ::recv(sock_, ptr, size, 0);
+            if (n >= 0 || errno != EINTR) return n;
+        }
+    }
+
+    const int sock_;
+    const std::chrono::microseconds readTimeout_, writeTimeout_;
+    Clock::time_point deadline_ = Clock::time_point::max();
+    char buffer_[4096];
+    size_t bufferBegin_ = 0, bufferEnd_ = 0;
+};
+
+void sendTooManyConnections(int sock, size_t limit) {
+    const std::string body =
+        "{\"type\":\"about:blank\",\"title\":\"Too Many Requests\",\"status\":429,\"detail\":\"too many "
+        "connections from your address at once (the limit is " +
+        std::to_string(limit) + ")\"}";
+    const std::string response = "HTTP/1.1 429 Too Many Requests\r\nContent-Type: application/problem+json\r\n"
+                                 "Retry-After: 1\r\nConnection: close\r\nContent-Length: " +
+                                 std::to_string(body.size()) + "\r\n\r\n" + body;
+    [[maybe_unused]] const ssize_t sent =
+        ::send(sock, response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+}
+
+}  // namespace
+
+HttpServer::HttpServer(const ConnectionLimits& limits) : limits_(limits) {
+    const size_t threads = std::max<size_t>(1, limits.threads), maxThreads = limits.maxThreads;
+    new_task_queue = [threads, maxThreads] { return new GrowingThreadPool(threads, maxThreads); };
+    set_keep_alive_max_count(std::max<size_t>(1, limits.keepAliveRequests));
+    // 400, 413 and 414 also come from httplib's own parser, which leaves the rest of the request unread.
+    set_post_routing_handler([](const httplib::Request&, httplib::Response& res) {
+        closeAfterResponse = res.get_header_value("Connection") == "close" || res.status == 400 ||
+                             res.status == 413 || res.status == 414;
+    });
+}
+
+bool HttpServer::bind(const std::string& host, int port) {
+    if (!bind_to_port(host, port)) return false;
+    raiseBacklog();
+    return true;
+}
+
+int HttpServer::bindToAnyPort(const std::string& host) {
+    const int port = bind_to_any_port(host);
+    if (port > 0) raiseBacklog();
+    return port;
+}
+
+// httplib listens with a backlog of 5: 200 clients connecting at once saw resets. listen() again on a
+// listening socket only changes its backlog (Linux).
+void HttpServer::raiseBacklog() {
+    ::listen(svr_sock_, limits_.backlog);
+}
+
+bool HttpServer::admit(const std::string& peer) {
+    std::lock_guard lock(mutex_);
+    size_t& open = perPeer_[peer];
+    if (open >= limits_.maxPerPeer) return false;
+    ++open;
+    return true;
+}
+
+void HttpServer::release(const std::string& peer) {
+    std::lock_guard lock(mutex_);
+    if (--perPeer_[peer] == 0) perPeer_.erase(peer);
+}
+
+// The keep-alive loop of httplib 0.11's process_server_socket, with each request's deadline set when its
+// first byte is there.
+bool HttpServer::process_and_close_socket(socket_t sock) {
+    int port = 0;
+    const std::string peer = peerAddress(sock, port, false);
+    bool ok = false;
+    if (admit(peer)) {
+        DeadlineStream stream(sock, std::chrono::seconds(read_timeout_sec_) + std::chrono::microseconds(read_timeout_usec_),
+                              std::chrono::seconds(write_timeout_sec_) + std::chrono::microseconds(write_timeout_usec_));
+        for (size_t left = keep_alive_max_count_; left > 0 && svr_sock_ != INVALID_SOCKET; --left) {
+            if (!stream.hasBufferedBytes() &&
+                !waitFor(sock, POLLIN, Clock::now() + std::chrono::seconds(keep_alive_timeout_sec_)))
+                break;
+            stream.startRequest(Clock::now() + limits_.requestTimeout);
+            bool closed = false;
+            closeAfterResponse = false;
+            ok = process_request(stream, left == 1, closed, nullptr);
+            if (!ok || closed || closeAfterResponse) break;
+        }
+        release(peer);
+    } else {
+        sendTooManyConnections(sock, limits_.maxPerPeer);
+    }
+    ::shutdown(sock, SHUT_RDWR);
+    ::close(sock);
+    return ok;
+}
+
+}  // namespace facetlight::server

@@ -1,0 +1,47 @@
+#pragma once
+// cpp-httplib's server with the guards a public service needs that 0.11 lacks (issue 18): a whole request
+// must arrive within a deadline (0.11 only times out single reads, so a client sending a header line every
+// 2 s held a thread for ever), each peer may hold only so many connections, threads are added while every
+// one is busy (up to a cap) so that slow clients cannot leave /healthz unanswered, and the listen backlog is
+// raised from 5. It reads sockets with poll(), so descriptors above 1023 are safe too.
+#include <chrono>
+#include <cstddef>
+#include <map>
+#include <mutex>
+#include <string>
+
+#include <httplib.h>
+
+namespace facetlight::server {
+
+struct ConnectionLimits {
+    size_t threads = 8;                // started at once
+    size_t maxThreads = 256;           // added while all are busy, never more
+    size_t maxPerPeer = 64;            // connections open at once from one address
+    std::chrono::milliseconds requestTimeout{30'000};  // request line, headers and body, from the first byte
+    int backlog = 1024;                // connections waiting to be accepted (the kernel caps it at somaxconn)
+    size_t keepAliveRequests = 1000;   // requests on one connection (httplib's 5 made pollers reconnect)
+};
+
+class HttpServer : public httplib::Server {
+  public:
+    explicit HttpServer(const ConnectionLimits& limits);
+
+    // As bind_to_port and bind_to_any_port, with the listen backlog raised.
+    bool bind(const std::string& host, int port);
+    int bindToAnyPort(const std::string& host);
+
+  private:
+    // Replaces httplib's connection loop (same keep-alive rules) with one reading through DeadlineStream.
+    bool process_and_close_socket(socket_t sock) override;
+    // Counts a connection against its peer's cap; false when the peer has too many.
+    bool admit(const std::string& peer);
+    void release(const std::string& peer);
+    void raiseBacklog();
+
+    ConnectionLimits limits_;
+    std::mutex mutex_;
+    std::map<std::string, size_t> perPeer_;
+};
+
+}  // namespace facetlight::server

@@ -1,0 +1,104 @@
+#include "request_guard.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace facetlight::server {
+
+namespace {
+
+bool isHexId(std::string_view s) {
+    return s.size() == 32 && std::all_of(s.begin(), s.end(), [](char c) {
+               return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+           });
+}
+
+// Whether `path` matches the route template segment by segment, without regular expressions (libstdc++'s
+// can overflow the stack on long paths).
+bool matchesTemplate(std::string_view pattern, std::string_view path) {
+    for (;;) {
+        const size_t p = pattern.find('/'), q = path.find('/');
+        const std::string_view a = pattern.substr(0, p), b = path.substr(0, q);
+        if (!(a == "{id}" ? isHexId(b) : a == b)) return false;
+        if (p == std::string_view::npos || q == std::string_view::npos) return p == q;
+        pattern.remove_prefix(p + 1);
+        path.remove_prefix(q + 1);
+    }
+}
+
+bool hasControlCharacter(std::string_view s) {
+    return std::any_of(s.begin(), s.end(), [](char c) { return uint8_t(c) < 0x20 || c == 0x7f; });
+}
+
+Refusal refuse(int status, std::string detail) {
+    return {status, std::move(detail), {{"Connection", "close"}}};
+}
+
+}  // namespace
+
+std::vector<std::string> methodsAllowed(const std::vector<Route>& routes, std::string_view path) {
+    std::vector<std::string> methods;
+    for (const Route& r : routes)
+        if (matchesTemplate(r.path, path)) {
+            methods.push_back(r.method);
+            if (r.method == "GET") methods.push_back("HEAD");
+        }
+    std::sort(methods.begin(), methods.end());
+    methods.erase(std::unique(methods.begin(), methods.end()), methods.end());
+    return methods;
+}
+
+std::optional<Refusal> checkRequest(const httplib::Request& req, const RequestRules& rules) {
+    if (req.target.size() > rules.maxUrlBytes)
+        return refuse(414, "the URL is longer than " + std::to_string(rules.maxUrlBytes) + " bytes");
+    if (hasControlCharacter(req.path)) return refuse(400, "the path contains control characters");
+    if (req.has_header("Transfer-Encoding"))
+        return refuse(411, "chunked request bodies are not accepted: send Content-Length");
+
+    std::optional<std::string> length;
+    for (auto [it, end] = req.headers.equal_range("Content-Length"); it != end; ++it) {
+        const std::string& v = it->second;
+        if (v.empty() || v.size() > 15 || v.find_first_not_of("0123456789") != std::string::npos)
+            return refuse(400, "Content-Length must be a whole number of bytes");
+        if (length && *length != v) return refuse(400, "the request has two different Content-Length headers");
+        length = v;
+    }
+
+    const std::vector<std::string> allowed = methodsAllowed(rules.routes, req.path);
+    if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), req.method) == allowed.end()) {
+        std::string list;
+        for (const auto& m : allowed) list += (list.empty() ? "" : ", ") + m;
+        Refusal r{405, req.method + " is not allowed here; this resource takes " + list, {{"Allow", list}}};
+        if (length && *length != "0") r.headers.emplace_back("Connection", "close");  // the body stays unread
+        return r;
+    }
+
+    for (const std::string& route : rules.bodyRoutes) {
+        const size_t space = route.find(' ');
+        if (!length && route.substr(0, space) == req.method && matchesTemplate(route.substr(space + 1), req.path))
+            return refuse(411, "send the body with a Content-Length header");
+    }
+    const size_t limit = rules.bodyLimit(req.path);
+    if (length && std::stoull(*length) > limit)
+        return refuse(413, "the request body is larger than " + std::to_string(limit) + " bytes");
+    return std::nullopt;
+}
+
+std::string escapeForLog(std::string_view text, size_t maxBytes) {
+    std::string out;
+    for (char c : text.substr(0, maxBytes)) {
+        const auto u = uint8_t(c);
+        if (u < 0x20 || u > 0x7e || c == '"' || c == '\\') {
+            static const char kHex[] = "0123456789abcdef";
+            out += "\\x";
+            out += kHex[u >> 4];
+            out += kHex[u & 15];
+        } else {
+            out += c;
+        }
+    }
+    if (text.size() > maxBytes) out += "...";
+    return out;
+}
+
+}  // namespace facetlight::server

@@ -1,0 +1,423 @@
+#!/usr/bin/env python3
+"""Hostile requests against the real facetlight-server (issue 18): malformed and smuggling-prone heads, bad
+lengths, short and abandoned bodies, deep JSON, out-of-range settings, hostile meshes, slow clients and a
+forged access-log line. Every answer must have the expected status, every error must be problem+json, and
+/healthz must answer within a second after each request.
+
+Usage: tests/server/hostile_requests.py path/to/facetlight-server
+"""
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+
+ID = "0123456789abcdef0123456789abcdef"
+HTTP_THREADS = 2
+MAX_PER_PEER = 24
+REQUEST_TIMEOUT_S = 3
+MAX_BODY = 1 << 20
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class Server:
+    def __init__(self, binary, work, *extra):
+        self.port = free_port()
+        os.makedirs(os.path.join(work, "meshes"), exist_ok=True)
+        self.log_path = os.path.join(work, "server.log")
+        self.log = open(self.log_path, "wb")
+        self.proc = subprocess.Popen(
+            [binary, "--host", "127.0.0.1", "--port", str(self.port), "--data", os.path.join(work, "data"),
+             "--meshes", os.path.join(work, "meshes"), "--web", os.path.join(work, "web"), "--cores", "1",
+             "--http-threads", str(HTTP_THREADS), "--max-connections-per-peer", str(MAX_PER_PEER),
+             "--request-timeout", str(REQUEST_TIMEOUT_S), "--max-body", str(MAX_BODY), *extra],
+            stdout=self.log, stderr=self.log)
+        deadline = time.time() + 20
+        while time.time() < deadline:
+            try:
+                if self.request(b"GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n", timeout=1)[0] == 200:
+                    return
+            except OSError:
+                time.sleep(0.05)
+        raise SystemExit("FAIL: the server did not start\n" + open(self.log_path).read())
+
+    def connect(self, timeout=5):
+        s = socket.create_connection(("127.0.0.1", self.port), timeout=timeout)
+        s.settimeout(timeout)
+        return s
+
+    def request(self, raw, timeout=10, shut_write=False):
+        """Sends raw bytes and reads one response: (status, headers, body)."""
+        with self.connect(timeout) as s:
+            s.sendall(raw)
+            if shut_write:
+                s.shutdown(socket.SHUT_WR)
+            return read_response(s)
+
+    def stop(self):
+        self.proc.terminate()
+        try:
+            self.proc.wait(10)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+        self.log.close()
+
+
+def read_response(s):
+    data = b""
+    while b"\r\n\r\n" not in data:
+        chunk = s.recv(65536)
+        if not chunk:
+            raise OSError("the connection closed before a response: %r" % data[:200])
+        data += chunk
+    head, body = data.split(b"\r\n\r\n", 1)
+    lines = head.decode("latin-1").split("\r\n")
+    status = int(lines[0].split()[1])
+    headers = {}
+    for line in lines[1:]:
+        k, _, v = line.partition(":")
+        headers[k.strip().lower()] = v.strip()
+    length = int(headers.get("content-length", "0"))
+    while len(body) < length:
+        chunk = s.recv(65536)
+        if not chunk:
+            break
+        body += chunk
+    if len(body) > length:
+        raise OSError("more than one response to one request: %r" % body[length:length + 80])
+    return status, headers, body
+
+
+def http(method, path, body=b"", headers=None, length=True):
+    head = "%s %s HTTP/1.1\r\nHost: x\r\n" % (method, path)
+    for k, v in (headers or {}).items():
+        head += "%s: %s\r\n" % (k, v)
+    if length and (body or method in ("POST", "PUT", "PATCH")):
+        head += "Content-Length: %d\r\n" % len(body)
+    return head.encode("latin-1") + b"\r\n" + body
+
+
+def job(**fields):
+    j = {"mesh": "round_brilliant", "photons": 200, "threads": 1}
+    j.update(fields)
+    return json.dumps(j).encode()
+
+
+def post_job(body, ctype="application/json"):
+    return http("POST", "/api/jobs", body, {"Content-Type": ctype})
+
+
+def upload(data, name="m.obj"):
+    return http("POST", "/api/meshes?name=" + name, data, {"Content-Type": "application/octet-stream"})
+
+
+CUBE_OBJ = (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+            b"f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n")
+CORPUS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "fuzz", "corpus")
+
+
+def corpus(kind, name):
+    with open(os.path.join(CORPUS, kind, name), "rb") as f:
+        return f.read()
+
+
+# (name, raw request, expected status or set of statuses, field the problem must name or None)
+def cases():
+    deep = b"[" * 150000 + b"]" * 150000
+    big_material = job(material="x" * 100000)
+    return [
+        ("healthz", http("GET", "/healthz"), 200, None),
+        ("openapi", http("GET", "/api/openapi.json"), 200, None),
+        ("job list", http("GET", "/api/jobs"), 200, None),
+        ("mesh list", http("GET", "/api/meshes"), 200, None),
+        ("HTTP/1.0", b"GET /healthz HTTP/1.0\r\n\r\n", 200, None),
+        ("limit 0", http("GET", "/api/jobs?limit=0"), 400, "limit"),
+        ("limit abc", http("GET", "/api/jobs?limit=abc"), 400, "limit"),
+        ("offset -1", http("GET", "/api/jobs?offset=-1"), 400, "offset"),
+        ("limit 20 digits", http("GET", "/api/jobs?limit=99999999999999999999"), 400, "limit"),
+        ("unknown job", http("GET", "/api/jobs/" + ID), 404, None),
+        ("unknown job stats", http("GET", "/api/jobs/%s/stats" % ID), 404, None),
+        ("unknown job png", http("GET", "/api/jobs/%s/render.png" % ID), 404, None),
+        ("cancel unknown", http("POST", "/api/jobs/%s/cancel" % ID), 404, None),
+        ("delete unknown", http("DELETE", "/api/jobs/" + ID), 404, None),
+        ("id not hex", http("GET", "/api/jobs/ZZZZ"), 404, None),
+        ("traversal", http("GET", "/api/jobs/../../etc/passwd"), {400, 404}, None),
+        ("encoded traversal", http("GET", "/api/jobs/%2e%2e%2f%2e%2e%2fetc%2fpasswd"), {400, 404}, None),
+        ("static traversal", http("GET", "/../../../etc/passwd"), {400, 404}, None),
+        ("NUL in path", http("GET", "/index.html%00.js"), 400, None),
+        ("newline in path", http("GET", "/api/jobs%0d%0aX-Forged:%201"), 400, None),
+        ("long URL", http("GET", "/api/jobs?x=" + "a" * 3000), 414, None),
+        ("garbage request line", b"HELLO\r\n\r\n", 400, None),
+        ("PUT job", http("PUT", "/api/jobs/" + ID, b"{}"), 405, None),
+        ("PATCH jobs", http("PATCH", "/api/jobs", b"{}"), 405, None),
+        ("DELETE healthz", http("DELETE", "/healthz"), 405, None),
+        ("POST healthz", http("POST", "/healthz", b""), 405, None),
+        ("GET cancel", http("GET", "/api/jobs/%s/cancel" % ID), 405, None),
+        ("DELETE meshes", http("DELETE", "/api/meshes"), 405, None),
+        ("OPTIONS jobs", http("OPTIONS", "/api/jobs"), 405, None),
+        ("POST job without length", http("POST", "/api/jobs", length=False), 411, None),
+        ("POST mesh without length", http("POST", "/api/meshes", length=False), 411, None),
+        ("chunked job", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n5\r\n{\"a\":\r\n0\r\n\r\n",
+         411, None),
+        ("length abc", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: abc\r\n\r\n", 400, None),
+        ("length -1", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: -1\r\n\r\n", 400, None),
+        ("length 1e3", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 1e3\r\n\r\n", 400, None),
+        ("length 20 digits", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 99999999999999999999\r\n\r\n",
+         400, None),
+        ("two lengths", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 2\r\nContent-Length: 40\r\n\r\n{}",
+         400, None),
+        ("length over max-body", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n{" % (MAX_BODY + 1),
+         413, None),
+        ("upload over max-upload",
+         b"POST /api/meshes HTTP/1.1\r\nHost: x\r\nContent-Length: 17000000\r\n\r\nv 0 0 0\n", 413, None),
+        ("GET with length over max-body",
+         b"GET /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % (MAX_BODY + 1), 413, None),
+        ("huge header", http("GET", "/healthz", headers={"X-Big": "a" * 20000}), 400, None),
+        ("not JSON", post_job(b"{photons: 5}"), 400, None),
+        ("JSON array", post_job(b"[]"), 400, None),
+        ("JSON trailing junk", post_job(b"{} {}"), 400, None),
+        ("NaN literal", post_job(b'{"mesh":"round_brilliant","photons":NaN}'), 400, None),
+        ("nested 150000 deep", post_job(deep), 400, None),
+        ("wrong content type", post_job(job(), "image/png"), 415, None),
+        ("no mesh", post_job(b'{"photons": 100}'), 422, "mesh"),
+        ("unknown mesh", post_job(job(mesh="no_such_cut")), 422, "mesh"),
+        ("mesh path", post_job(job(mesh="/etc/passwd")), 422, "mesh"),
+        ("mesh 100 KB", post_job(job(mesh="m" * 100000)), 422, "mesh"),
+        ("photons 0", post_job(job(photons=0)), 422, "photons"),
+        ("photons -5", post_job(job(photons=-5)), 422, "photons"),
+        ("photons 1e300", post_job(job(photons=1e300)), 422, "photons"),
+        ("photons string", post_job(job(photons="many")), 422, "photons"),
+        ("photons 1.5", post_job(job(photons=1.5)), 422, "photons"),
+        ("seed 2^64 as float", post_job(b'{"mesh":"round_brilliant","photons":200,"seed":1.8446744073709552e19}'),
+         422, "seed"),
+        ("seed -1", post_job(job(seed=-1)), 422, "seed"),
+        ("threads 0", post_job(job(threads=0)), 422, "threads"),
+        ("threads 1e9", post_job(job(threads=1e9)), 422, "threads"),
+        ("unknown field", post_job(job(colour="red")), 422, "colour"),
+        ("unknown material 100 KB", post_job(big_material), 422, "material"),
+        ("direction zero", post_job(job(light={"direction": [0, 0, 0]})), 422, "light.direction"),
+        ("direction strings", post_job(job(light={"direction": ["a", 1, 2]})), 422, "light.direction"),
+        ("point light at 1e308", post_job(job(light={"model": "point", "position": [0, 0, 1e308]})), 422,
+         "light.position"),
+        ("render width 1e9", post_job(job(render={"width": 1e9})), 422, "render.width"),
+        ("render width -1", post_job(job(render={"width": -1})), 422, "render.width"),
+        ("render yes", post_job(job(render="yes")), 422, "render"),
+        ("upload GemCad 1e300", upload(corpus("gemcad", "huge_distance.asc"), "huge.asc"), 422, "file"),
+        ("upload cube 1e155", upload(corpus("obj", "cube_1e155.obj")), 422, "file"),
+        ("upload flat square", upload(corpus("obj", "flat_square.obj")), 422, "file"),
+        ("upload self-intersecting", upload(corpus("obj", "octahedron_self_intersecting.obj")), 422, "file"),
+        ("upload empty", upload(b""), 422, "file"),
+        ("upload binary junk", upload(b"\x01\x02\xff\xfe junk", "junk"), 422, "file"),
+        ("upload format ply", http("POST", "/api/meshes?format=ply", CUBE_OBJ), 422, "format"),
+        ("upload open cube", upload(CUBE_OBJ[:CUBE_OBJ.rfind(b"f ")]), 422, "file"),
+        ("upload cube", upload(CUBE_OBJ, "cube.obj"), 201, None),
+        ("direction 1e308", post_job(job(light={"direction": [1e308, 1e308, -1e308]})), 202, None),
+        ("form-encoded job", post_job(job(), "application/x-www-form-urlencoded"), 202, None),
+    ]
+
+
+def check_problem(name, status, headers, body, field):
+    if status < 400:
+        return
+    if not headers.get("content-type", "").startswith("application/problem+json"):
+        fail(name, "content type %r, not problem+json" % headers.get("content-type"))
+    try:
+        doc = json.loads(body)
+    except ValueError:
+        return fail(name, "the problem is not JSON: %r" % body[:200])
+    if doc.get("status") != status or not doc.get("detail"):
+        fail(name, "problem %.300r" % doc)
+    if field and doc.get("field") != field:
+        fail(name, "problem names field %r, not %r: %.300r" % (doc.get("field"), field, doc))
+    if len(body) > 2000:
+        fail(name, "the problem is %d bytes long: it echoes the input" % len(body))
+
+
+failures = []
+
+
+def fail(name, why):
+    failures.append("%s: %s" % (name, why))
+    print("FAIL %s: %s" % (name, why))
+
+
+def healthz_fast(server, name):
+    start = time.time()
+    try:
+        status = server.request(http("GET", "/healthz"), timeout=1)[0]
+    except OSError as e:
+        return fail(name, "/healthz did not answer within 1 s afterwards (%s)" % e)
+    if status != 200:
+        fail(name, "/healthz answered %d afterwards" % status)
+    return time.time() - start
+
+
+def job_total(server):
+    return json.loads(server.request(http("GET", "/api/jobs"))[2])["total"]
+
+
+def mesh_total(server):
+    return len(json.loads(server.request(http("GET", "/api/meshes"))[2])["uploaded"])
+
+
+def run_cases(server):
+    n = 0
+    for name, raw, want, field in cases():
+        n += 1
+        start = time.time()
+        try:
+            status, headers, body = server.request(raw)
+        except OSError as e:
+            fail(name, "no response (%s)" % e)
+            continue
+        wanted = want if isinstance(want, set) else {want}
+        if status not in wanted:
+            fail(name, "status %d, expected %s: %s" % (status, sorted(wanted), body[:300]))
+        else:
+            check_problem(name, status, headers, body, field)
+        if status == 405 and "allow" not in headers:
+            fail(name, "405 without Allow")
+        if status == 411 and time.time() - start > 1:
+            fail(name, "411 took %.1f s" % (time.time() - start))
+        healthz_fast(server, name)
+    return n
+
+
+def run_short_bodies(server):
+    """Bodies that stop short of their Content-Length store nothing."""
+    jobs, meshes = job_total(server), mesh_total(server)
+    body = job()
+    # The client half-closes after part of the body: the server sees the end at once.
+    status = server.request(b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                            b"Content-Length: %d\r\n\r\n" % (len(body) + 50) + body, shut_write=True)[0]
+    if status != 400:
+        fail("short job body", "status %d, expected 400" % status)
+    status = server.request(b"POST /api/meshes?name=c.obj HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n"
+                            % (len(CUBE_OBJ) + 10) + CUBE_OBJ, shut_write=True)[0]
+    if status != 400:
+        fail("short mesh body", "status %d, expected 400" % status)
+    # The client goes away mid-body.
+    for raw in (b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % (len(body) + 50) + body,
+                b"POST /api/meshes HTTP/1.1\r\nHost: x\r\nContent-Length: 1000\r\n\r\n" + CUBE_OBJ):
+        s = server.connect()
+        s.sendall(raw)
+        s.close()
+    time.sleep(0.5)
+    healthz_fast(server, "abandoned bodies")
+    if job_total(server) != jobs:
+        fail("short bodies", "a job was stored from an incomplete body")
+    if mesh_total(server) != meshes:
+        fail("short bodies", "a mesh was stored from an incomplete body")
+    return 6
+
+
+def run_slow_clients(server):
+    """4 x --http-threads clients sending a header line every 2 s leave /healthz answering within 1 s; a
+    request that takes longer than --request-timeout is cut; one peer cannot hold more than its share."""
+    slow = []
+    for i in range(4 * HTTP_THREADS):
+        s = server.connect(timeout=30)
+        s.sendall(b"GET /healthz HTTP/1.1\r\nHost: x\r\n")
+        slow.append(s)
+    start = time.time()
+    worst = 0
+    while time.time() - start < REQUEST_TIMEOUT_S - 0.5:
+        for s in slow:
+            s.sendall(b"X-Slow: 1\r\n")
+        worst = max(worst, healthz_fast(server, "slow clients") or 0)
+        time.sleep(0.5)
+    print("  /healthz with %d slow clients: slowest answer %.0f ms" % (len(slow), worst * 1000))
+    # Past the deadline the slow clients are answered (408-like close) or cut off.
+    time.sleep(REQUEST_TIMEOUT_S)
+    for s in slow:
+        try:
+            s.sendall(b"X-Slow: 1\r\n")
+            s.settimeout(2)
+            data = s.recv(100)
+            if data and not data.startswith(b"HTTP/1.1 4"):
+                fail("slow client", "still being served past the deadline: %r" % data[:60])
+        except OSError:
+            pass
+        s.close()
+    # One peer's connections beyond its cap are answered 429 at once.
+    held = [server.connect() for _ in range(MAX_PER_PEER)]
+    time.sleep(0.3)
+    try:
+        status, headers, body = server.request(http("GET", "/healthz"), timeout=2)
+        if status != 429:
+            fail("per-peer cap", "connection %d answered %d, expected 429" % (MAX_PER_PEER + 1, status))
+        else:
+            check_problem("per-peer cap", status, headers, body, None)
+    except OSError as e:
+        fail("per-peer cap", "no answer (%s)" % e)
+    for s in held:
+        s.close()
+    time.sleep(0.3)
+    healthz_fast(server, "after the per-peer cap")
+    return len(slow) + 2
+
+
+def run_log_forgery(server):
+    forged = '2026-01-01T00:00:00Z 6.6.6.6 "GET /forged" 200 0'
+    server.request(http("GET", "/api/jobs%0a" + forged.replace(" ", "%20").replace('"', "%22")))
+    time.sleep(0.2)
+    with open(server.log_path, "rb") as f:
+        log = f.read().decode("latin-1")
+    if any(line.startswith(forged) for line in log.splitlines()):
+        fail("access log", "a %0a in the path forged a log line")
+    return 1
+
+
+def run_storage_guard(binary, work):
+    """A disk with less than --min-free left refuses new jobs and uploads with 507 and keeps answering."""
+    server = Server(binary, os.path.join(work, "full"), "--min-free", str(10 ** 18))
+    try:
+        for name, raw in (("job on a full disk", post_job(job())), ("upload on a full disk", upload(CUBE_OBJ))):
+            status, headers, body = server.request(raw)
+            if status != 507:
+                fail(name, "status %d, expected 507: %s" % (status, body[:200]))
+            else:
+                check_problem(name, status, headers, body, None)
+            healthz_fast(server, name)
+        if json.loads(server.request(http("GET", "/api/jobs"))[2])["total"] != 0:
+            fail("full disk", "a job was stored")
+    finally:
+        server.stop()
+    return 3
+
+
+def main():
+    binary = sys.argv[1]
+    work = tempfile.mkdtemp()
+    os.makedirs(os.path.join(work, "meshes"))
+    os.makedirs(os.path.join(work, "web"))
+    with open(os.path.join(work, "web", "index.html"), "w") as f:
+        f.write("<!doctype html><title>facetlight</title>")
+    server = Server(binary, work)
+    try:
+        total = run_cases(server)
+        total += run_short_bodies(server)
+        total += run_log_forgery(server)
+        total += run_slow_clients(server)
+        if server.proc.poll() is not None:
+            fail("server", "exited with %s" % server.proc.returncode)
+    finally:
+        server.stop()
+    try:
+        total += run_storage_guard(binary, work)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    print("%d hostile requests, %d failures" % (total, len(failures)))
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()

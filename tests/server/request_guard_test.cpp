@@ -1,0 +1,102 @@
+#include <gtest/gtest.h>
+
+#include "request_guard.h"
+
+using namespace facetlight::server;
+
+namespace {
+
+const RequestRules& rules() {
+    static const RequestRules r{{{"GET", "/healthz"},
+                                 {"GET", "/api/jobs"},
+                                 {"POST", "/api/jobs"},
+                                 {"GET", "/api/jobs/{id}"},
+                                 {"DELETE", "/api/jobs/{id}"},
+                                 {"POST", "/api/jobs/{id}/cancel"},
+                                 {"POST", "/api/meshes"}},
+                                100,
+                                [](const std::string& path) { return path == "/api/meshes" ? 5000 : 1000; },
+                                {"POST /api/jobs", "POST /api/meshes"}};
+    return r;
+}
+
+const std::string kId = "0123456789abcdef0123456789abcdef";
+
+httplib::Request request(std::string method, std::string path,
+                         std::vector<std::pair<std::string, std::string>> headers = {}) {
+    httplib::Request req;
+    req.method = std::move(method);
+    req.path = path;
+    req.target = path;
+    for (auto& [k, v] : headers) req.headers.emplace(k, v);
+    return req;
+}
+
+int statusOf(const httplib::Request& req) {
+    const auto r = checkRequest(req, rules());
+    return r ? r->status : 0;
+}
+
+}  // namespace
+
+TEST(RequestGuard, OrdinaryRequestsPass) {
+    EXPECT_EQ(statusOf(request("GET", "/healthz")), 0);
+    EXPECT_EQ(statusOf(request("GET", "/api/jobs/" + kId)), 0);
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "10"}})), 0);
+    EXPECT_EQ(statusOf(request("POST", "/api/meshes", {{"Content-Length", "5000"}})), 0);
+    // `curl -X POST` sends no Content-Length, and cancel takes no body.
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs/" + kId + "/cancel")), 0);
+    EXPECT_EQ(statusOf(request("GET", "/index.html")), 0);  // not an API route: static files or 404
+    // The same length twice is not a conflict.
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "10"}, {"content-length", "10"}})), 0);
+}
+
+TEST(RequestGuard, ContentLengthMustBeOneWholeNumber) {
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "abc"}})), 400);
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "-1"}})), 400);
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", ""}})), 400);
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "99999999999999999999"}})), 400);
+    // Request smuggling: two different lengths.
+    const auto twice = checkRequest(request("POST", "/api/jobs", {{"Content-Length", "5"}, {"Content-Length", "50"}}),
+                                    rules());
+    ASSERT_TRUE(twice);
+    EXPECT_EQ(twice->status, 400);
+    EXPECT_EQ(twice->detail, "the request has two different Content-Length headers");
+}
+
+TEST(RequestGuard, BodiesNeedALengthWithinTheRoutesLimit) {
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs")), 411);
+    EXPECT_EQ(statusOf(request("POST", "/api/meshes")), 411);
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Transfer-Encoding", "chunked"}})), 411);
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "1001"}})), 413);
+    EXPECT_EQ(statusOf(request("POST", "/api/meshes", {{"Content-Length", "5001"}})), 413);
+    EXPECT_EQ(statusOf(request("GET", "/healthz", {{"Content-Length", "1001"}})), 413);
+}
+
+TEST(RequestGuard, WrongMethodIs405WithAllow) {
+    const auto r = checkRequest(request("PUT", "/api/jobs/" + kId), rules());
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 405);
+    ASSERT_FALSE(r->headers.empty());
+    EXPECT_EQ(r->headers[0], (std::pair<std::string, std::string>{"Allow", "DELETE, GET, HEAD"}));
+    EXPECT_EQ(statusOf(request("POST", "/healthz")), 405);
+    EXPECT_EQ(statusOf(request("DELETE", "/api/jobs")), 405);
+    EXPECT_EQ(statusOf(request("GET", "/api/jobs/" + kId + "/cancel")), 405);
+    EXPECT_EQ(statusOf(request("HEAD", "/healthz")), 0);
+    EXPECT_EQ(methodsAllowed(rules().routes, "/api/jobs/not-an-id"), std::vector<std::string>{});
+    EXPECT_EQ(methodsAllowed(rules().routes, "/api/jobs/" + kId + "/cancel/x"), std::vector<std::string>{});
+}
+
+TEST(RequestGuard, PathsWithControlCharactersOrTooLongAreRefused) {
+    EXPECT_EQ(statusOf(request("GET", std::string("/index.html\0.js", 15))), 400);
+    EXPECT_EQ(statusOf(request("GET", "/api/jobs\n200 OK")), 400);
+    EXPECT_EQ(statusOf(request("GET", "/" + std::string(100, 'a'))), 414);
+}
+
+TEST(RequestGuard, LogLinesCannotBeForged) {
+    EXPECT_EQ(escapeForLog("/api/jobs\n2026-01-01 127.0.0.1 \"GET /\" 200"),
+              "/api/jobs\\x0a2026-01-01 127.0.0.1 \\x22GET /\\x22 200");
+    EXPECT_EQ(escapeForLog(std::string("a\0b", 3)), "a\\x00b");
+    EXPECT_EQ(escapeForLog("\xc3\xa9"), "\\xc3\\xa9");
+    EXPECT_EQ(escapeForLog(std::string(300, 'a'), 200), std::string(200, 'a') + "...");
+}
