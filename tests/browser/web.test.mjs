@@ -445,6 +445,8 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const order = await page.$$eval('.compare-card', (cs) => cs.map((c) => c.dataset.id));
     const cards = await page.$$eval('.viewer-card', (cs) => cs.map((c) => c.dataset.id));
     assert.deepEqual(cards, order, 'the viewer cards in the ranking\'s order');
+    // The pictures load lazily, as they come near the window.
+    await page.locator('[data-section="viewer-compare"] .compare-grid').scrollIntoViewIfNeeded();
     const pics = await picturesLoaded('[data-section="viewer-compare"]');
     for (const p of pics) assert.ok(p.width > 0, `${p.src} did not load`);
     const picsOf = async (id) => page.$$eval(`.viewer-card[data-id="${id}"] img`, (imgs) => imgs.map((i) => i.getAttribute('src').split('/').pop()));
