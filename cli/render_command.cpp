@@ -28,6 +28,8 @@ struct RenderOptions {
     AsetSettings asetSettings;
     double tiltSeries = 0;
     TiltSeriesSettings tilt;
+    bool firePicture = false;
+    SettingsFlags firePictureFlags;
 };
 
 void run(RenderOptions& o) {
@@ -38,6 +40,10 @@ void run(RenderOptions& o) {
     if (o.aset) {
         o.asetSettings.validate();
         settings.aset = o.asetSettings;
+    }
+    if (o.firePicture || o.firePictureFlags.given()) {
+        settings.firePicture.emplace();
+        o.firePictureFlags.apply(firePictureSettingsSchema(), *settings.firePicture);
     }
     if (o.tiltSeries > 0) {
         o.tilt.maxDeg = o.tiltSeries;
@@ -95,6 +101,12 @@ void addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     cmd->add_flag("--aset-white-leakage", o->asetSettings.whiteLeakage,
                   "ASET: draw leakage white, not black");
+    cmd->add_flag(
+        "--fire-picture", o->firePicture,
+        "Also write fire.png: the stone under a small bright light in spectral colour, its flashes of "
+        "fire (docs/physics.md); any --fire-picture-* flag implies it");
+    o->firePictureFlags.add(cmd, firePictureSettingsSchema().fields(), toJson(FirePictureSettings{}),
+                            "fire_picture");
     cmd->add_option("--tilt-series", o->tiltSeries,
                     "Rock the stone from -DEG to +DEG about x in ASET views: tilt.webp (animation), tilt.png "
                     "(light return against tilt) and the scintillation");

@@ -3,6 +3,7 @@
 // help, unit and the defaults shown. The flags given are read through the same schema as JSON, so the CLI
 // checks exactly what the service checks; errors name the flag. Header-only: the CLI's build takes its
 // sources from cli/*_command.cpp.
+#include <algorithm>
 #include <charconv>
 #include <sstream>
 #include <string>
@@ -40,6 +41,11 @@ class SettingsFlags {
                     throw Error(f.field->doc.flag, message(f, e.what()));
             throw;
         }
+    }
+
+    // Whether any of its flags was given.
+    bool given() const {
+        return std::any_of(flags_.begin(), flags_.end(), [](const Flag& f) { return f.option->count() > 0; });
     }
 
   private:

@@ -32,10 +32,12 @@ void forEachField(const std::vector<FieldInfo>& fields, const std::string& path,
     }
 }
 
-// Every leaf of a job: the trace settings at the top, the render settings under "render".
+// Every leaf of a job: the trace settings at the top, the render settings under "render", the fire picture's
+// under "fire_picture".
 void forEachJobField(const std::function<void(const std::string&, const FieldInfo&)>& visit) {
     forEachField(traceSettingsSchema().fields(), "", visit);
     forEachField(renderSettingsSchema().fields(), "render", visit);
+    forEachField(firePictureSettingsSchema().fields(), "fire_picture", visit);
 }
 
 json::json_pointer pointer(const std::string& path) {
@@ -94,6 +96,8 @@ TEST(SettingsSchema, ABadValueInEachFieldNamesItsDottedPath) {
     EXPECT_EQ(errorField({{"mesh", "m"}, {"material", "unobtainium"}, {"n", 2}}), "no error");
     EXPECT_EQ(errorField({{"mesh", 3}}), "mesh");
     EXPECT_EQ(errorField({{"mesh", "m"}, {"render", "yes"}}), "render");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"fire_picture", true}, {"render", true}}), "fire_picture");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"fire_picture", json::object()}}), "fire_picture");  // no render
 }
 
 TEST(SettingsSchema, IntegerRangesAreExact) {
@@ -123,6 +127,7 @@ TEST(SettingsSchema, JsonRoundTrip) {
     t.intersector = IntersectorKind::Embree;
     t.light = {LightModelKind::Point, {1, 2, -3}, 12.5, 30, SkyKind::Cosine, {4, 5, 60}};
     spec.settings.render = RenderSettings{64, 48, 2, 5, 5000, {45, -30, 6, 33}};
+    spec.settings.firePicture = FirePictureSettings{7, 35, 2.5, 0.1};
     const json written = toJson(spec);
     const StudySpec back = StudySpec::fromJson(written);
     EXPECT_EQ(toJson(back), written);
@@ -133,9 +138,11 @@ TEST(SettingsSchema, JsonRoundTrip) {
         ASSERT_TRUE(written.contains(pointer(path))) << path;
         StudySpec defaults;
         defaults.settings.render.emplace();
+        defaults.settings.firePicture.emplace();
         EXPECT_NE(written[pointer(path)], toJson(defaults)[pointer(path)]) << path;
     });
     spec.settings.render.reset();
+    spec.settings.firePicture.reset();
     EXPECT_EQ(toJson(StudySpec::fromJson(toJson(spec))), toJson(spec));
 }
 
@@ -145,6 +152,8 @@ TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
     cli::addTraceOptions(&app, trace);
     cli::SettingsFlags render;
     render.add(&app, renderSettingsSchema().fields(), toJson(RenderSettings{}), "render");
+    cli::SettingsFlags fire;
+    fire.add(&app, firePictureSettingsSchema().fields(), toJson(FirePictureSettings{}), "fire_picture");
     std::set<std::string> flags;
     forEachJobField([&](const std::string& path, const FieldInfo& f) {
         EXPECT_NE(app.get_option_no_throw(f.doc.flag), nullptr) << path;
@@ -225,7 +234,7 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     const json& job = api["components"]["schemas"]["JobRequest"];
     const json& properties = job["properties"];
     // The viewer's views (aset, tilt_series) have readers of their own (render/view_settings.h), not tables yet.
-    std::set<std::string> keys = {"mesh", "name", "render", "aset", "tilt_series"};
+    std::set<std::string> keys = {"mesh", "name", "render", "aset", "tilt_series", "fire_picture"};
     for (const FieldInfo& f : traceSettingsSchema().fields()) {
         keys.insert(f.key);
         ASSERT_TRUE(properties.contains(f.key)) << f.key;
@@ -237,6 +246,9 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     FieldInfo render = settings::describe("render", FieldType::Object);
     render.fields = &renderSettingsSchema().fields();
     expectOpenApiAgrees(properties["render"]["oneOf"][1], render, "render");
+    FieldInfo fire = settings::describe("fire_picture", FieldType::Object);
+    fire.fields = &firePictureSettingsSchema().fields();
+    expectOpenApiAgrees(properties["fire_picture"], fire, "fire_picture");
 }
 
 }  // namespace
