@@ -26,6 +26,8 @@ struct RenderOptions {
     std::string out = ".";
     bool aset = false;
     SettingsFlags asetFlags, tiltFlags;
+    bool firePicture = false;
+    SettingsFlags firePictureFlags;
 };
 
 void run(RenderOptions& o) {
@@ -37,6 +39,10 @@ void run(RenderOptions& o) {
     if (o.aset || o.asetFlags.given()) {
         settings.aset.emplace();
         o.asetFlags.apply(asetSettingsSchema(), *settings.aset);
+    }
+    if (o.firePicture || o.firePictureFlags.given()) {
+        settings.firePicture.emplace();
+        o.firePictureFlags.apply(firePictureSettingsSchema(), *settings.firePicture);
     }
     if (o.tiltFlags.given()) {
         settings.tiltSeries.emplace();
@@ -86,6 +92,12 @@ void addRenderCommand(CLI::App& app) {
                   "any --aset-... flag implies it");
     o->asetFlags.add(cmd, asetSettingsSchema().fields(), toJson(AsetSettings{}), "aset");
     o->tiltFlags.add(cmd, tiltSeriesSettingsSchema().fields(), toJson(TiltSeriesSettings{}), "tilt_series");
+    cmd->add_flag(
+        "--fire-picture", o->firePicture,
+        "Also write fire.png: the stone under a small bright light in spectral colour, its flashes of "
+        "fire (docs/physics.md); any --fire-picture-* flag implies it");
+    o->firePictureFlags.add(cmd, firePictureSettingsSchema().fields(), toJson(FirePictureSettings{}),
+                            "fire_picture");
     cmd->add_option("--out", o->out, "Folder for the pictures and statistics (created if missing)")
         ->capture_default_str();
     cmd->callback([o] { run(*o); });

@@ -3,6 +3,7 @@
 // help, unit and the defaults shown. The flags given are read through the same schema as JSON, so the CLI
 // checks exactly what the service checks; errors name the flag. Header-only: the CLI's build takes its
 // sources from cli/*_command.cpp.
+#include <algorithm>
 #include <charconv>
 #include <sstream>
 #include <string>

@@ -1,7 +1,6 @@
 #pragma once
-// Colour from wavelengths: the CIE 1931 2-degree colour matching functions (the multi-lobe Gaussian fit of
-// Wyman, Sloan & Shirley, "Simple Analytic Approximations to the CIE XYZ Color Matching Functions", JCGT
-// 2(2), 2013), XYZ to linear sRGB (IEC 61966-2-1) and the sRGB transfer curve.
+// Colour from wavelengths: the CIE 1931 2-degree colour matching functions (the CIE's table every 10 nm,
+// interpolated), XYZ to linear sRGB (IEC 61966-2-1) and the sRGB transfer curve.
 #include <vector>
 
 #include "geometry/geometry.h"
@@ -11,6 +10,7 @@ namespace facetlight {
 // The visible range the tracer draws photon wavelengths from.
 constexpr double kMinWavelength = 380, kMaxWavelength = 780;
 
+// x-bar, y-bar, z-bar at a wavelength; 0 outside 380-780 nm.
 Vec3 cieXyz(double wavelengthNm);
 Vec3 xyzToLinearSrgb(const Vec3& xyz);
 // Linear [0, 1] to the sRGB-encoded [0, 1] value (clamped).

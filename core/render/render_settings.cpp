@@ -48,4 +48,28 @@ nlohmann::json toJson(const RenderSettings& s) {
     return renderSettingsSchema().write(s);
 }
 
+const Schema<FirePictureSettings>& firePictureSettingsSchema() {
+    static const Schema<FirePictureSettings> schema({
+        count("wavelengths", &FirePictureSettings::wavelengths, 1, kMaxFireWavelengths,
+              {"--fire-picture-wavelengths",
+               "Fire picture: wavelengths per pixel, stratified over 380-730 nm"}),
+        number("light_tilt_deg", &FirePictureSettings::lightTiltDeg, {.lo = 0, .hi = 89},
+               {"--fire-picture-light-tilt", "Fire picture: the light's angle from the vertical", "degrees"}),
+        number(
+            "light_radius_deg", &FirePictureSettings::lightRadiusDeg, {.lo = 0.05, .hi = 20},
+            {"--fire-picture-light-radius", "Fire picture: angular radius of the light's disc", "degrees"}),
+        number("ambient", &FirePictureSettings::ambient, {.lo = 0, .hi = 1},
+               {"--fire-picture-ambient", "Fire picture: the dim room's light, a share of the studio's"}),
+    });
+    return schema;
+}
+
+FirePictureSettings FirePictureSettings::fromJson(const nlohmann::json& j) {
+    return firePictureSettingsSchema().read(j, "fire_picture");
+}
+
+nlohmann::json toJson(const FirePictureSettings& s) {
+    return firePictureSettingsSchema().write(s);
+}
+
 }  // namespace facetlight

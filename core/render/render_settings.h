@@ -28,6 +28,18 @@ struct RenderSettings {
     static RenderSettings fromJson(const nlohmann::json& j);
 };
 
+// The fire picture (render/fire_picture.h): the stone through the render's camera under one small bright
+// light in a dim room, in spectral colour. Its job key is "fire_picture", apart from the fire measurement's.
+struct FirePictureSettings {
+    int wavelengths = 24;       // per pixel, one in each of as many equal strata of 380-730 nm
+    double lightTiltDeg = 20;   // the light's angle from the vertical, leaning toward -y (the viewer's side)
+    double lightRadiusDeg = 4;  // angular radius of the light's disc: a 14 cm lamp 1 m away
+    double ambient = 0.02;      // the dim room: the studio environment's light times this
+
+    // Missing keys keep their defaults; throws Error naming the field ("fire_picture.wavelengths").
+    static FirePictureSettings fromJson(const nlohmann::json& j);
+};
+
 constexpr int kMinImageSide = 16;
 constexpr int kMaxImageSide = 4096;
 constexpr int kMaxSamples = 256;
@@ -36,5 +48,10 @@ constexpr int kMaxDepth = 64;
 // Its paths start with "render.", where a job holds it.
 const settings::Schema<RenderSettings>& renderSettingsSchema();
 nlohmann::json toJson(const RenderSettings& s);
+
+constexpr int kMaxFireWavelengths = 256;
+// Its paths start with "fire_picture.", where a job holds it.
+const settings::Schema<FirePictureSettings>& firePictureSettingsSchema();
+nlohmann::json toJson(const FirePictureSettings& s);
 
 }  // namespace facetlight

@@ -4,8 +4,8 @@
 #include <array>
 #include <cmath>
 
-#include "optics/fresnel.h"
 #include "optics/spectrum.h"
+#include "render/detail/sample_tracer.h"
 #include "util/error.h"
 #include "util/parallel.h"
 #include "util/random.h"
@@ -14,9 +14,6 @@ namespace facetlight {
 namespace {
 
 constexpr int kTile = 16;
-// A branch of the ray tree is followed both ways at an interface while both weights stay above this; below
-// it one way is chosen with the Fresnel probabilities (unbiased, and the tree stays small).
-constexpr double kBranchWeight = 0.05;
 
 // Everything a worker reads: shared, constant.
 struct Context {
@@ -35,102 +32,27 @@ struct Worker {
     std::array<Neighbor, kCausticNeighbors> neighbors;
 };
 
-struct Branch {
-    Vec3 origin, dir;
-    double weight;
-    int depth;
-    bool inside;
-    // Whether the path went through the stone with a wavelength-dependent index. Until it has, its light does
-    // not depend on the sample's band: it is counted as white (1 / samples per sample), free of colour noise.
-    bool spectral;
-};
-
-class SampleTracer {
+// The studio around the stone: the floor, lit by the direct light and the caustic photon map, and the
+// studio environment above it.
+class Studio {
   public:
-    SampleTracer(const Context& c, Worker& w, Rng& rng) : c_(c), w_(w), rng_(rng) {}
+    Studio(const Context& c, Worker& w) : c_(c), w_(w) {}
 
-    // Radiance (linear sRGB) along a camera ray for wavelength band `band` with refractive index n.
-    Vec3 trace(const Vec3& origin, const Vec3& dir, int band, double n) {
-        const Vec3& bandColour = c_.bands.colour(band);
-        const Vec3 white = Vec3{1, 1, 1} * c_.causticScale;
-        const double diameter = c_.scene.diameter();
-        const int maxDepth = c_.settings.maxDepth;
-        std::array<Branch, 2 * kMaxDepth + 2> stack;
-        int top = 0;
-        stack[top++] = {origin, dir, 1.0, 0, false, false};
-        Vec3 sum;
-        while (top > 0) {
-            const Branch b = stack[--top];
-            SurfaceHit hit;
-            if (!b.inside) {
-                double tFloor = INFINITY;
-                const bool floor = c_.scene.hitFloor(b.origin, b.dir, tFloor);
-                const bool stone = c_.scene.enter(Vec3f(b.origin), Vec3f(b.dir), hit) && hit.t < tFloor;
-                if (!stone) {
-                    const Vec3& colour = b.spectral ? bandColour : white;
-                    if (floor) {
-                        sum += floorRadiance(b.origin + b.dir * tFloor, colour) * b.weight;
-                    } else {
-                        sum += colour * (b.weight * Scene::environment(c_.scene.toWorld(b.dir), c_.toViewer));
-                    }
-                    continue;
-                }
-                if (b.depth >= maxDepth) continue;
-                const Vec3 p = b.origin + b.dir * double(hit.t);
-                const Vec3f& nf = c_.scene.normal(hit.facet);
-                const Vec3 normal{nf.x, nf.y, nf.z};
-                const double cosI = std::clamp(-dot(b.dir, normal), 0.0, 1.0);
-                const double eta = 1 / n;
-                const FresnelResult fr = fresnel(float(cosI), float(eta));
-                const Vec3 reflected = b.dir + normal * (2 * cosI);
-                const Vec3 refracted = normalize(b.dir * eta + normal * (eta * cosI - fr.cosT));
-                split(stack, top, b, fr.reflectance,
-                      {p + reflected * (1e-6 * diameter), reflected, 0, 0, false, false},
-                      {p, refracted, 0, 0, true, false});
-            } else {
-                if (!c_.scene.leave(Vec3f(b.origin), Vec3f(b.dir), hit) || b.depth >= maxDepth) continue;
-                const Vec3 p = b.origin + b.dir * double(hit.t);
-                const Vec3f& nf = c_.scene.normal(hit.facet);
-                const Vec3 normal{nf.x, nf.y, nf.z};
-                const double cosI = std::clamp(dot(b.dir, normal), 0.0, 1.0);
-                const FresnelResult fr = fresnel(float(cosI), float(n));
-                const Vec3 reflected = b.dir - normal * (2 * cosI);
-                if (fr.totalInternal) {
-                    stack[top++] = {p, reflected, b.weight, b.depth + 1, true, b.spectral};
-                    continue;
-                }
-                const Vec3 out = normalize(b.dir * n - normal * (n * cosI - fr.cosT));
-                split(stack, top, b, fr.reflectance, {p, reflected, 0, 0, true, false},
-                      {p + out * (1e-6 * diameter), out, 0, 0, false, false});
-            }
-        }
-        return sum;
+    bool stoneFirst(const Vec3& origin, const Vec3& dir, double t) const {
+        double tFloor = INFINITY;
+        return !c_.scene.hitFloor(origin, dir, tFloor) || t < tFloor;
+    }
+
+    Vec3 radiance(const Vec3& origin, const Vec3& dir, const Vec3& colour, double weight, Rng& rng) {
+        double tFloor = INFINITY;
+        if (c_.scene.hitFloor(origin, dir, tFloor))
+            return floorRadiance(origin + dir * tFloor, colour, rng) * weight;
+        return colour * (weight * Scene::environment(c_.scene.toWorld(dir), c_.toViewer));
     }
 
   private:
-    // Pushes the reflected and transmitted continuations of b, both when they carry enough weight, else one
-    // chosen with probability R (reflection) or 1 - R.
-    template <size_t N>
-    void split(std::array<Branch, N>& stack, int& top, const Branch& b, double r, Branch reflected,
-               Branch transmitted) {
-        reflected.depth = transmitted.depth = b.depth + 1;
-        const bool dispersive = c_.scene.dispersive();
-        reflected.spectral = b.spectral || (reflected.inside && dispersive);
-        transmitted.spectral = b.spectral || (transmitted.inside && dispersive);
-        if (b.weight * std::min(r, 1 - r) > kBranchWeight && top + 2 <= int(N)) {
-            reflected.weight = b.weight * r;
-            transmitted.weight = b.weight * (1 - r);
-            stack[top++] = reflected;
-            stack[top++] = transmitted;
-        } else {
-            Branch& chosen = rng_.uniformDouble() < r ? reflected : transmitted;
-            chosen.weight = b.weight;
-            stack[top++] = chosen;
-        }
-    }
-
-    Vec3 floorRadiance(const Vec3& p, const Vec3& colour) {
-        Vec3 irradiance = colour * c_.scene.directIrradiance(p, rng_);
+    Vec3 floorRadiance(const Vec3& p, const Vec3& colour, Rng& rng) {
+        Vec3 irradiance = colour * c_.scene.directIrradiance(p, rng);
         if (!c_.caustics.empty()) {
             irradiance +=
                 c_.caustics.estimate<Vec3>(p, w_.neighbors, w_.gatherState, c_.gather,
@@ -148,7 +70,6 @@ class SampleTracer {
 
     const Context& c_;
     Worker& w_;
-    Rng& rng_;
 };
 
 struct TileRect {
@@ -235,6 +156,7 @@ RenderedImage render(const Scene& scene, const PhotonMap& caustics, const Render
     const int tiles = shareTileCount(tileCount(settings.width, settings.height), share);
     const Vec3 eye = scene.toStone(camera.position());
     const double fixedIndex = scene.index(Material::kSodiumD);
+    const Vec3 white = Vec3{1, 1, 1} * context.causticScale;
 
     const WorkerStates<Worker> workers = parallelForBlocks(
         BlockLoop{0, uint64_t(tiles), 1, threads}, control, Worker{},
@@ -245,7 +167,8 @@ RenderedImage render(const Scene& scene, const PhotonMap& caustics, const Render
                 for (int x = x0; x < x1; ++x) {
                     const uint64_t index = uint64_t(y) * uint64_t(settings.width) + uint64_t(x);
                     Rng rng(mix64(seed ^ 0x52454e444552ULL), index);
-                    SampleTracer tracer(context, worker, rng);
+                    Studio studio(context, worker);
+                    detail::SampleTracer tracer(scene, settings.maxDepth, studio, rng);
                     Vec3 sum;
                     for (int s = 0; s < settings.samples; ++s) {
                         const double px = x + rng.uniformDouble(), py = y + rng.uniformDouble();
@@ -255,7 +178,7 @@ RenderedImage render(const Scene& scene, const PhotonMap& caustics, const Render
                         const double n =
                             scene.dispersive() ? scene.index(context.bands.wavelength(s, u)) : fixedIndex;
                         const Vec3 dir = scene.toStone(camera.direction(px, py));
-                        sum += tracer.trace(eye, dir, s, n);
+                        sum += tracer.trace(eye, dir, n, context.bands.colour(s), white);
                     }
                     image.pixels[index] = sum;
                 }

@@ -2,12 +2,15 @@
 
 namespace facetlight {
 
-const std::array<ResultFile, 9> kResultFiles{{
+const std::array<ResultFile, 10> kResultFiles{{
     {"stats.csv", "text/csv", "stats.csv", "stats_csv", "", [](const StudyResult& r) { return r.statsCsv; },
      [](StudyResult& r, std::string&& b) { r.statsCsv = std::move(b); }},
     {"render.png", "image/png", "render.png", "render", "render",
      [](const StudyResult& r) { return r.renderPng; },
      [](StudyResult& r, std::string&& b) { r.renderPng = std::move(b); }},
+    {"fire.png", "image/png", "fire.png", "fire_picture", "fire_picture",
+     [](const StudyResult& r) { return r.firePng; },
+     [](StudyResult& r, std::string&& b) { r.firePng = std::move(b); }},
     {"heatmap.png", "image/png", "heatmap.png", "heatmap", "render",
      [](const StudyResult& r) { return r.heatmapPng; },
      [](StudyResult& r, std::string&& b) { r.heatmapPng = std::move(b); }},

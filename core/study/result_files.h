@@ -15,12 +15,13 @@ struct ResultFile {
     std::string_view route;                           // under the service's /api/jobs/{id}/
     std::string_view link;                            // its name among a finished job's links
     std::string_view needs;                           // linked only when the job's request has this key
-                                                      // as an object ("render", "aset"); empty: always
+                                                      // as an object ("render", "aset",
+                                                      // "fire_picture"); empty: always
     std::string (*bytes)(const StudyResult&);         // empty: the study made none
     void (*load)(StudyResult&, std::string&& bytes);  // the inverse
 };
 
 // In the order they are written: stats.json last, so that its presence says a folder is complete.
-extern const std::array<ResultFile, 9> kResultFiles;
+extern const std::array<ResultFile, 10> kResultFiles;
 
 }  // namespace facetlight

@@ -13,6 +13,7 @@
 #include "pictures/tilt_chart.h"
 #include "pictures/webp_animation.h"
 #include "render/aset.h"
+#include "render/fire_picture.h"
 #include "render/renderer.h"
 #include "render/tilt_series.h"
 #include "trace/distributed_trace.h"
@@ -29,9 +30,11 @@ void enterPhase(RunControl& control, RunPhase phase, uint64_t total) {
     control.startPhase(phase, total);
 }
 
-// The ASET views a study draws after its render: the face-up one and the tilt series' frames.
+// The pictures of the render's size a study draws after its render: the fire picture, the face-up ASET view
+// and the tilt series' frames.
 int viewCount(const StudySettings& settings) {
-    return (settings.aset ? 1 : 0) + (settings.tiltSeries ? settings.tiltSeries->frames() : 0);
+    return (settings.firePicture ? 1 : 0) + (settings.aset ? 1 : 0) +
+           (settings.tiltSeries ? settings.tiltSeries->frames() : 0);
 }
 
 }  // namespace
@@ -43,7 +46,7 @@ uint64_t studyUnits(const StudySettings& settings, RunPhase phase) {
         case RunPhase::PhotonMap:
             return settings.render ? settings.render->mapPhotons : 0;
         case RunPhase::Rendering:
-            // The render's pixels, and as many again for the ASET view and each tilt frame.
+            // The render's pixels, and as many again for the fire picture, the ASET view and each tilt frame.
             return settings.render ? uint64_t(settings.render->width) * uint64_t(settings.render->height) *
                                          uint64_t(1 + viewCount(settings))
                                    : 0;
@@ -67,6 +70,8 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
             throw Error("aset must come with a render: it is seen through the render's camera");
         settings.aset->validate();
     }
+    if (settings.firePicture && !settings.render)
+        throw Error("fire_picture must come with a render: it is seen through the render's camera");
     if (settings.tiltSeries) {
         if (!settings.render)
             throw Error("tilt_series must come with a render: it is seen through the render's camera");
@@ -115,6 +120,13 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
     if (image.cancelled || control.cancelled()) throw Canceled();
     if (!comm.isRoot()) return result;
     result.renderPng = encodePng(toDisplay(image));
+    if (settings.firePicture) {
+        // Rank 0 alone, like the views below.
+        const FirePicture fire =
+            firePicture(scene, r, *settings.firePicture, threads, settings.trace.seed, &control);
+        if (fire.cancelled || control.cancelled()) throw Canceled();
+        result.firePng = encodePng(toDisplay(fire));
+    }
     if (settings.aset) {
         // Rank 0 alone: a few view rays per pixel, far cheaper than the render.
         const AsetView view = asetView(scene, r.camera, r.width, r.height, *settings.aset, threads,

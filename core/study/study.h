@@ -24,6 +24,9 @@ struct StudySettings {
     // The stone rocked through a tilt series of ASET views (needs a render; the ASET settings or their
     // defaults): tilt.webp, tilt.png and stats "tilt_series".
     std::optional<TiltSeriesSettings> tiltSeries;
+    // The stone through the render's camera under a small bright light in true spectral colour (needs a
+    // render): fire.png.
+    std::optional<FirePictureSettings> firePicture;
 };
 
 struct StudyResult {
@@ -33,6 +36,7 @@ struct StudyResult {
     std::string heatmapLayout;  // heatmap.png's facets in pixels (JSON, docs/stats-schema.md), with it
     std::string asetPng;        // with an ASET view
     std::string tiltWebp, tiltChartPng;  // with a tilt series: the animation and light return against tilt
+    std::string firePng;                 // with a fire picture
 };
 
 // Builds one Scene for every phase and runs them, each reporting to `control` (RunPhase::Tracing, PhotonMap,

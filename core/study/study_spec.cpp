@@ -10,7 +10,8 @@ StudySpec StudySpec::fromJson(const nlohmann::json& j, StudySpec spec) {
     spec.mesh = settings::readText(j["mesh"], "mesh");
     if (j.contains("name")) spec.name = settings::readText(j["name"], "name");
     nlohmann::json trace = j;
-    for (const char* key : {"mesh", "name", "render", "aset", "tilt_series"}) trace.erase(key);
+    for (const char* key : {"mesh", "name", "render", "aset", "tilt_series", "fire_picture"})
+        trace.erase(key);
     if (const auto r = j.find("render"); r != j.end()) {
         if (r->is_object()) {
             spec.settings.render = renderSettingsSchema().read(*r, "render");
@@ -23,7 +24,9 @@ StudySpec StudySpec::fromJson(const nlohmann::json& j, StudySpec spec) {
     // The viewer's views (docs/physics.md): objects of their settings, each seen through the render's camera.
     if (j.contains("aset")) spec.settings.aset = AsetSettings::fromJson(j["aset"]);
     if (j.contains("tilt_series")) spec.settings.tiltSeries = TiltSeriesSettings::fromJson(j["tilt_series"]);
-    for (const char* view : {"aset", "tilt_series"}) {
+    if (j.contains("fire_picture"))
+        spec.settings.firePicture = firePictureSettingsSchema().read(j["fire_picture"], "fire_picture");
+    for (const char* view : {"aset", "tilt_series", "fire_picture"}) {
         if (j.contains(view) && !spec.settings.render)
             throw Error(view, std::string(view) + " must come with render: set render to true or an object");
     }
@@ -38,6 +41,7 @@ nlohmann::json toJson(const StudySpec& spec) {
     j["render"] = spec.settings.render ? toJson(*spec.settings.render) : nlohmann::json(false);
     if (spec.settings.aset) j["aset"] = toJson(*spec.settings.aset);
     if (spec.settings.tiltSeries) j["tilt_series"] = toJson(*spec.settings.tiltSeries);
+    if (spec.settings.firePicture) j["fire_picture"] = toJson(*spec.settings.firePicture);
     return j;
 }
 

@@ -480,6 +480,27 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.setViewportSize(DESKTOP);
   });
 
+  test('a job with the fire picture shows fire.png beside render.png, each captioned with its light', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    await page.selectOption('#f-mesh', jobIds.brilliantMesh);
+    await fillSmallJob({ width: '48', height: '48' });
+    await page.setChecked('#f-fire-picture', true);
+    const id = await submitAndGetId();
+    await waitForFinished(id);
+    await page.setChecked('#f-fire-picture', false);
+    const job = await (await fetch(`${baseUrl}/api/jobs/${id}`)).json();
+    assert.equal(job.links.fire_picture, `/api/jobs/${id}/fire.png`);
+    await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
+    await page.waitForSelector('#result-body .pictures');
+    const pics = await picturesLoaded('#result-body .pictures');
+    assert.deepEqual(pics.map((p) => p.src.split('/').pop()).slice(0, 2), ['render.png', 'fire.png']);
+    for (const p of pics) assert.ok(p.width > 0, `${p.src} did not load`);
+    assert.match(await page.textContent('.pic-render figcaption'), /studio light/);
+    assert.match(await page.textContent('.pic-fire figcaption'), /one small light 20° from vertical, 4° radius/);
+    await shot('09d-fire-picture');
+  });
+
   test('the home page fits a phone', async () => {
     await page.setViewportSize(PHONE);
     await page.goto(`${baseUrl}/#/`);

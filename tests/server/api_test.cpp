@@ -225,6 +225,7 @@ TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
     job["render"] = {{"width", 24}, {"height", 24}, {"samples", 1}, {"map_photons", 2000}};
     job["aset"] = {{"samples", 2}};
     job["tilt_series"] = {{"max_deg", 2}, {"axis_deg", 90}};
+    job["fire_picture"] = {{"wavelengths", 2}};
     auto r = submit(job);
     ASSERT_TRUE(r);
     ASSERT_EQ(r->status, 202) << r->body;
@@ -235,8 +236,10 @@ TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
     EXPECT_EQ(done["links"]["aset"], self + "/aset.png");
     EXPECT_EQ(done["links"]["tilt_animation"], self + "/tilt.webp");
     EXPECT_EQ(done["links"]["tilt_chart"], self + "/tilt.png");
-    for (const auto& [file, type] : {std::pair{"aset.png", "image/png"}, std::pair{"tilt.webp", "image/webp"},
-                                     std::pair{"tilt.png", "image/png"}}) {
+    EXPECT_EQ(done["links"]["fire_picture"], self + "/fire.png");
+    for (const auto& [file, type] :
+         {std::pair{"aset.png", "image/png"}, std::pair{"tilt.webp", "image/webp"},
+          std::pair{"tilt.png", "image/png"}, std::pair{"fire.png", "image/png"}}) {
         auto p = client_->Get(self + "/" + file);
         ASSERT_TRUE(p && p->status == 200) << file;
         EXPECT_EQ(p->get_header_value("Content-Type"), type);
@@ -257,6 +260,9 @@ TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
     expectProblem(submit(bad), 422, "tilt_series.max_deg");
     bad["tilt_series"] = {{"axis_deg", 400}};
     expectProblem(submit(bad), 422, "tilt_series.axis_deg");
+    bad.erase("tilt_series");
+    bad["fire_picture"] = {{"light_radius_deg", 0}};
+    expectProblem(submit(bad), 422, "fire_picture.light_radius_deg");
 }
 
 TEST_F(ServiceTest, StatsOnlyJobHasNoPictures) {

@@ -34,12 +34,13 @@ void forEachField(const std::vector<FieldInfo>& fields, const std::string& path,
 }
 
 // Every leaf of a job: the trace settings at the top, the render settings under "render", the viewer's
-// views under "aset" and "tilt_series".
+// views under "aset" and "tilt_series", the fire picture's under "fire_picture".
 void forEachJobField(const std::function<void(const std::string&, const FieldInfo&)>& visit) {
     forEachField(traceSettingsSchema().fields(), "", visit);
     forEachField(renderSettingsSchema().fields(), "render", visit);
     forEachField(asetSettingsSchema().fields(), "aset", visit);
     forEachField(tiltSeriesSettingsSchema().fields(), "tilt_series", visit);
+    forEachField(firePictureSettingsSchema().fields(), "fire_picture", visit);
 }
 
 json::json_pointer pointer(const std::string& path) {
@@ -109,6 +110,8 @@ TEST(SettingsSchema, ABadValueInEachFieldNamesItsDottedPath) {
         errorField({{"mesh", "m"}, {"render", true}, {"tilt_series", {{"max_deg", 45}, {"step_deg", 0.5}}}}),
         "no error");
     EXPECT_EQ(errorField({{"mesh", "m"}, {"tilt_series", json::object()}}), "tilt_series");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"fire_picture", true}, {"render", true}}), "fire_picture");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"fire_picture", json::object()}}), "fire_picture");  // no render
 }
 
 TEST(SettingsSchema, IntegerRangesAreExact) {
@@ -140,6 +143,7 @@ TEST(SettingsSchema, JsonRoundTrip) {
     spec.settings.render = RenderSettings{64, 48, 2, 5, 5000, {45, -30, 6, 33}};
     spec.settings.aset = AsetSettings{20, 40, 3, true};
     spec.settings.tiltSeries = TiltSeriesSettings{5, 0.5, 90};
+    spec.settings.firePicture = FirePictureSettings{7, 35, 2.5, 0.1};
     const json written = toJson(spec);
     const StudySpec back = StudySpec::fromJson(written);
     EXPECT_EQ(toJson(back), written);
@@ -152,11 +156,13 @@ TEST(SettingsSchema, JsonRoundTrip) {
         defaults.settings.render.emplace();
         defaults.settings.aset.emplace();
         defaults.settings.tiltSeries.emplace();
+        defaults.settings.firePicture.emplace();
         EXPECT_NE(written[pointer(path)], toJson(defaults)[pointer(path)]) << path;
     });
     spec.settings.render.reset();
     spec.settings.aset.reset();
     spec.settings.tiltSeries.reset();
+    spec.settings.firePicture.reset();
     EXPECT_EQ(toJson(StudySpec::fromJson(toJson(spec))), toJson(spec));
 }
 
@@ -168,6 +174,8 @@ TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
     render.add(&app, renderSettingsSchema().fields(), toJson(RenderSettings{}), "render");
     aset.add(&app, asetSettingsSchema().fields(), toJson(AsetSettings{}), "aset");
     tilt.add(&app, tiltSeriesSettingsSchema().fields(), toJson(TiltSeriesSettings{}), "tilt_series");
+    cli::SettingsFlags fire;
+    fire.add(&app, firePictureSettingsSchema().fields(), toJson(FirePictureSettings{}), "fire_picture");
     std::set<std::string> flags;
     forEachJobField([&](const std::string& path, const FieldInfo& f) {
         EXPECT_NE(app.get_option_no_throw(f.doc.flag), nullptr) << path;
@@ -287,6 +295,10 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     tilt.fields = &tiltSeriesSettingsSchema().fields();
     keys.insert("tilt_series");
     expectOpenApiAgrees(properties["tilt_series"], tilt, "tilt_series");
+    FieldInfo fire = settings::describe("fire_picture", FieldType::Object);
+    fire.fields = &firePictureSettingsSchema().fields();
+    keys.insert("fire_picture");
+    expectOpenApiAgrees(properties["fire_picture"], fire, "fire_picture");
     EXPECT_EQ(documented, keys);
 }
 

@@ -84,6 +84,7 @@ function buildJob(form) {
       camera: { elevation_deg: readNumber(form, 'render.camera.elevation_deg', errors) },
     };
     if (form.elements.aset.checked) job.aset = {};
+    if (form.elements.fire_picture.checked) job.fire_picture = {};
     if (form.elements.tilt_series.checked) job.tilt_series = { max_deg: 10 };
   } else {
     job.render = false;

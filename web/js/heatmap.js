@@ -2,7 +2,7 @@
 // lights up its row of the facet table; pointing at a row lights up the facet.
 import { api } from './api.js';
 import { h, svg } from './dom.js';
-import { fmtPctErr, humanize } from './format.js';
+import { fmtNumber, fmtPctErr, humanize } from './format.js';
 
 // Lights up facet `id` (null: none) within `root`: its shapes on the heat-map and its table row.
 export function linkFacet(root, id) {
@@ -110,17 +110,26 @@ export function pictures(job, name, stats, commonScale = 0) {
   const size = render ? { width: render.width, height: render.height } : {};
   // Which light each picture uses (docs/physics.md, "Which light each picture uses").
   const model = (job.settings && job.settings.light && job.settings.light.model) || 'the job\'s';
+  const fire = job.settings && job.settings.fire_picture;
   const items = [
     { href: links.render, cls: 'pic-render', title: 'Render', light: 'studio light, the viewer\'s head shadow', alt: `Render of ${name} as the camera sees it` },
+    // Beside the render: the same camera under one small light, where dispersion shows as colour.
+    links.fire_picture ? {
+      href: links.fire_picture, cls: 'pic-fire', title: 'Fire, spectral colour',
+      light: fire ? `one small light ${fmtNumber(fire.light_tilt_deg, 1)}° from vertical, ${fmtNumber(fire.light_radius_deg, 2)}° radius, in a dim room`
+        : 'one small light in a dim room',
+      alt: `Fire picture of ${name}: the flashes of colour under a small bright light`,
+    } : null,
     { href: links.heatmap, cls: 'pic-heatmap', title: 'Facet heat-map', light: `${model} light`, alt: `Heat-map of ${name}: facets shaded by the share of light leaving them` },
     { href: links.angular, cls: 'pic-angular', title: 'Exit angles', light: `${model} light`, alt: `Chart of ${name}: where the light leaves, by angle from vertical` },
-  ];
+  ].filter(Boolean);
   const drawHeatmap = commonScale > 0 && links.heatmap_layout;
   const figures = items.map((p) => h('figure', { class: `picture ${p.cls}` },
     h('a', { href: p.href, target: '_blank', rel: 'noopener' },
       drawHeatmap && p.cls === 'pic-heatmap' ? h('div', { class: 'heatmap-pending' })
         : h('img', { src: p.href, alt: p.alt, ...(p.cls === 'pic-angular' ? {} : size), decoding: 'async' })),
     h('figcaption', {}, p.title, h('span', { class: 'muted picture-light' }, ` · ${p.light}`))));
-  if (links.heatmap_layout) heatmapShapes(figures[1], links.heatmap_layout, stats, drawHeatmap ? commonScale : 0);
+  const heatmap = figures[items.findIndex((p) => p.cls === 'pic-heatmap')];
+  if (links.heatmap_layout) heatmapShapes(heatmap, links.heatmap_layout, stats, drawHeatmap ? commonScale : 0);
   return h('div', { class: 'pictures' }, figures);
 }
