@@ -11,19 +11,9 @@ seconds="${2:-10}"
 connections="${3:-32}"
 threads="${4:-2}"
 command -v wrk >/dev/null || { echo "status_polls: needs wrk (apt-get install wrk)" >&2; exit 2; }
-work="$(mktemp -d)"
-pid=""
-cleanup() {
-    [ -n "$pid" ] && kill "$pid" 2>/dev/null && wait "$pid" 2>/dev/null
-    rm -rf "$work"
-}
-trap cleanup EXIT
-port="$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])')"
-base="http://127.0.0.1:$port"
-"$server" --port "$port" --data "$work/data" --meshes "$work/meshes" --web "" --no-access-log \
-    --http-threads "$threads" >"$work/server.log" 2>&1 &
-pid=$!
-for _ in $(seq 1 200); do curl -sf "$base/healthz" >/dev/null 2>&1 && break; sleep 0.05; done
+source "$(dirname "${BASH_SOURCE[0]}")/../tests/e2e/server_session.sh"
+start_server "$server" --data "$work/data" --meshes "$work/meshes" --web "" --no-access-log \
+    --http-threads "$threads" || { echo "the server did not start" >&2; exit 1; }
 id="$(curl -sf -H 'Content-Type: application/json' \
     --data-binary '{"mesh":"round_brilliant","photons":100000000,"threads":2}' "$base/api/jobs" |
     python3 -c 'import json,sys; print(json.load(sys.stdin)["id"])')"

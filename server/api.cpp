@@ -134,6 +134,20 @@ json nullIfEmpty(const std::string& s) {
     return s.empty() ? json(nullptr) : json(s);
 }
 
+// A write the store refused: the detail (with paths) goes to the log, the client reads 507 for a full disk
+// (SQLite may say only "disk I/O error": an empty disk counts too) and 503 for a failing one, without paths
+// (issue 18).
+void storageProblem(Response& res, const StorageError& e, uint64_t freeBytes) {
+    std::cerr << "facetlight-server: storage: " << e.what() << "\n";
+    res.set_header("Retry-After", "60");
+    if (e.full() || freeBytes == 0)
+        return problem(
+            res, 507,
+            "the server's storage is full: nothing was stored; try again once space is freed, e.g. by "
+            "deleting finished jobs");
+    problem(res, 503, "the server's storage is failing: nothing was stored; the server log has the details");
+}
+
 void logRequest(const Request& req, const Response& res) {
     const std::string line = nowIso8601() + " " + req.remote_addr + " \"" + escapeForLog(req.method, 16) + " " +
                              escapeForLog(req.path) + "\" " + std::to_string(res.status) + " " +
@@ -143,8 +157,9 @@ void logRequest(const Request& req, const Response& res) {
 
 }  // namespace
 
-Api::Api(JobStore& store, ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits)
-    : store_(store), results_(results), queue_(queue), catalog_(catalog), limits_(limits) {}
+Api::Api(ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
+         std::string readOnly)
+    : results_(results), queue_(queue), catalog_(catalog), limits_(limits), readOnly_(std::move(readOnly)) {}
 
 std::vector<Route> Api::routes() {
     std::vector<Route> routes = {
@@ -209,6 +224,10 @@ json Api::statusJson(const JobRecord& job) const {
                     step = i + 1;
                     overall = (i + std::clamp(fraction, 0.0, 1.0)) / steps;
                 }
+                if (phase == RunPhase::Done) {  // the work is over, its results are being written
+                    step = steps;
+                    overall = 1;
+                }
                 doc["cancel_requested"] = live->cancelled();
             }
             links["cancel"] = self + "/cancel";
@@ -239,14 +258,41 @@ json Api::statusJson(const JobRecord& job) const {
 // New work stops before the disk fills: jobs and uploads would fail half-written, and a full disk kept
 // finished jobs from being deleted (issue 18). Status, results, cancel and delete go on.
 bool Api::refuseWhenStorageLow(Response& res) const {
-    const uint64_t free = results_.freeBytes();
-    if (free >= limits_.minFreeBytes) return false;
+    if (refuseWhenReadOnly(res)) return true;
+    const std::string shortage = results_.spaceShortage(limits_.minFreeBytes);
+    if (shortage.empty()) return false;
     res.set_header("Retry-After", "60");
-    problem(res, 507,
-            "the server's storage is nearly full (" + std::to_string(free >> 20) + " MiB free, " +
-                std::to_string(limits_.minFreeBytes >> 20) +
-                " MiB kept free): no new work until space is freed, e.g. by deleting finished jobs");
+    problem(res, 507, shortage + ": no new work until space is freed, e.g. by deleting finished jobs");
     return true;
+}
+
+// A store on a read-only disk serves what it holds and changes nothing.
+bool Api::refuseWhenReadOnly(Response& res) const {
+    if (readOnly_.empty()) return false;
+    res.set_header("Retry-After", "300");
+    problem(
+        res, 503,
+        "the server's storage is read-only (" + readOnly_ + "): jobs and meshes can be read, not changed");
+    return true;
+}
+
+// For /healthz: whether the store takes new work, and why not.
+json Api::storageJson() const {
+    const uint64_t free = results_.freeBytes();
+    std::string state = "ok", detail;
+    if (!readOnly_.empty()) {
+        state = "read-only";
+        detail = "the store is read-only (" + readOnly_ + "): no jobs run or are accepted";
+    } else if (const std::string shortage = results_.spaceShortage(limits_.minFreeBytes); !shortage.empty()) {
+        state = "full";
+        detail = shortage + ": new jobs and uploads get 507, queued jobs fail";
+    } else if (const size_t unsaved = queue_.unsavedCount()) {
+        state = "failing";
+        detail = std::to_string(unsaved) + " job state(s) not yet recorded: the store refused writes";
+    }
+    json doc = {{"state", state}, {"free_bytes", free}, {"min_free_bytes", limits_.minFreeBytes}};
+    if (!detail.empty()) doc["detail"] = detail;
+    return doc;
 }
 
 void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
@@ -283,7 +329,13 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     job.id = newId();
     job.request = toJson(spec);
     job.createdAt = nowIso8601();
-    if (!queue_.submit(job)) {
+    bool queued;
+    try {
+        queued = queue_.submit(job);
+    } catch (const StorageError& e) {
+        return storageProblem(res, e, results_.freeBytes());
+    }
+    if (!queued) {
         res.set_header("Retry-After", "30");
         return problem(res, 503,
                        "the queue is full (" + std::to_string(limits_.maxQueued) + " jobs); try again later");
@@ -327,6 +379,8 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
         doc["format"] = m.format;
         doc["created_at"] = m.createdAt;
         sendJson(res, 201, doc);
+    } catch (const StorageError& e) {
+        storageProblem(res, e, results_.freeBytes());
     } catch (const Error& e) {
         problem(res, 422, std::string("the mesh was refused: ") + e.what(), "file");
     }
@@ -341,8 +395,8 @@ void Api::listJobs(const Request& req, Response& res) {
         return problem(res, 400, e.what(), e.field());
     }
     json jobs = json::array();
-    for (const auto& job : store_.jobs(int(limit), int(offset))) jobs.push_back(statusJson(job));
-    const int64_t total = store_.jobCount();
+    for (const auto& job : queue_.jobs(int(limit), int(offset))) jobs.push_back(statusJson(job));
+    const int64_t total = queue_.jobCount();
     json doc = {{"jobs", jobs}, {"total", total}, {"limit", limit}, {"offset", offset}, {"next", nullptr}};
     if (offset + limit < total) {
         doc["next"] =
@@ -352,40 +406,41 @@ void Api::listJobs(const Request& req, Response& res) {
 }
 
 void Api::getJob(const Request& req, Response& res) {
-    const auto job = store_.job(req.matches[1]);
+    const auto job = queue_.job(req.matches[1]);
     if (!job) return problem(res, 404, "no job with this id");
     sendJson(res, 200, statusJson(*job));
 }
 
 void Api::cancelJob(const Request& req, Response& res) {
     const std::string id = req.matches[1];
-    const auto job = store_.job(id);
+    const auto job = queue_.job(id);
     if (!job) return problem(res, 404, "no job with this id");
     if (job->state == JobState::Succeeded || job->state == JobState::Failed) {
         return problem(res, 409, "the job has already " + std::string(jobStateName(job->state)));
     }
+    if (refuseWhenReadOnly(res)) return;
     const auto outcome = queue_.cancel(id);
-    const auto now = store_.job(id);
+    const auto now = queue_.job(id);
     if (!now) return problem(res, 404, "no job with this id");
     sendJson(res, outcome == JobQueue::CancelOutcome::Requested ? 202 : 200, statusJson(*now));
 }
 
 void Api::deleteJob(const Request& req, Response& res) {
     const std::string id = req.matches[1];
-    const auto job = store_.job(id);
+    const auto job = queue_.job(id);
     if (!job) return problem(res, 404, "no job with this id");
     if (!isFinished(job->state)) {
         return problem(res, 409, "the job is " + std::string(jobStateName(job->state)) + ": cancel it first");
     }
-    store_.deleteJob(id);
-    results_.clear(id);
+    if (refuseWhenReadOnly(res)) return;
+    if (!queue_.remove(id)) return problem(res, 404, "no job with this id");
     res.status = 204;
 }
 
 void Api::getResult(const Request& req, Response& res, const std::string& file,
                     const std::string& contentType) {
     const std::string id = req.matches[1];
-    const auto job = store_.job(id);
+    const auto job = queue_.job(id);
     if (!job) return problem(res, 404, "no job with this id");
     if (job->state != JobState::Succeeded) {
         return problem(
@@ -412,11 +467,13 @@ void Api::install(httplib::Server& server, bool accessLog) {
     std::map<std::string, Plain> plain = {
         {"GET /healthz",
          [this](const Request&, Response& res) {
+             json storage = storageJson();
              sendJson(res, 200,
-                      {{"status", "ok"},
+                      {{"status", storage["state"] == "ok" ? "ok" : "degraded"},
                        {"queued", queue_.queuedCount()},
                        {"cores", queue_.cores()},
-                       {"simd", simdTarget()}});
+                       {"simd", simdTarget()},
+                       {"storage", std::move(storage)}});
          }},
         {"GET /api/openapi.json",
          [](const Request&, Response& res) { res.set_content(std::string(openApiDocument()), kJsonType); }},

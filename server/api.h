@@ -21,7 +21,9 @@ std::string_view openApiDocument();
 
 class Api {
   public:
-    Api(JobStore& store, ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits);
+    // `readOnly`: why the store cannot be written (empty: it can); then every route that writes answers 503.
+    Api(ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
+        std::string readOnly);
     // Registers every route, the guards that run before them, the error handlers and the access log.
     void install(httplib::Server& server, bool accessLog);
     static std::vector<Route> routes();
@@ -29,6 +31,8 @@ class Api {
   private:
     nlohmann::json statusJson(const JobRecord& job) const;
     bool refuseWhenStorageLow(httplib::Response& res) const;  // true: answered 507
+    bool refuseWhenReadOnly(httplib::Response& res) const;    // true: answered 503
+    nlohmann::json storageJson() const;
     void submitJob(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader);
     void uploadMesh(const httplib::Request& req, httplib::Response& res,
                     const httplib::ContentReader& reader);
@@ -39,11 +43,11 @@ class Api {
     void getResult(const httplib::Request& req, httplib::Response& res, const std::string& file,
                    const std::string& contentType);
 
-    JobStore& store_;
     ResultFiles& results_;
     JobQueue& queue_;
     MeshCatalog& catalog_;
     ServiceLimits limits_;
+    std::string readOnly_;
 };
 
 }  // namespace facetlight::server

@@ -38,6 +38,18 @@ bool reap(pid_t pid, int& status, std::chrono::milliseconds wait) {
     }
 }
 
+// After a cancel, what the launcher started (the ranks) may outlive it for a moment, longer on a loaded
+// machine where the job's processes run at a low priority: wait for the group to be gone, killing it after
+// `wait`. Bounded: a member nobody reaps stays a zombie.
+void awaitGroupEnd(pid_t group, std::chrono::milliseconds wait) {
+    for (const bool killed : {false, true}) {
+        const auto until = Clock::now() + wait;
+        while (kill(-group, 0) == 0 && Clock::now() < until)
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        if (killed || kill(-group, SIGKILL) != 0) return;
+    }
+}
+
 }  // namespace
 
 ChildExit runChild(const std::vector<std::string>& argv, const std::function<bool(std::string_view)>& onLine,
@@ -102,6 +114,7 @@ ChildExit runChild(const std::vector<std::string>& argv, const std::function<boo
                     kill(-pid, SIGKILL);
                     reap(pid, status, std::chrono::hours(1));
                 }
+                awaitGroupEnd(pid, cancelGrace);
                 reaped = true;
                 break;
             }

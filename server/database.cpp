@@ -1,14 +1,15 @@
 #include "database.h"
 
+#include <fcntl.h>
 #include <sqlite3.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <random>
-
-#include "util/error.h"
 
 namespace facetlight::server {
 namespace {
@@ -36,7 +37,22 @@ const char* const kMigrations[] = {
            summary TEXT NOT NULL);)",
 };
 
+// Whether a file can be created in `dir`: EROFS (or a permission error) means a read-only store.
+std::string writeProbe(const fs::path& dir) {
+    const fs::path probe = dir / ".write-probe";
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0600);
+    if (fd < 0) return errno == ENOSPC || errno == EDQUOT ? std::string() : std::strerror(errno);
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return {};
+}
+
 }  // namespace
+
+SimulatedFullDisk& simulatedFullDisk() {
+    static SimulatedFullDisk full;
+    return full;
+}
 
 std::string newId() {
     static std::mutex mutex;
@@ -87,6 +103,8 @@ Statement& Statement::bind(int i, int64_t v) {
 }
 
 bool Statement::step() {
+    if (simulatedFullDisk().database && !sqlite3_stmt_readonly(stmt_))
+        throw StorageError("job store: database or disk is full (simulated)", true);
     const int rc = sqlite3_step(stmt_);
     if (rc == SQLITE_ROW) return true;
     if (rc != SQLITE_DONE) fail();
@@ -102,8 +120,19 @@ int64_t Statement::integer(int col) const {
     return sqlite3_column_int64(stmt_, col);
 }
 
+namespace {
+
+// SQLite's codes for a disk that refuses writes become StorageError.
+[[noreturn]] void throwStoreError(int rc, const std::string& message) {
+    if (rc == SQLITE_FULL || rc == SQLITE_IOERR || rc == SQLITE_READONLY || rc == SQLITE_CANTOPEN)
+        throw StorageError(message, rc == SQLITE_FULL);
+    throw Error(message);
+}
+
+}  // namespace
+
 void Statement::fail() const {
-    throw Error(std::string("job store: ") + sqlite3_errmsg(db_));
+    throwStoreError(sqlite3_errcode(db_), std::string("job store: ") + sqlite3_errmsg(db_));
 }
 
 Database::Database(const fs::path& dataDir) {
@@ -111,14 +140,41 @@ Database::Database(const fs::path& dataDir) {
     fs::create_directories(dataDir, ec);
     if (ec) throw Error("cannot create data directory " + dataDir.string() + ": " + ec.message());
     const std::string dbPath = (dataDir / "facetlight.db").string();
+    readOnlyReason_ = writeProbe(dataDir);
+    if (!readOnlyReason_.empty()) {
+        openReadOnly(dbPath);
+        return;
+    }
+    try {
+        openWritable(dbPath, false);
+    } catch (const StorageError&) {
+        // A full disk: SQLite cannot create the shared-memory index (-shm) beside the database. Held
+        // exclusively it keeps that index in memory (sqlite.org/wal.html#noshm), so the server still starts
+        // and deletes can free space; only when that fails too does it open read-only.
+        sqlite3_close(db_);
+        db_ = nullptr;
+        try {
+            openWritable(dbPath, true);
+        } catch (const StorageError&) {
+            sqlite3_close(db_);
+            db_ = nullptr;
+            readOnlyReason_ = "the disk is full: the database cannot be opened for writing";
+            openReadOnly(dbPath);
+        }
+    }
+}
+
+void Database::openWritable(const std::string& dbPath, bool exclusive) {
     if (sqlite3_open_v2(dbPath.c_str(), &db_,
                         SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_FULLMUTEX,
                         nullptr) != SQLITE_OK) {
         const std::string msg = db_ ? sqlite3_errmsg(db_) : "out of memory";
         sqlite3_close(db_);
+        db_ = nullptr;
         throw Error("cannot open job store " + dbPath + ": " + msg);
     }
     sqlite3_busy_timeout(db_, 5000);
+    if (exclusive) exec("PRAGMA locking_mode=EXCLUSIVE");
     exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL; PRAGMA foreign_keys=ON;");
     Statement version(db_, "PRAGMA user_version");
     version.step();
@@ -141,16 +197,34 @@ Database::Database(const fs::path& dataDir) {
     }
 }
 
+// A read-only disk changes under no one: SQLite may read the database as immutable, without the -shm file
+// it could not create there.
+void Database::openReadOnly(const std::string& dbPath) {
+    const std::string uri = "file:" + dbPath + "?immutable=1";
+    if (sqlite3_open_v2(uri.c_str(), &db_, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI | SQLITE_OPEN_FULLMUTEX,
+                        nullptr) != SQLITE_OK) {
+        const std::string msg = db_ ? sqlite3_errmsg(db_) : "out of memory";
+        sqlite3_close(db_);
+        throw Error("cannot open job store " + dbPath + " read-only: " + msg);
+    }
+    Statement version(db_, "PRAGMA user_version");
+    version.step();
+    if (version.integer(0) != int64_t(std::size(kMigrations)))
+        throw Error("job store " + dbPath + " is read-only (" + readOnlyReason_ +
+                    ") and has schema version " + std::to_string(version.integer(0)) + ", not " +
+                    std::to_string(std::size(kMigrations)));
+}
+
 Database::~Database() {
     sqlite3_close(db_);
 }
 
 void Database::exec(const char* sql) const {
     char* err = nullptr;
-    if (sqlite3_exec(db_, sql, nullptr, nullptr, &err) != SQLITE_OK) {
+    if (const int rc = sqlite3_exec(db_, sql, nullptr, nullptr, &err); rc != SQLITE_OK) {
         const std::string msg = err ? err : sqlite3_errmsg(db_);
         sqlite3_free(err);
-        throw Error("job store: " + msg);
+        throwStoreError(rc, "job store: " + msg);
     }
 }
 

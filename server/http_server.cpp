@@ -112,8 +112,15 @@ std::string peerAddress(int sock, int& port, bool local) {
 // the deadline, so a request trickling in byte by byte ends when the deadline passes.
 class DeadlineStream : public httplib::Stream {
   public:
-    DeadlineStream(int sock, std::chrono::microseconds readTimeout, std::chrono::microseconds writeTimeout)
-        : sock_(sock), readTimeout_(readTimeout), writeTimeout_(writeTimeout) {}
+    DeadlineStream(int sock, std::string peer, int peerPort, std::chrono::microseconds readTimeout,
+                   std::chrono::microseconds writeTimeout)
+        : sock_(sock),
+          peer_(std::move(peer)),
+          peerPort_(peerPort),
+          readTimeout_(readTimeout),
+          writeTimeout_(writeTimeout) {
+        local_ = peerAddress(sock, localPort_, true);
+    }
 
     void startRequest(Clock::time_point deadline) { deadline_ = deadline; }
 
@@ -123,10 +130,17 @@ class DeadlineStream : public httplib::Stream {
     }
     bool is_writable() const override { return waitFor(sock_, POLLOUT, Clock::now() + writeTimeout_); }
 
+    // Bytes already there are taken without a poll() first: one system call less per request.
     ssize_t read(char* ptr, size_t size) override {
         if (bufferBegin_ == bufferEnd_) {
-            if (!is_readable()) return -1;
-            const ssize_t n = recvRetrying(size < sizeof buffer_ ? buffer_ : ptr, std::max(size, sizeof buffer_));
+            char* into = size < sizeof buffer_ ? buffer_ : ptr;
+            const size_t most = size < sizeof buffer_ ? sizeof buffer_ : size;
+            if (Clock::now() >= deadline_) return -1;
+            ssize_t n = recvRetrying(into, most, MSG_DONTWAIT);
+            if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+                if (!is_readable()) return -1;
+                n = recvRetrying(into, most, 0);
+            }
             if (n <= 0 || size >= sizeof buffer_) return n;
             bufferBegin_ = 0, bufferEnd_ = size_t(n);
         }
@@ -136,31 +150,42 @@ class DeadlineStream : public httplib::Stream {
         return ssize_t(n);
     }
 
+    // Likewise, a poll() only when the socket's buffer is full.
     ssize_t write(const char* ptr, size_t size) override {
-        if (!is_writable()) return -1;
         for (;;) {
-            const ssize_t n = ::send(sock_, ptr, size, MSG_NOSIGNAL);
-            if (n >= 0 || errno != EINTR) return n;
+            const ssize_t n = ::send(sock_, ptr, size, MSG_NOSIGNAL | MSG_DONTWAIT);
+            if (n >= 0) return n;
+            if (errno == EINTR) continue;
+            if ((errno != EAGAIN && errno != EWOULDBLOCK) || !is_writable()) return -1;
         }
     }
 
+    // Known when the connection was accepted: no getpeername() per request.
     void get_remote_ip_and_port(std::string& ip, int& port) const override {
-        ip = peerAddress(sock_, port, false);
+        ip = peer_;
+        port = peerPort_;
     }
-    void get_local_ip_and_port(std::string& ip, int& port) const override { ip = peerAddress(sock_, port, true); }
+    void get_local_ip_and_port(std::string& ip, int& port) const override {
+        ip = local_;
+        port = localPort_;
+    }
     socket_t socket() const override { return sock_; }
 
     bool hasBufferedBytes() const { return bufferBegin_ < bufferEnd_; }
 
   private:
-    ssize_t recvRetrying(char* ptr, size_t size) {
+    ssize_t recvRetrying(char* ptr, size_t size, int flags) {
         for (;;) {
-            const ssize_t n = ::recv(sock_, ptr, size, 0);
+            const ssize_t n = ::recv(sock_, ptr, size, flags);
             if (n >= 0 || errno != EINTR) return n;
         }
     }
 
     const int sock_;
+    const std::string peer_;
+    const int peerPort_;
+    std::string local_;
+    int localPort_ = 0;
     const std::chrono::microseconds readTimeout_, writeTimeout_;
     Clock::time_point deadline_ = Clock::time_point::max();
     char buffer_[4096];
@@ -230,8 +255,10 @@ bool HttpServer::process_and_close_socket(socket_t sock) {
     const std::string peer = peerAddress(sock, port, false);
     bool ok = false;
     if (admit(peer)) {
-        DeadlineStream stream(sock, std::chrono::seconds(read_timeout_sec_) + std::chrono::microseconds(read_timeout_usec_),
-                              std::chrono::seconds(write_timeout_sec_) + std::chrono::microseconds(write_timeout_usec_));
+        DeadlineStream stream(
+            sock, peer, port,
+            std::chrono::seconds(read_timeout_sec_) + std::chrono::microseconds(read_timeout_usec_),
+            std::chrono::seconds(write_timeout_sec_) + std::chrono::microseconds(write_timeout_usec_));
         for (size_t left = keep_alive_max_count_; left > 0 && svr_sock_ != INVALID_SOCKET; --left) {
             if (!stream.hasBufferedBytes() &&
                 !waitFor(sock, POLLIN, Clock::now() + std::chrono::seconds(keep_alive_timeout_sec_)))

@@ -1,6 +1,10 @@
 #include "job_queue.h"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <iostream>
 #include <new>
 
@@ -9,25 +13,54 @@
 #include "util/error.h"
 
 namespace facetlight::server {
+namespace {
 
-JobQueue::JobQueue(JobStore& store, ResultFiles& results, StudyRunner& runner, size_t maxQueued, int cores)
+// How often the worker retries writing states the store refused.
+constexpr auto kRetrySaving = std::chrono::seconds(1);
+// The worker and the tracing threads it starts (Linux threads inherit it) yield to the HTTP threads: status
+// polls are answered at once while a job keeps every core busy.
+constexpr int kWorkerNice = 10;
+
+// What a client reads when the server's own storage failed under a job.
+constexpr const char* kStorageFailed =
+    "the server could not store the results (its storage is full or failing)";
+constexpr const char* kStartNotRecorded =
+    "the server could not record that the job started (its storage is full or failing); it was not run";
+
+}  // namespace
+
+JobQueue::JobQueue(JobStore& store, ResultFiles& results, StudyRunner& runner, size_t maxQueued,
+                   uint64_t minFreeBytes, int cores)
     : store_(store),
       results_(results),
       runner_(runner),
       maxQueued_(maxQueued),
+      minFreeBytes_(minFreeBytes),
       cores_(std::max(1, cores)) {}
 
 JobQueue::~JobQueue() {
     stop();
 }
 
-void JobQueue::start() {
+void JobQueue::start(bool runJobs) {
     std::lock_guard lock(mutex_);
-    for (auto& id : store_.recoverQueued()) queued_.push_back(std::move(id));
+    for (JobRecord& job : store_.unfinishedJobs()) {
+        const bool wasRunning = job.state == JobState::Running;
+        job.state = JobState::Queued;
+        job.startedAt.clear();
+        job.threadsUsed = 0;
+        queued_.push_back(job.id);
+        if (wasRunning && runJobs) {
+            record(job);
+        } else {
+            const std::string id = job.id;  // the move below may come first
+            held_[id] = std::make_shared<const JobRecord>(std::move(job));
+        }
+    }
     if (!queued_.empty())
         std::cerr << "facetlight-server: " << queued_.size() << " job(s) queued from the store\n";
     stopping_ = false;
-    worker_ = std::thread([this] { workerLoop(); });
+    if (runJobs) worker_ = std::thread([this] { workerLoop(); });
 }
 
 void JobQueue::stop() {
@@ -41,11 +74,46 @@ void JobQueue::stop() {
     worker_.join();
 }
 
+bool JobQueue::record(const JobRecord& job) {
+    auto& held = held_[job.id];
+    held = std::make_shared<const JobRecord>(job);
+    try {
+        store_.saveState(job);
+    } catch (const StorageError& e) {
+        std::cerr << "facetlight-server: job " << job.id << ": recording '" << jobStateName(job.state)
+                  << "' failed, kept in memory until the store takes writes: " << e.what() << "\n";
+        unsaved_.insert(job.id);
+        return false;
+    }
+    unsaved_.erase(job.id);
+    if (isFinished(job.state)) held_.erase(job.id);
+    return true;
+}
+
+void JobQueue::saveUnsaved() {
+    for (auto it = unsaved_.begin(); it != unsaved_.end();) {
+        try {
+            if (deleted_.count(*it)) {
+                store_.deleteJob(*it);
+                deleted_.erase(*it);
+            } else if (const auto held = held_.find(*it); held != held_.end()) {
+                store_.saveState(*held->second);
+                if (isFinished(held->second->state)) held_.erase(held);
+            }
+            std::cerr << "facetlight-server: job " << *it << ": recorded now\n";
+            it = unsaved_.erase(it);
+        } catch (const StorageError&) {
+            ++it;  // still refused: again later
+        }
+    }
+}
+
 bool JobQueue::submit(JobRecord& job) {
     {
         std::lock_guard lock(mutex_);
         if (queued_.size() >= maxQueued_) return false;
         store_.insertJob(job);
+        held_[job.id] = std::make_shared<const JobRecord>(job);
         queued_.push_back(job.id);
     }
     wake_.notify_one();
@@ -56,7 +124,10 @@ JobQueue::CancelOutcome JobQueue::cancel(const std::string& id) {
     std::lock_guard lock(mutex_);
     if (const auto it = std::find(queued_.begin(), queued_.end(), id); it != queued_.end()) {
         queued_.erase(it);
-        store_.markFinished(id, JobState::Canceled);
+        JobRecord job = *held_.at(id);
+        job.state = JobState::Canceled;
+        job.finishedAt = nowIso8601();
+        record(job);
         return CancelOutcome::Canceled;
     }
     if (running_ && runningId_ == id) {
@@ -64,6 +135,55 @@ JobQueue::CancelOutcome JobQueue::cancel(const std::string& id) {
         return CancelOutcome::Requested;
     }
     return CancelOutcome::NotActive;
+}
+
+bool JobQueue::remove(const std::string& id) {
+    const auto found = job(id);
+    if (!found || !isFinished(found->state)) return false;
+    std::lock_guard lock(mutex_);
+    results_.clear(id);
+    held_.erase(id);
+    try {
+        if (!store_.deleteJob(id)) return false;
+        unsaved_.erase(id);
+    } catch (const StorageError& e) {
+        std::cerr << "facetlight-server: job " << id
+                  << ": deleting its record failed, it stays hidden until the store takes writes: "
+                  << e.what() << "\n";
+        deleted_.insert(id);
+        unsaved_.insert(id);
+    }
+    return true;
+}
+
+std::shared_ptr<const JobRecord> JobQueue::job(const std::string& id) const {
+    {
+        std::lock_guard lock(mutex_);
+        if (deleted_.count(id)) return nullptr;
+        if (const auto it = held_.find(id); it != held_.end()) return it->second;
+    }
+    auto stored = store_.job(id);
+    return stored ? std::make_shared<const JobRecord>(std::move(*stored)) : nullptr;
+}
+
+std::vector<JobRecord> JobQueue::jobs(int limit, int offset) const {
+    std::vector<JobRecord> stored = store_.jobs(limit, offset);
+    std::lock_guard lock(mutex_);
+    std::erase_if(stored, [&](const JobRecord& j) { return deleted_.count(j.id) != 0; });
+    for (JobRecord& j : stored)
+        if (const auto it = held_.find(j.id); it != held_.end()) j = *it->second;
+    return stored;
+}
+
+int64_t JobQueue::jobCount() const {
+    const int64_t stored = store_.jobCount();
+    std::lock_guard lock(mutex_);
+    return stored - int64_t(deleted_.size());
+}
+
+size_t JobQueue::unsavedCount() const {
+    std::lock_guard lock(mutex_);
+    return unsaved_.size();
 }
 
 std::optional<size_t> JobQueue::queuePosition(const std::string& id) const {
@@ -85,23 +205,28 @@ size_t JobQueue::queuedCount() const {
 }
 
 void JobQueue::workerLoop() {
+    if (::setpriority(PRIO_PROCESS, ::gettid(), kWorkerNice) != 0)
+        std::cerr << "facetlight-server: cannot lower the worker's priority; status polls may wait on jobs\n";
     for (;;) {
         std::shared_ptr<RunControl> control;
+        JobRecord job;
         std::string id;
         {
             std::unique_lock lock(mutex_);
-            wake_.wait(lock, [this] { return stopping_ || !queued_.empty(); });
+            wake_.wait_for(lock, kRetrySaving, [this] { return stopping_ || !queued_.empty(); });
+            if (!unsaved_.empty()) saveUnsaved();
             if (stopping_) return;
-            id = queued_.front();
+            if (queued_.empty()) continue;
+            job = *held_.at(queued_.front());
             queued_.pop_front();
             control = std::make_shared<RunControl>();
             running_ = control;
-            runningId_ = id;
+            runningId_ = job.id;
         }
         try {
-            runJob(id, *control);
+            runJob(std::move(job), *control);
         } catch (const std::exception& e) {  // the store itself failed: log it, keep serving
-            std::cerr << "facetlight-server: job " << id << ": " << e.what() << "\n";
+            std::cerr << "facetlight-server: job " << runningId_ << ": " << e.what() << "\n";
         }
         std::lock_guard lock(mutex_);
         running_.reset();
@@ -109,17 +234,31 @@ void JobQueue::workerLoop() {
     }
 }
 
-// What a client reads when the server's own storage failed under a job.
-constexpr const char* kStorageFailed = "the server could not store the results (its storage is full or failing)";
-
-void JobQueue::runJob(const std::string& id, RunControl& control) {
+void JobQueue::runJob(JobRecord job, RunControl& control) {
+    const std::string& id = job.id;
+    const auto finish = [&](JobState state, const std::string& error = {}) {
+        job.state = state;
+        job.finishedAt = nowIso8601();
+        job.error = error;
+        std::lock_guard lock(mutex_);
+        record(job);
+    };
     try {
-        const auto job = store_.job(id);
-        if (!job) return;  // deleted while queued
-        StudySpec spec = parseJobSpec(job->request, cores_);
+        // A job whose results cannot fit fails now with the reason, rather than after its work.
+        if (const std::string shortage = results_.spaceShortage(minFreeBytes_); !shortage.empty())
+            return finish(JobState::Failed, shortage + ": the job was not run");
+        StudySpec spec = parseJobSpec(job.request, cores_);
         const int threads = std::min(spec.settings.trace.threads, cores_);
         spec.settings.trace.threads = threads;
-        store_.markRunning(id, threads);
+        job.state = JobState::Running;
+        job.startedAt = nowIso8601();
+        job.threadsUsed = threads;
+        bool recorded;
+        {
+            std::lock_guard lock(mutex_);
+            recorded = record(job);
+        }
+        if (!recorded) return finish(JobState::Failed, kStartNotRecorded);
         results_.clear(id);  // a job re-run after a crash starts from nothing
         const StudyResult result = runner_.run(spec, control);
         try {
@@ -131,10 +270,9 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
             // client may see, and no partial results stay behind.
             std::cerr << "facetlight-server: job " << id << ": storing results failed: " << e.what() << "\n";
             results_.clear(id);
-            store_.markFinished(id, JobState::Failed, kStorageFailed);
-            return;
+            return finish(JobState::Failed, kStorageFailed);
         }
-        store_.markFinished(id, JobState::Succeeded);
+        finish(JobState::Succeeded);
     } catch (const Canceled&) {
         bool shuttingDown;
         {
@@ -143,17 +281,21 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
         }
         results_.clear(id);
         if (shuttingDown) {
-            store_.markQueued(id);
+            job.state = JobState::Queued;
+            job.startedAt.clear();
+            job.threadsUsed = 0;
+            std::lock_guard lock(mutex_);
+            record(job);
         } else {
-            store_.markFinished(id, JobState::Canceled);
+            finish(JobState::Canceled);
         }
     } catch (const Error& e) {
-        store_.markFinished(id, JobState::Failed, e.what());
+        finish(JobState::Failed, e.what());
     } catch (const std::bad_alloc&) {
-        store_.markFinished(id, JobState::Failed, "out of memory: ask for fewer photons or a smaller image");
+        finish(JobState::Failed, "out of memory: ask for fewer photons or a smaller image");
     } catch (const std::exception& e) {
         std::cerr << "facetlight-server: job " << id << " failed: " << e.what() << "\n";
-        store_.markFinished(id, JobState::Failed, std::string("internal error: ") + e.what());
+        finish(JobState::Failed, std::string("internal error: ") + e.what());
     }
 }
 

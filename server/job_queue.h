@@ -1,16 +1,24 @@
 #pragma once
 // The bounded queue and its one worker thread: it queues jobs and moves their states in the store; its
-// StudyRunner runs them, one at a time, off the HTTP threads, each with the threads it asked for capped at the
-// machine's cores. Cancelling a running job cancels its RunControl; stopping the service hands the running job
-// back to the queue, so it runs again after a restart.
+// StudyRunner runs them, one at a time, off the HTTP threads, each with the threads it asked for capped at
+// the machine's cores. Cancelling a running job cancels its RunControl; stopping the service hands the
+// running job back to the queue, so it runs again after a restart.
+//
+// The queue keeps the record of every job it holds (queued or running) in memory, and status reads of those
+// are answered from there: polls of a running job read no database and wait on no lock the job holds. A
+// state the store could not record (a full or failing disk) stays in memory too, so clients still see every
+// job reach its end, and the worker writes it once the store takes writes again (issue 18).
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
+#include <unordered_map>
+#include <vector>
 
 #include "job_store.h"
 #include "result_files.h"
@@ -21,20 +29,34 @@ namespace facetlight::server {
 
 class JobQueue {
   public:
-    JobQueue(JobStore& store, ResultFiles& results, StudyRunner& runner, size_t maxQueued, int cores);
+    // Jobs fail without running when the disk has less than `minFreeBytes` free: their results would not fit.
+    JobQueue(JobStore& store, ResultFiles& results, StudyRunner& runner, size_t maxQueued,
+             uint64_t minFreeBytes, int cores);
     ~JobQueue();  // stop()
 
-    // Re-queues what the store holds (jobs a crash left running first in their turn) and starts the worker.
-    void start();
+    // Re-queues what the store holds (jobs a crash left running first in their turn) and, when `runJobs`
+    // (false: a read-only store), starts the worker.
+    void start(bool runJobs);
     // Stops the worker: the running job is cancelled and put back as queued.
     void stop();
 
-    // Stores the job and queues it; false (and nothing stored) when the queue is full.
+    // Stores the job and queues it; false (and nothing stored) when the queue is full. Throws StorageError
+    // when the store cannot record it.
     bool submit(JobRecord& job);
 
     enum class CancelOutcome { Canceled, Requested, NotActive };
     // A queued job is canceled at once; a running one is asked to stop (its state follows shortly).
     CancelOutcome cancel(const std::string& id);
+    // Removes a finished job: its results first (that frees the disk), then its record. True when removed;
+    // false when the job does not exist or has not finished.
+    bool remove(const std::string& id);
+
+    // A job as clients see it: from memory while the queue holds it, else from the store; none when unknown.
+    std::shared_ptr<const JobRecord> job(const std::string& id) const;
+    std::vector<JobRecord> jobs(int limit, int offset) const;  // newest first
+    int64_t jobCount() const;
+    // States and deletions the store has not recorded yet (its disk was full or failing).
+    size_t unsavedCount() const;
 
     std::optional<size_t> queuePosition(const std::string& id) const;  // 1 for the next to run
     // The running job's progress (read without a lock); none unless `id` is running.
@@ -44,16 +66,24 @@ class JobQueue {
 
   private:
     void workerLoop();
-    void runJob(const std::string& id, RunControl& control);
+    void runJob(JobRecord job, RunControl& control);
+    // With mutex_ held: makes `job` the queue's record of it and writes it to the store; false (and kept to
+    // write later) when the store refused.
+    bool record(const JobRecord& job);
+    void saveUnsaved();  // with mutex_ held
 
     JobStore& store_;
     ResultFiles& results_;
     StudyRunner& runner_;
     const size_t maxQueued_;
+    const uint64_t minFreeBytes_;
     const int cores_;
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;
+    std::unordered_map<std::string, std::shared_ptr<const JobRecord>> held_;  // queued, running, unsaved
+    std::set<std::string> unsaved_;  // ids whose state or deletion the store lacks
+    std::set<std::string> deleted_;  // deleted, but still in the store
     std::deque<std::string> queued_;
     std::string runningId_;
     std::shared_ptr<RunControl> running_;

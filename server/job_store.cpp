@@ -82,38 +82,26 @@ int64_t JobStore::jobCount() const {
     return s.integer(0);
 }
 
-std::vector<std::string> JobStore::recoverQueued() {
-    std::lock_guard lock(db_.mutex());
-    Statement reset(db_.handle(),
-                    "UPDATE jobs SET state = 'queued', started_at = '', threads_used = 0 "
-                    "WHERE state = 'running'");
-    reset.step();
-    Statement s(db_.handle(), "SELECT id FROM jobs WHERE state = 'queued' ORDER BY seq");
-    std::vector<std::string> ids;
-    while (s.step()) ids.push_back(s.text(0));
-    return ids;
-}
-
-void JobStore::markRunning(const std::string& id, int threadsUsed) {
+std::vector<JobRecord> JobStore::unfinishedJobs() const {
     std::lock_guard lock(db_.mutex());
     Statement s(db_.handle(),
-                "UPDATE jobs SET state = 'running', started_at = ?, threads_used = ? WHERE id = ?");
-    s.bind(1, nowIso8601()).bind(2, int64_t(threadsUsed)).bind(3, id);
-    s.step();
+                (std::string(kJobColumns) + "WHERE state IN ('queued', 'running') ORDER BY seq").c_str());
+    std::vector<JobRecord> out;
+    while (s.step()) out.push_back(readJob(s));
+    return out;
 }
 
-void JobStore::markFinished(const std::string& id, JobState state, const std::string& error) {
-    std::lock_guard lock(db_.mutex());
-    Statement s(db_.handle(), "UPDATE jobs SET state = ?, finished_at = ?, error = ? WHERE id = ?");
-    s.bind(1, jobStateName(state)).bind(2, nowIso8601()).bind(3, error).bind(4, id);
-    s.step();
-}
-
-void JobStore::markQueued(const std::string& id) {
+void JobStore::saveState(const JobRecord& job) {
     std::lock_guard lock(db_.mutex());
     Statement s(db_.handle(),
-                "UPDATE jobs SET state = 'queued', started_at = '', threads_used = 0 WHERE id = ?");
-    s.bind(1, id);
+                "UPDATE jobs SET state = ?, started_at = ?, finished_at = ?, error = ?, threads_used = ? "
+                "WHERE id = ?");
+    s.bind(1, jobStateName(job.state))
+        .bind(2, job.startedAt)
+        .bind(3, job.finishedAt)
+        .bind(4, job.error)
+        .bind(5, int64_t(job.threadsUsed))
+        .bind(6, job.id);
     s.step();
 }
 

@@ -38,12 +38,11 @@ class JobStore {
     std::optional<JobRecord> job(const std::string& id) const;
     std::vector<JobRecord> jobs(int limit, int offset) const;  // newest first
     int64_t jobCount() const;
-    // Jobs a crash left running go back to `queued`; returns every queued job's id, oldest first.
-    std::vector<std::string> recoverQueued();
+    // Queued jobs and those a crash left running, oldest first.
+    std::vector<JobRecord> unfinishedJobs() const;
 
-    void markRunning(const std::string& id, int threadsUsed);
-    void markFinished(const std::string& id, JobState state, const std::string& error = {});
-    void markQueued(const std::string& id);  // a running job handed back at shutdown
+    // Writes the job's state, times, error and threads. Throws StorageError when the store cannot be written.
+    void saveState(const JobRecord& job);
     // Removes a job; false when there was no such job.
     bool deleteJob(const std::string& id);
 

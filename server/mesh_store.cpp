@@ -18,19 +18,27 @@ MeshStore::MeshStore(Database& db, fs::path dir) : db_(db), dir_(std::move(dir))
     std::error_code ec;
     fs::create_directories(dir_, ec);
     if (ec) throw Error("cannot create mesh directory " + dir_.string() + ": " + ec.message());
+    removeTemporaryFiles(dir_);
 }
 
 void MeshStore::insertMesh(const MeshRecord& mesh, std::string_view bytes) {
-    writeFileAtomically(meshFile(mesh), bytes);
-    std::lock_guard lock(db_.mutex());
-    Statement s(db_.handle(),
-                "INSERT INTO meshes (id, name, format, created_at, summary) VALUES (?, ?, ?, ?, ?)");
-    s.bind(1, mesh.id)
-        .bind(2, mesh.name)
-        .bind(3, mesh.format)
-        .bind(4, mesh.createdAt)
-        .bind(5, mesh.summary.dump());
-    s.step();
+    const fs::path file = meshFile(mesh);
+    writeFileAtomically(file, bytes);
+    try {
+        std::lock_guard lock(db_.mutex());
+        Statement s(db_.handle(),
+                    "INSERT INTO meshes (id, name, format, created_at, summary) VALUES (?, ?, ?, ?, ?)");
+        s.bind(1, mesh.id)
+            .bind(2, mesh.name)
+            .bind(3, mesh.format)
+            .bind(4, mesh.createdAt)
+            .bind(5, mesh.summary.dump());
+        s.step();
+    } catch (const Error&) {
+        std::error_code ec;
+        fs::remove(file, ec);  // no file without its record
+        throw;
+    }
 }
 
 std::optional<MeshRecord> MeshStore::mesh(const std::string& id) const {

@@ -23,9 +23,11 @@ struct MeshRecord {
 
 class MeshStore {
   public:
-    // `dir` holds the mesh files; created when missing.
+    // `dir` holds the mesh files; created when missing. Temporary files a crash or a full disk left are
+    // removed.
     MeshStore(Database& db, std::filesystem::path dir);
 
+    // Throws StorageError when the file or its record cannot be written; then neither stays.
     void insertMesh(const MeshRecord& mesh, std::string_view bytes);
     std::optional<MeshRecord> mesh(const std::string& id) const;
     std::vector<MeshRecord> meshes() const;

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "database.h"
 #include "util/error.h"
@@ -17,7 +18,9 @@ namespace {
 namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const std::string& what, const fs::path& path) {
-    throw Error("cannot " + what + " " + path.string() + ": " + std::strerror(errno));
+    const int error = errno;
+    throw StorageError("cannot " + what + " " + path.string() + ": " + std::strerror(error),
+                       error == ENOSPC || error == EDQUOT);
 }
 
 // Flushes a folder's entries (a file created or renamed in it) to the disk.
@@ -35,6 +38,12 @@ void writeFileAtomically(const fs::path& path, std::string_view bytes) {
     const fs::path tmp = path.string() + ".tmp";
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) fail("write", tmp);
+    if (simulatedFullDisk().files) {
+        ::close(fd);
+        ::unlink(tmp.c_str());
+        errno = ENOSPC;
+        fail("write", tmp);
+    }
     size_t written = 0;
     while (written < bytes.size()) {
         const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
@@ -64,15 +73,30 @@ ResultFiles::ResultFiles(fs::path dir) : dir_(std::move(dir)) {
     std::error_code ec;
     fs::create_directories(dir_, ec);
     if (ec) throw Error("cannot create result directory " + dir_.string() + ": " + ec.message());
-    for (auto it = fs::recursive_directory_iterator(dir_, ec); !ec && it != fs::recursive_directory_iterator();
+    removeTemporaryFiles(dir_);
+}
+
+void removeTemporaryFiles(const fs::path& dir) {
+    std::error_code ec;
+    std::vector<fs::path> leftovers;
+    for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
          it.increment(ec))
-        if (it->path().extension() == ".tmp") fs::remove(it->path(), ec);
+        if (it->path().extension() == ".tmp") leftovers.push_back(it->path());
+    for (const fs::path& p : leftovers) fs::remove(p, ec);  // a read-only disk keeps them: nothing to do
 }
 
 uint64_t ResultFiles::freeBytes() const {
+    if (simulatedFullDisk().files) return 0;
     std::error_code ec;
     const fs::space_info space = fs::space(dir_, ec);
     return ec ? 0 : space.available;
+}
+
+std::string ResultFiles::spaceShortage(uint64_t minFree) const {
+    const uint64_t free = freeBytes();
+    if (free >= minFree) return {};
+    return "the server's storage is nearly full (" + std::to_string(free >> 20) + " MiB free, " +
+           std::to_string(minFree >> 20) + " MiB kept free)";
 }
 
 fs::path ResultFiles::jobDir(const std::string& jobId) const {
@@ -82,7 +106,12 @@ fs::path ResultFiles::jobDir(const std::string& jobId) const {
 
 void ResultFiles::write(const std::string& jobId, const std::string& name, std::string_view bytes) {
     const fs::path dir = jobDir(jobId);
-    if (fs::create_directories(dir)) syncDirectory(dir_);
+    std::error_code ec;
+    if (fs::create_directories(dir, ec)) syncDirectory(dir_);
+    if (ec) {
+        errno = ec.value();
+        fail("create", dir);
+    }
     writeFileAtomically(dir / name, bytes);
 }
 

@@ -21,11 +21,17 @@ class ResultFiles {
     void clear(const std::string& jobId);  // every result of the job, and its folder
     // Bytes free for results on the disk that holds them (the most a non-root writer may use).
     uint64_t freeBytes() const;
+    // Why new work must wait for space ("the server's storage is nearly full (3 MiB free, 256 MiB kept
+    // free)"); empty while at least `minFree` bytes are free.
+    std::string spaceShortage(uint64_t minFree) const;
 
   private:
     std::filesystem::path jobDir(const std::string& jobId) const;
     std::filesystem::path dir_;
 };
+
+// Removes the `.tmp` files a crash or a full disk left anywhere under `dir`.
+void removeTemporaryFiles(const std::filesystem::path& dir);
 
 // Writes bytes to path.tmp, fsyncs it, renames it over path and fsyncs path's folder (POSIX: the rename is
 // atomic, and durable once the folder is synced). Throws Error.

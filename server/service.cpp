@@ -14,8 +14,10 @@ Service::Service(ServiceConfig config) : config_(std::move(config)), http_(confi
     results_ = std::make_unique<ResultFiles>(config_.dataDir / "jobs");
     catalog_ = std::make_unique<MeshCatalog>(*meshes_, config_.meshesDir);
     runner_ = makeStudyRunner(*catalog_, config_.launch);
-    queue_ = std::make_unique<JobQueue>(*store_, *results_, *runner_, config_.limits.maxQueued, cores);
-    api_ = std::make_unique<Api>(*store_, *results_, *queue_, *catalog_, config_.limits);
+    queue_ = std::make_unique<JobQueue>(*store_, *results_, *runner_, config_.limits.maxQueued,
+                                        config_.limits.minFreeBytes, cores);
+    const std::string& readOnly = database_->readOnlyReason();
+    api_ = std::make_unique<Api>(*results_, *queue_, *catalog_, config_.limits, readOnly);
     http_.set_tcp_nodelay(true);  // headers and body go out as two writes: no Nagle delay between them
     api_->install(http_, config_.accessLog);
     std::error_code ec;
@@ -30,7 +32,16 @@ Service::Service(ServiceConfig config) : config_(std::move(config)), http_(confi
         std::cerr << "facetlight-server: no web page folder at " << config_.webDir
                   << "; serving the API only\n";
     }
-    queue_->start();
+    // A full or read-only disk does not keep the service from starting: it says why here and in /healthz.
+    if (!readOnly.empty()) {
+        std::cerr << "facetlight-server: the store " << config_.dataDir << " is read-only (" << readOnly
+                  << "): serving jobs and results, running and accepting none\n";
+    } else if (const std::string shortage = results_->spaceShortage(config_.limits.minFreeBytes);
+               !shortage.empty()) {
+        std::cerr << "facetlight-server: " << shortage
+                  << ": new jobs and uploads get 507 and queued jobs fail until space is freed\n";
+    }
+    queue_->start(readOnly.empty());
 }
 
 Service::~Service() {

@@ -5,24 +5,12 @@
 # Usage: server_e2e.sh path/to/facetlight-server
 set -euo pipefail
 server="$1"
-work="$(mktemp -d)"
-pid=""
-cleanup() {
-    [ -n "$pid" ] && kill "$pid" 2>/dev/null && wait "$pid" 2>/dev/null
-    rm -rf "$work"
-}
-trap cleanup EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/server_session.sh"
 fail() { echo "FAIL: $*" >&2; echo "--- server log" >&2; tail -20 "$work/server.log" >&2; exit 1; }
 
-free_port() { python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])'; }
 start() {
-    port="$(free_port)"
-    base="http://127.0.0.1:$port"
-    "$server" --host 127.0.0.1 --port "$port" --data "$work/data" --meshes "$work/meshes" --web "" \
-        --cores 2 >>"$work/server.log" 2>&1 &
-    pid=$!
-    for _ in $(seq 1 200); do curl -sf "$base/healthz" >/dev/null 2>&1 && return 0; sleep 0.05; done
-    fail "the server did not start"
+    start_server "$server" --data "$work/data" --meshes "$work/meshes" --web "" --cores 2 ||
+        fail "the server did not start"
 }
 json_get() { python3 -c 'import json,sys; d=json.load(sys.stdin); print(eval("d"+sys.argv[1]))' "$1"; }
 submit() {  # body -> id

@@ -418,6 +418,138 @@ TEST_F(ServiceTest, FullQueueAnswers503WithRetryAfter) {
     EXPECT_EQ(waitFinished(running)["state"], "canceled");
 }
 
+// Issue 18, a full disk. The store's test hook fails its writes as ENOSPC and SQLITE_FULL would; each case
+// below wedged the service before: jobs stayed running or queued, cancel did nothing, DELETE answered 500.
+class FullDiskTest : public ServiceTest {
+  protected:
+    void TearDown() override {
+        simulatedFullDisk().files = false;
+        simulatedFullDisk().database = false;
+        ServiceTest::TearDown();
+    }
+    void startKeepingNothingFree() {
+        stopService();
+        ServiceLimits limits;
+        limits.minFreeBytes = 0;  // past the guard: the disk filled between the check and the write
+        start(limits);
+    }
+    json health() { return json::parse(client_->Get("/healthz")->body); }
+    // A 5xx for a storage fault names no path of the server's (issue 18, finding 11).
+    void expectNoPaths(const httplib::Result& r) const {
+        ASSERT_TRUE(r);
+        EXPECT_EQ(r->body.find(dir_.string()), std::string::npos) << r->body;
+    }
+};
+
+TEST_F(FullDiskTest, ResultsThatCannotBeWrittenFailTheJobAndLeaveNothing) {
+    startKeepingNothingFree();
+    simulatedFullDisk().files = true;
+    json job = smallJob();
+    job["render"] = {{"width", 32}, {"height", 24}, {"samples", 1}, {"map_photons", 2000}};
+    const std::string id = submitOk(job);
+    const json s = waitFinished(id);
+    EXPECT_EQ(s["state"], "failed");
+    EXPECT_NE(s["error"].get<std::string>().find("could not store the results"), std::string::npos) << s;
+    EXPECT_EQ(s["error"].get<std::string>().find(dir_.string()), std::string::npos) << s;
+    EXPECT_FALSE(fs::exists(dir_ / "data" / "jobs" / id));
+    expectProblem(client_->Get("/api/jobs/" + id + "/stats"), 409);
+    expectNoPaths(client_->Post("/api/meshes?name=cube.obj", kCubeObj, "application/octet-stream"));
+    expectProblem(client_->Post("/api/meshes?name=cube.obj", kCubeObj, "application/octet-stream"), 507);
+    EXPECT_EQ(client_->Get("/api/meshes")->body.find("cube.obj"), std::string::npos);
+    auto del = client_->Delete("/api/jobs/" + id);
+    ASSERT_TRUE(del);
+    EXPECT_EQ(del->status, 204);
+}
+
+TEST_F(FullDiskTest, EveryJobEndsAndCancelAndDeleteWorkWhenTheDatabaseCannotBeWritten) {
+    startKeepingNothingFree();
+    const std::string done = submitOk(smallJob());
+    ASSERT_EQ(waitFinished(done)["state"], "succeeded");
+    const std::string running = submitOk(longJob());
+    const std::string next = submitOk(smallJob());
+    const std::string canceled = submitOk(smallJob());
+    waitState(running, "running");
+
+    simulatedFullDisk().files = true;
+    simulatedFullDisk().database = true;
+    auto refused = submit(smallJob());
+    expectProblem(refused, 507);
+    expectNoPaths(refused);
+    auto c = client_->Post("/api/jobs/" + canceled + "/cancel");
+    ASSERT_TRUE(c);
+    EXPECT_EQ(c->status, 200);
+    EXPECT_EQ(json::parse(c->body)["state"], "canceled");
+    auto cr = client_->Post("/api/jobs/" + running + "/cancel");
+    ASSERT_TRUE(cr);
+    EXPECT_EQ(cr->status, 202);
+    EXPECT_EQ(waitFinished(running)["state"], "canceled");
+    // The next job cannot even be recorded as running: it fails, with the reason, without running.
+    const json n = waitFinished(next);
+    EXPECT_EQ(n["state"], "failed");
+    EXPECT_NE(n["error"].get<std::string>().find("could not record"), std::string::npos) << n;
+    // Deleting frees space through the API: the results go at once, the record once the store takes writes.
+    auto del = client_->Delete("/api/jobs/" + done);
+    ASSERT_TRUE(del);
+    EXPECT_EQ(del->status, 204);
+    EXPECT_FALSE(fs::exists(dir_ / "data" / "jobs" / done));
+    expectProblem(client_->Get("/api/jobs/" + done), 404);
+    const json h = health();
+    EXPECT_EQ(h["status"], "degraded");
+    EXPECT_EQ(h["storage"]["state"], "failing") << h;
+    EXPECT_EQ(json::parse(client_->Get("/api/jobs")->body)["total"], 3);
+
+    // Space again: the worker records what it kept in memory, and a restart finds it all.
+    simulatedFullDisk().files = false;
+    simulatedFullDisk().database = false;
+    while (health()["storage"]["state"] != "ok") std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    stopService();
+    start();
+    EXPECT_EQ(status(running)["state"], "canceled");
+    EXPECT_EQ(status(canceled)["state"], "canceled");
+    EXPECT_EQ(status(next)["state"], "failed");
+    expectProblem(client_->Get("/api/jobs/" + done), 404);
+}
+
+TEST_F(FullDiskTest, BelowMinFreeNewWorkIsRefusedAndQueuedJobsFailWhileReadsGoOn) {
+    const std::string done = submitOk(smallJob());
+    ASSERT_EQ(waitFinished(done)["state"], "succeeded");
+    const std::string running = submitOk(longJob());
+    const std::string queued = submitOk(smallJob());
+    waitState(running, "running");
+    simulatedFullDisk().files = true;  // the disk reports 0 bytes free, under the default --min-free
+    auto r = submit(smallJob());
+    expectProblem(r, 507);
+    EXPECT_FALSE(r->get_header_value("Retry-After").empty());
+    expectProblem(client_->Post("/api/meshes?name=cube.obj", kCubeObj, "application/octet-stream"), 507);
+    const json h = health();
+    EXPECT_EQ(h["storage"]["state"], "full") << h;
+    EXPECT_EQ(h["storage"]["free_bytes"], 0);
+    auto stats = client_->Get("/api/jobs/" + done + "/stats");
+    ASSERT_TRUE(stats);
+    EXPECT_EQ(stats->status, 200);
+    EXPECT_EQ(client_->Get("/api/jobs")->status, 200);
+    EXPECT_EQ(client_->Post("/api/jobs/" + running + "/cancel")->status, 202);
+    EXPECT_EQ(waitFinished(running)["state"], "canceled");
+    const json q = waitFinished(queued);
+    EXPECT_EQ(q["state"], "failed");
+    EXPECT_NE(q["error"].get<std::string>().find("nearly full"), std::string::npos) << q;
+    EXPECT_EQ(client_->Delete("/api/jobs/" + done)->status, 204);
+}
+
+TEST_F(FullDiskTest, LeftoversAreRemovedAtStart) {
+    const std::string id = submitOk(smallJob());
+    ASSERT_EQ(waitFinished(id)["state"], "succeeded");
+    stopService();
+    const fs::path leftover = dir_ / "data" / "jobs" / id / "stats.csv.tmp";
+    std::ofstream(leftover) << "half a file";
+    const fs::path meshLeftover = dir_ / "data" / "meshes" / "0123456789abcdef0123456789abcdef.obj.tmp";
+    std::ofstream(meshLeftover) << "v 0 0 0";
+    start();
+    EXPECT_FALSE(fs::exists(leftover));
+    EXPECT_FALSE(fs::exists(meshLeftover));
+    EXPECT_TRUE(fs::exists(dir_ / "data" / "jobs" / id / "stats.json"));
+}
+
 TEST_F(ServiceTest, MeshesListAndUpload) {
     auto list = client_->Get("/api/meshes");
     ASSERT_TRUE(list && list->status == 200);

@@ -1,13 +1,17 @@
 #!/usr/bin/env python3
 """Hostile requests against the real facetlight-server (issue 18): malformed and smuggling-prone heads, bad
-lengths, short and abandoned bodies, deep JSON, out-of-range settings, hostile meshes, slow clients and a
-forged access-log line. Every answer must have the expected status, every error must be problem+json, and
-/healthz must answer within a second after each request.
+lengths, short and abandoned bodies, deep JSON, out-of-range settings, hostile meshes, slow clients, a
+forged access-log line, a disk under --min-free and (where a tmpfs can be mounted) a disk that is really full
+or read-only. Every answer must have the expected status, every error must be problem+json, /healthz must
+answer within a second after each request, and every status seen on a route of the API must be documented
+for it in the OpenAPI document the server serves.
 
 Usage: tests/server/hostile_requests.py path/to/facetlight-server
 """
+import errno
 import json
 import os
+import re
 import shutil
 import socket
 import subprocess
@@ -29,11 +33,11 @@ def free_port():
 
 
 class Server:
-    def __init__(self, binary, work, *extra):
+    def __init__(self, binary, work, *extra, log_dir=None):
         self.port = free_port()
         os.makedirs(os.path.join(work, "meshes"), exist_ok=True)
-        self.log_path = os.path.join(work, "server.log")
-        self.log = open(self.log_path, "wb")
+        self.log_path = os.path.join(log_dir or work, "server.log")
+        self.log = open(self.log_path, "ab")
         self.proc = subprocess.Popen(
             [binary, "--host", "127.0.0.1", "--port", str(self.port), "--data", os.path.join(work, "data"),
              "--meshes", os.path.join(work, "meshes"), "--web", os.path.join(work, "web"), "--cores", "1",
@@ -60,7 +64,12 @@ class Server:
             s.sendall(raw)
             if shut_write:
                 s.shutdown(socket.SHUT_WR)
-            return read_response(s)
+            status, headers, body = read_response(s)
+        observe(raw, status)
+        return status, headers, body
+
+    def get_json(self, path):
+        return json.loads(self.request(http("GET", path))[2])
 
     def stop(self):
         self.proc.terminate()
@@ -242,6 +251,32 @@ def check_problem(name, status, headers, body, field):
 
 
 failures = []
+observed = set()  # (method, path, status) of every answer
+
+
+def observe(raw, status):
+    words = raw.split(b"\r\n", 1)[0].decode("latin-1").split(" ")
+    if len(words) == 3:
+        observed.add((words[0], words[1].split("?", 1)[0], status))
+
+
+def check_documented(openapi):
+    """Every status an API route answered is documented for that route (405: for some method of its path)."""
+    templates = [(re.compile("^" + re.sub(r"\\{[a-z]+\\}", "[^/]+", re.escape(path)) + "$"), ops)
+                 for path, ops in openapi["paths"].items()]
+    checked = 0
+    for method, path, status in sorted(observed):
+        ops = next((ops for pattern, ops in templates if pattern.match(path)), None)
+        if ops is None:
+            continue  # not an API route: static files, traversal attempts
+        checked += 1
+        if status == 405:
+            documented = any("405" in op["responses"] for op in ops.values())
+        else:
+            documented = str(status) in ops.get(method.lower(), {}).get("responses", {})
+        if not documented:
+            fail("OpenAPI", "%s %s answered %d, which /api/openapi.json does not document" % (method, path, status))
+    return checked
 
 
 def fail(name, why):
@@ -261,11 +296,11 @@ def healthz_fast(server, name):
 
 
 def job_total(server):
-    return json.loads(server.request(http("GET", "/api/jobs"))[2])["total"]
+    return server.get_json("/api/jobs")["total"]
 
 
 def mesh_total(server):
-    return len(json.loads(server.request(http("GET", "/api/meshes"))[2])["uploaded"])
+    return len(server.get_json("/api/meshes")["uploaded"])
 
 
 def run_cases(server):
@@ -376,22 +411,121 @@ def run_log_forgery(server):
     return 1
 
 
+def expect(server, name, raw, wanted):
+    status, headers, body = server.request(raw)
+    wanted = wanted if isinstance(wanted, set) else {wanted}
+    if status not in wanted:
+        fail(name, "status %d, expected %s: %s" % (status, sorted(wanted), body[:200]))
+    else:
+        check_problem(name, status, headers, body, None)
+    healthz_fast(server, name)
+    return status, body
+
+
 def run_storage_guard(binary, work):
     """A disk with less than --min-free left refuses new jobs and uploads with 507 and keeps answering."""
     server = Server(binary, os.path.join(work, "full"), "--min-free", str(10 ** 18))
     try:
-        for name, raw in (("job on a full disk", post_job(job())), ("upload on a full disk", upload(CUBE_OBJ))):
-            status, headers, body = server.request(raw)
-            if status != 507:
-                fail(name, "status %d, expected 507: %s" % (status, body[:200]))
-            else:
-                check_problem(name, status, headers, body, None)
-            healthz_fast(server, name)
-        if json.loads(server.request(http("GET", "/api/jobs"))[2])["total"] != 0:
+        expect(server, "job on a full disk", post_job(job()), 507)
+        expect(server, "upload on a full disk", upload(CUBE_OBJ), 507)
+        if server.get_json("/api/jobs")["total"] != 0:
             fail("full disk", "a job was stored")
+        if server.get_json("/healthz").get("storage", {}).get("state") != "full":
+            fail("full disk", "/healthz does not say the storage is full")
     finally:
         server.stop()
     return 3
+
+
+def wait_finished(server, job_id):
+    for _ in range(600):
+        state = server.get_json("/api/jobs/" + job_id)
+        if state["state"] not in ("queued", "running"):
+            return state
+        time.sleep(0.1)
+    fail("job " + job_id, "never finished")
+    return state
+
+
+def fill(path):
+    """Writes zeros into `path` until not one more byte fits."""
+    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_APPEND)
+    try:
+        for chunk in (1 << 16, 1 << 12, 1):
+            try:
+                while True:
+                    os.write(fd, b"\0" * chunk)
+            except OSError as e:
+                if e.errno != errno.ENOSPC:
+                    raise
+    finally:
+        os.close(fd)
+
+
+def leftovers(folder):
+    return [os.path.join(d, f) for d, _, files in os.walk(folder) for f in files if f.endswith(".tmp")]
+
+
+def run_real_full_disk(binary, work):
+    """A data folder on a small tmpfs, filled for real, then remounted read-only (needs root: else skipped;
+    the in-process FullDiskTest covers the same cases by injected write failures)."""
+    disk = os.path.join(work, "tmpfs")
+    os.makedirs(disk)
+    if subprocess.call(["mount", "-t", "tmpfs", "-o", "size=8m", "tmpfs", disk], stderr=subprocess.DEVNULL) != 0:
+        print("  real full disk: skipped (cannot mount a tmpfs here)")
+        return 0
+    n = 0
+    try:
+        server = Server(binary, disk, "--min-free", "0", log_dir=work)
+        try:
+            rendered = job(render={"width": 64, "height": 48, "samples": 1, "map_photons": 2000})
+            done = json.loads(server.request(post_job(rendered))[2])["id"]
+            if wait_finished(server, done)["state"] != "succeeded":
+                fail("real full disk", "the first job did not succeed")
+            fill(os.path.join(disk, "filler"))
+            status, body = expect(server, "job on a really full disk", post_job(rendered), {202, 507})
+            if status == 202:  # the database had room: then the results have none
+                end = wait_finished(server, json.loads(body)["id"])
+                if end["state"] != "failed" or "storage" not in end.get("error", ""):
+                    fail("job on a really full disk", "ended %.300r" % end)
+            expect(server, "upload on a really full disk", upload(CUBE_OBJ), 507)
+            expect(server, "delete on a really full disk", http("DELETE", "/api/jobs/" + done), 204)
+            expect(server, "deleted job", http("GET", "/api/jobs/" + done), 404)
+            if leftovers(disk):
+                fail("real full disk", "leftovers: %s" % leftovers(disk))
+            n += 5
+        finally:
+            server.stop()
+        fill(os.path.join(disk, "filler"))  # what the delete freed
+        server = Server(binary, disk, log_dir=work)  # starts on a full disk, under the default --min-free
+        try:
+            health = server.get_json("/healthz")
+            if health["status"] != "degraded" or health["storage"]["state"] != "full":
+                fail("start on a full disk", "/healthz says %.300r" % health)
+            expect(server, "job after a start on a full disk", post_job(job()), 507)
+            n += 2
+        finally:
+            server.stop()
+        subprocess.check_call(["mount", "-o", "remount,ro", disk])
+        server = Server(binary, disk, log_dir=work)
+        try:
+            health = server.get_json("/healthz")
+            if health["storage"]["state"] != "read-only":
+                fail("start on a read-only disk", "/healthz says %.300r" % health)
+            expect(server, "job list on a read-only disk", http("GET", "/api/jobs"), 200)
+            expect(server, "job on a read-only disk", post_job(job()), 503)
+            n += 3
+        finally:
+            server.stop()
+        with open(os.path.join(work, "server.log"), "rb") as f:
+            log = f.read().decode("latin-1")
+        for why in ("nearly full", "read-only"):
+            if why not in log:
+                fail("real full disk", "the log does not say %r" % why)
+    finally:
+        subprocess.call(["umount", "-l", disk])
+    print("  real full disk and read-only store: %d requests" % n)
+    return n
 
 
 def main():
@@ -402,6 +536,7 @@ def main():
     with open(os.path.join(work, "web", "index.html"), "w") as f:
         f.write("<!doctype html><title>facetlight</title>")
     server = Server(binary, work)
+    openapi = server.get_json("/api/openapi.json")
     try:
         total = run_cases(server)
         total += run_short_bodies(server)
@@ -413,8 +548,10 @@ def main():
         server.stop()
     try:
         total += run_storage_guard(binary, work)
+        total += run_real_full_disk(binary, work)
     finally:
         shutil.rmtree(work, ignore_errors=True)
+    print("  %d answers of API routes checked against the OpenAPI document" % check_documented(openapi))
     print("%d hostile requests, %d failures" % (total, len(failures)))
     sys.exit(1 if failures else 0)
 
