@@ -212,28 +212,32 @@ HWY_INLINE void LeavePlanes(const ConvexIntersector::Planes& p, Floats ox, Float
     const IndexTag di;
     const Floats zero(0.0f);
     Floats best[2] = {Floats(kInf), Floats(kInf)};
-    Facets bestFacet[2] = {hn::Zero(di), hn::Zero(di)};
+    Facets bestPlane[2] = {hn::Zero(di), hn::Zero(di)};
+    Facets plane[2] = {hn::Set(di, 0), hn::Set(di, 1)};  // i in lanes, kept by adding rather than broadcast
+    const Facets two = hn::Set(di, 2);
     auto visit = [&](size_t i, int chain) HWY_ATTR {
         const PlaneCrossing<Floats> c(ox, oy, oz, dx, dy, dz, Floats(p.nx[i]), Floats(p.ny[i]),
                                       Floats(p.nz[i]), Floats(p.offset[i]));
         const Floats t = leavingT(c);
         const auto better = hn::And(zero < c.den, t < best[chain]);
         best[chain] = select(better, t, best[chain]);
-        bestFacet[chain] =
-            hn::IfThenElse(hn::RebindMask(di, better), hn::Set(di, int32_t(p.facet[i])), bestFacet[chain]);
+        bestPlane[chain] = hn::IfThenElse(hn::RebindMask(di, better), plane[chain], bestPlane[chain]);
     };
     size_t i = 0;
     for (; i + 1 < p.count; i += 2) {
         visit(i, 0);
         visit(i + 1, 1);
+        plane[0] = hn::Add(plane[0], two), plane[1] = hn::Add(plane[1], two);
     }
     if (i < p.count) visit(i, 0);
-    // The nearer of the two, and on a tie the lower facet, as LeaveRay picks.
+    // The nearer of the two, and on a tie the lower plane, which is the lower facet (the planes are in facet
+    // order), as LeaveRay picks.
     const auto odd =
         hn::Or(best[1] < best[0], hn::And(hn::Eq(best[1].v, best[0].v),
-                                          hn::RebindMask(FloatTag(), hn::Lt(bestFacet[1], bestFacet[0]))));
+                                          hn::RebindMask(FloatTag(), hn::Lt(bestPlane[1], bestPlane[0]))));
     tOut = select(odd, best[1], best[0]);
-    facetOut = hn::IfThenElse(hn::RebindMask(di, odd), bestFacet[1], bestFacet[0]);
+    const Facets nearest = hn::IfThenElse(hn::RebindMask(di, odd), bestPlane[1], bestPlane[0]);
+    facetOut = hn::GatherIndex(di, reinterpret_cast<const int32_t*>(p.facet.data()), nearest);
 }
 
 // LeaveStone for each lane's ray in `live`. The girdle's planes are searched one ray at a time for the few
