@@ -1,11 +1,14 @@
 // Stats-only photon tracing of a 57-facet round brilliant (collimated light straight down, no dispersion),
 // in photons per second for 1 and 2 threads; the same with dispersion, and the shipped 121-facet brilliant.
 // Figures go to docs/performance.md ("Photon tracing"). --simd=NAME (e.g. AVX2, SSE4) limits the dispatch to
-// that SIMD target, to measure a lower target on a better CPU.
+// that SIMD target, to measure a lower target on a better CPU; --simd=list prints the targets this CPU runs.
+// scripts/perf-figures runs it for every target and two builds, interleaved.
 //   build-*/bin/bench_trace [--simd=AVX2] --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -69,6 +72,12 @@ const Stone* shippedBrilliant() {
     return stone ? &*stone : nullptr;
 }
 
+double processCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 void traceStats(benchmark::State& state, const Stone& stone, bool dispersion = false) {
     TraceSettings settings;
     settings.photons = 4'000'000;
@@ -76,6 +85,7 @@ void traceStats(benchmark::State& state, const Stone& stone, bool dispersion = f
     settings.dispersion = dispersion;
     const Scene scene(stone, settings);
     uint64_t interfaces = 0;
+    const double cpuStart = processCpuSeconds();
     for (auto _ : state) {
         FacetStats stats(stone.facets.size());
         traceBlocks(scene, 0, blockCount(settings.photons), settings.threads, stats);
@@ -83,8 +93,10 @@ void traceStats(benchmark::State& state, const Stone& stone, bool dispersion = f
         interfaces = stats.hit + stats.exited;
         for (const FacetCounts& f : stats.facets) interfaces += f.internalReflections;
     }
-    state.counters["photons_per_s"] = benchmark::Counter(
-        double(settings.photons) * double(state.iterations()), benchmark::Counter::kIsRate);
+    const double photons = double(settings.photons) * double(state.iterations());
+    state.counters["photons_per_s"] = benchmark::Counter(photons, benchmark::Counter::kIsRate);
+    // Per CPU second of all the trace's threads: what a core does, whatever else the machine runs.
+    state.counters["photons_per_cpu_s"] = photons / (processCpuSeconds() - cpuStart);
     // Surface interactions (entry, internal reflections, exit) per photon drawn: the work per photon.
     state.counters["interfaces_per_photon"] = double(interfaces) / double(settings.photons);
     state.counters["facets"] = double(stone.facets.size());
@@ -120,12 +132,36 @@ BENCHMARK(BM_TraceShippedBrilliant)
     ->UseRealTime()
     ->MinTime(2.0);
 
+// The shipped brilliant's crown and pavilion alone, meeting at a knife edge: its 57 planes without the 64 of
+// the girdle. Against the shipped stone it shows what the girdle costs; against the built 57-facet brilliant,
+// what the proportions cost (the paths differ).
+void BM_TraceShippedWithoutGirdle(benchmark::State& state) {
+    const Stone* stone = shippedBrilliant();
+    if (!stone) {
+        state.SkipWithError("meshes/round_brilliant.obj not found");
+        return;
+    }
+    static const Stone knifeEdge = [&] {
+        std::vector<NamedPlane> planes;
+        for (const Facet& f : stone->facets) {
+            if (f.region != Region::Girdle) planes.push_back({f.plane(), f.name});
+        }
+        return Stone::build(intersectHalfSpaces(planes), "round_brilliant_knife_edge");
+    }();
+    traceStats(state, knifeEdge);
+}
+BENCHMARK(BM_TraceShippedWithoutGirdle)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
 }  // namespace
 
 int main(int argc, char** argv) {
     std::vector<char*> args;
     for (int i = 0; i < argc; ++i) {
         const std::string_view arg = argv[i];
+        if (arg == "--simd=list") {
+            for (const std::string& target : simdTargets()) std::printf("%s\n", target.c_str());
+            return 0;
+        }
         if (arg.starts_with("--simd=")) {
             limitSimdTarget(arg.substr(7));
         } else {

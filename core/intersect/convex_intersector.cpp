@@ -1,5 +1,7 @@
 #include "intersect/convex_intersector.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "util/error.h"
@@ -20,8 +22,8 @@ namespace HWY_NAMESPACE {
 bool enterOne(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
     return EnterRay(p, o, d, hit);
 }
-bool leaveOne(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
-    return LeaveRay(p, o, d, hit);
+bool leaveOne(const ConvexIntersector& convex, const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
+    return LeaveStone(convex, o, d, hit);
 }
 bool enterBeamOne(const ConvexBeamEntry& beam, const Vec3f& o, SurfaceHit& hit) {
     return EnterBeamRay(beam, o, hit);
@@ -46,24 +48,76 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 }  // namespace
 
+void ConvexIntersector::Planes::add(const Facet& f) {
+    nx.push_back(float(f.normal.x));
+    ny.push_back(float(f.normal.y));
+    nz.push_back(float(f.normal.z));
+    offset.push_back(float(f.offset));
+    facet.push_back(f.id);
+}
+
+void ConvexIntersector::Planes::pad() {
+    count = nx.size();
+    while (nx.empty() || nx.size() % kPadding) {
+        nx.push_back(0.0f), ny.push_back(0.0f), nz.push_back(0.0f), offset.push_back(1.0f);
+        facet.push_back(0);
+    }
+}
+
+namespace {
+
+// The radius of the widest upright cylinder about (cx, cy) inside plane `f` over heights [zLow, zHigh], with
+// the plane as the searches see it (in float); -inf for a plane more than 30 deg off vertical.
+double cylinderInside(const Facet& f, double cx, double cy, double zLow, double zHigh) {
+    const double nx = float(f.normal.x), ny = float(f.normal.y), nz = float(f.normal.z),
+                 offset = float(f.offset), across = std::hypot(nx, ny);
+    if (!(std::abs(nz) <= 0.5 * std::hypot(across, nz))) return -kInf;
+    const double atAxis = offset - nx * cx - ny * cy;
+    return std::min(atAxis - nz * zLow, atAxis - nz * zHigh) / across;
+}
+
+// The girdle split (ConvexIntersector::Girdle) of a stone, with no planes where it does not pay.
+ConvexIntersector::Girdle girdleOf(const Stone& stone) {
+    constexpr double kRound = 0.98;  // the cylinder's radius against the stone's widest, at least
+    constexpr size_t kMinFacets = 8;
+    const Bounds3& b = stone.bounds;
+    const double cx = b.center().x, cy = b.center().y,
+                 size = std::max(std::max(b.extent().x, b.extent().y), b.extent().z);
+    // Far above the rounding of t, the exit point and the planes' distances, which is a few float ulps of the
+    // coordinates (convex_search-inl.h, insideGirdle).
+    const double margin = 1e-4 * (std::max({std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.lo.z),
+                                            std::abs(b.hi.x), std::abs(b.hi.y), std::abs(b.hi.z)}) +
+                                  size);
+    double widest = 0;
+    for (const Vec3& v : stone.vertices) widest = std::max(widest, std::hypot(v.x - cx, v.y - cy));
+    ConvexIntersector::Girdle g;
+    double radius = kInf;
+    std::vector<bool> inGirdle(stone.facets.size());
+    for (const Facet& f : stone.facets) {
+        const double r = cylinderInside(f, cx, cy, b.lo.z - 2 * margin, b.hi.z + 2 * margin);
+        if (r >= kRound * widest) inGirdle[f.id] = true, radius = std::min(radius, r);
+    }
+    radius -= margin;
+    if (std::count(inGirdle.begin(), inGirdle.end(), true) < ptrdiff_t(kMinFacets) || !(radius > 0)) return g;
+    for (const Facet& f : stone.facets) (inGirdle[f.id] ? g.facets : g.others).add(f);
+    g.facets.pad(), g.others.pad();
+    g.cx = float(cx), g.cy = float(cy);
+    g.radius2 = float(radius * radius);
+    // The table and the culet lie at the stone's top and bottom: exits through them are inside the range.
+    g.zLow = float(b.lo.z - margin), g.zHigh = float(b.hi.z + margin);
+    g.maxT = float(2 * size);
+    return g;
+}
+
+}  // namespace
+
 ConvexIntersector::ConvexIntersector(const Stone& stone) : kernels_(HWY_DYNAMIC_DISPATCH(convexKernels)()) {
     if (!stone.convex)
         throw Error("the convex intersector needs a convex stone; '" + stone.name + "' is not");
     if (stone.facets.empty()) throw Error("stone '" + stone.name + "' has no facets");
-    const size_t n = stone.facets.size(),
-                 padded = (n + Planes::kPadding - 1) / Planes::kPadding * Planes::kPadding;
-    planes_.count = n;
-    planes_.nx.assign(padded, 0.0f);
-    planes_.ny.assign(padded, 0.0f);
-    planes_.nz.assign(padded, 0.0f);
-    planes_.offset.assign(padded, 1.0f);
-    for (size_t i = 0; i < n; ++i) {
-        const Facet& f = stone.facets[i];
-        planes_.nx[i] = float(f.normal.x);
-        planes_.ny[i] = float(f.normal.y);
-        planes_.nz[i] = float(f.normal.z);
-        planes_.offset[i] = float(f.offset);
-    }
+    for (const Facet& f : stone.facets) planes_.add(f);
+    planes_.pad();
+    girdle_ = girdleOf(stone);
 }
 
 bool ConvexIntersector::enter(const Vec3f& origin, const Vec3f& dir, SurfaceHit& hit) const {
@@ -71,7 +125,7 @@ bool ConvexIntersector::enter(const Vec3f& origin, const Vec3f& dir, SurfaceHit&
 }
 
 bool ConvexIntersector::leave(const Vec3f& origin, const Vec3f& dir, SurfaceHit& hit) const {
-    return kernels_->leave(planes_, origin, dir, hit);
+    return kernels_->leave(*this, origin, dir, hit);
 }
 
 void ConvexBeamEntry::Planes::add(float a_, const Vec3f& m, uint32_t f) {
@@ -87,23 +141,41 @@ void ConvexBeamEntry::Planes::pad(float a_) {
     while (a.empty() || a.size() % ConvexIntersector::Planes::kPadding) add(a_, {}, 0);
 }
 
-ConvexBeamEntry::ConvexBeamEntry(const Stone& stone, const Vec3f& dir)
-    : kernels_(HWY_DYNAMIC_DISPATCH(convexKernels)()) {
-    if (!stone.convex)
-        throw Error("the convex intersector needs a convex stone; '" + stone.name + "' is not");
-    for (size_t i = 0; i < stone.facets.size(); ++i) {
-        const Facet& f = stone.facets[i];
+namespace {
+
+// The beam's crossings of the given facets' planes.
+ConvexBeamEntry::Crossings crossingsOf(const Stone& stone, const Vec3f& dir, const std::vector<bool>& take) {
+    ConvexBeamEntry::Crossings c;
+    for (const Facet& f : stone.facets) {
+        if (!take[f.id]) continue;
         const Vec3f n(f.normal);
         const float den = dot(dir, n), offset = float(f.offset);
         if (den == 0) {
-            parallelNormal_.push_back(n);
-            parallelOffset_.push_back(offset);
+            c.parallelNormal.push_back(n);
+            c.parallelOffset.push_back(offset);
         } else {
-            (den < 0 ? in_ : out_).add(offset / den, n * (1 / den), uint32_t(i));
+            (den < 0 ? c.in : c.out).add(offset / den, n * (1 / den), f.id);
         }
     }
-    in_.pad(-kInf);
-    out_.pad(kInf);
+    c.in.pad(-kInf);
+    c.out.pad(kInf);
+    return c;
+}
+
+}  // namespace
+
+ConvexBeamEntry::ConvexBeamEntry(const Stone& stone, const Vec3f& dir)
+    : dir_(dir), kernels_(HWY_DYNAMIC_DISPATCH(convexKernels)()) {
+    if (!stone.convex)
+        throw Error("the convex intersector needs a convex stone; '" + stone.name + "' is not");
+    planes_ = crossingsOf(stone, dir, std::vector<bool>(stone.facets.size(), true));
+    girdle_ = girdleOf(stone);
+    if (!girdle_.facets.count) return;
+    std::vector<bool> inGirdle(stone.facets.size());
+    for (size_t i = 0; i < girdle_.facets.count; ++i) inGirdle[girdle_.facets.facet[i]] = true;
+    girdleFacets_ = crossingsOf(stone, dir, inGirdle);
+    inGirdle.flip();
+    otherFacets_ = crossingsOf(stone, dir, inGirdle);
 }
 
 bool ConvexBeamEntry::enter(const Vec3f& origin, SurfaceHit& hit) const {

@@ -6,6 +6,10 @@
 // compiled for every target; the CPU's best is picked when an intersector is built. Every target computes
 // the same bits: each (ray, plane) pair takes the same correctly rounded operations, and ties go to the
 // lowest facet.
+//
+// The exit search skips the girdle of a round stone where it cannot be the answer (Girdle below): the shipped
+// brilliant's 64 girdle facets are more than half its planes, and a ray leaves through them only near the
+// girdle. The answer stays bit for bit that of the search over every plane.
 #include <cstdint>
 #include <vector>
 
@@ -28,17 +32,37 @@ class ConvexIntersector {
     // error outside a plane it heads out through leaves at once). Always true for a closed convex stone.
     bool leave(const Vec3f& origin, const Vec3f& dir, SurfaceHit& hit) const;
 
-    // The facet planes as a structure of arrays, `count` of them, padded to a multiple of kPadding with
-    // planes of zero normal and offset 1 (neither entered nor left), for the searches.
+    // Facet planes as a structure of arrays, `count` of them in increasing facet order, padded to a multiple
+    // of kPadding with planes of zero normal and offset 1 (neither entered nor left), for the searches.
     struct Planes {
         static constexpr size_t kPadding = 16;  // floats in the widest SIMD register (AVX-512)
         size_t count = 0;
         std::vector<float> nx, ny, nz, offset;
+        std::vector<uint32_t> facet;  // each plane's index in Stone::facets
+        void add(const Facet& f);
+        void pad();
     };
+    // Every facet's plane, facet i at i.
     const Planes& planes() const { return planes_; }
+
+    // The girdle's facets, searched apart: planes whose normals lie within 30 deg of horizontal and which
+    // all contain an upright cylinder about the stone's axis that reaches at least 98 % of the stone's widest
+    // radius (a round girdle). An exit through the other facets at a point inside that cylinder, shrunk by
+    // a margin far above the rounding of the search, is nearer than any girdle plane, so the girdle is
+    // searched only for rays that leave near it. Absent (null) unless there are at least 8 such planes.
+    struct Girdle {
+        Planes facets;              // the girdle's planes
+        Planes others;              // every other plane
+        float cx = 0, cy = 0;       // the cylinder's axis
+        float radius2 = 0;          // its radius, less the margin, squared
+        float zLow = 0, zHigh = 0;  // the stone's height range and a margin: the cylinder's height
+        float maxT = 0;  // rays longer than this (or of a length far from 1) take the girdle search too
+    };
+    const Girdle* girdle() const { return girdle_.facets.count ? &girdle_ : nullptr; }
 
   private:
     Planes planes_;
+    Girdle girdle_;
     const ConvexKernels* kernels_;
 };
 
@@ -49,9 +73,9 @@ class ConvexBeamEntry {
   public:
     ConvexBeamEntry(const Stone& stone, const Vec3f& dir);
     bool enter(const Vec3f& origin, SurfaceHit& hit) const;
+    const Vec3f& direction() const { return dir_; }
 
-    // The planes the beam heads in through (padding at a = -inf) and those it heads out through (padding at
-    // a = +inf), each in facet order, padded to ConvexIntersector::Planes::kPadding.
+    // Planes of a, m, facet, padded to ConvexIntersector::Planes::kPadding.
     struct Planes {
         size_t count = 0;
         std::vector<float> a, mx, my, mz;
@@ -59,16 +83,26 @@ class ConvexBeamEntry {
         void add(float a_, const Vec3f& m, uint32_t f);
         void pad(float a_);
     };
-    const Planes& in() const { return in_; }
-    const Planes& out() const { return out_; }
-    // Planes parallel to the beam: a ray outside one of them misses the stone.
-    const std::vector<Vec3f>& parallelNormals() const { return parallelNormal_; }
-    const std::vector<float>& parallelOffsets() const { return parallelOffset_; }
+    // Facet planes as the beam meets them: those it heads in through (padding at a = -inf) and those it heads
+    // out through (padding at a = +inf), each in facet order, and those parallel to it: a ray outside one of
+    // them misses the stone.
+    struct Crossings {
+        Planes in, out;
+        std::vector<Vec3f> parallelNormal;
+        std::vector<float> parallelOffset;
+    };
+    // Every facet's plane.
+    const Crossings& planes() const { return planes_; }
+    // Parted as the exit search parts them (ConvexIntersector::Girdle): the girdle's planes matter only for
+    // rays that enter near the girdle. girdle() is null where the stone has no such girdle.
+    const ConvexIntersector::Girdle* girdle() const { return girdle_.facets.count ? &girdle_ : nullptr; }
+    const Crossings& girdleFacets() const { return girdleFacets_; }
+    const Crossings& otherFacets() const { return otherFacets_; }
 
   private:
-    Planes in_, out_;
-    std::vector<Vec3f> parallelNormal_;
-    std::vector<float> parallelOffset_;
+    Vec3f dir_;
+    Crossings planes_, girdleFacets_, otherFacets_;
+    ConvexIntersector::Girdle girdle_;
     const ConvexKernels* kernels_;
 };
 

@@ -197,8 +197,9 @@ void stepPacket(const Packets& s, Packet& lanes, Tally& tally) {
     const Floats dx = Floats::load(lanes.dx), dy = Floats::load(lanes.dy), dz = Floats::load(lanes.dz);
     Floats t;
     Facets facet;
-    LeavePacket(s.convex.planes(), ox, oy, oz, dx, dy, dz, t, facet);
-    const FloatMask inside = hn::And(maskOf(lanes.live), t < Floats(kInf));
+    const FloatMask walking = maskOf(lanes.live);
+    LeavePacket(s.convex, walking, ox, oy, oz, dx, dy, dz, t, facet);
+    const FloatMask inside = hn::And(walking, t < Floats(kInf));
     const Floats px = ox + dx * t, py = oy + dy * t, pz = oz + dz * t;
     const Normals normal = gatherNormals(s.normal, facet);
     const Floats cosI = clampUnit(dot3(dx, dy, dz, normal.x, normal.y, normal.z));

@@ -2,15 +2,21 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "hwy/highway.h"
 #include "hwy/targets.h"
 
 #include "geometry/halfspace.h"
 #include "intersect/convex_intersector.h"
+#include "io/mesh_io.h"
 #include "optics/fresnel.h"
 #include "optics/material.h"
 #include "stone/stone.h"
@@ -48,6 +54,11 @@ Stone singleCut() {
         plane(40.75, -1, 0.5 * std::sin(radians(40.75)), "pavilion_" + std::to_string(k));
     }
     return Stone::build(intersectHalfSpaces(planes), "single_cut");
+}
+
+// A shipped design (meshes/NAME.obj).
+Stone shipped(const std::string& name) {
+    return loadStone(std::string(FACETLIGHT_SOURCE_DIR) + "/meshes/" + name + ".obj");
 }
 
 TraceSettings baseSettings(uint64_t photons) {
@@ -270,8 +281,7 @@ void forEachSimdTarget(F&& f) {
     hwy::SetSupportedTargetsForTest(0);
 }
 
-void expectTracePhotonReproducesTheTally() {
-    const Stone stone = singleCut();
+void expectTracePhotonReproducesTheTally(const Stone& stone) {
     struct Case {
         const char* what;
         LightModelKind light;
@@ -321,7 +331,15 @@ void expectTracePhotonReproducesTheTally() {
 // The whole-block trace (a packet of photons per SIMD register) and the one-photon path follow each photon
 // through the same steps with the same bits, on every SIMD target.
 TEST(PhotonTracer, TracePhotonReproducesTheTally) {
-    forEachSimdTarget([] { expectTracePhotonReproducesTheTally(); });
+    const Stone plain = singleCut(), girdled = shipped("round_brilliant");
+    ASSERT_FALSE(ConvexIntersector(plain).girdle());
+    ASSERT_TRUE(ConvexIntersector(girdled).girdle());  // the exit search skips its girdle where it can
+    forEachSimdTarget([&] {
+        for (const Stone* stone : {&plain, &girdled}) {
+            SCOPED_TRACE(stone->name);
+            expectTracePhotonReproducesTheTally(*stone);
+        }
+    });
 }
 
 // Every target gives every ray of the renderer and tracePhoton the same hit, bit for bit, and the one a
@@ -379,6 +397,103 @@ TEST(ConvexIntersector, SameHitsOnEveryTarget) {
         }
         EXPECT_EQ(first.t[3 * i], std::bit_cast<uint32_t>(best)) << i;
         EXPECT_EQ(first.facet[3 * i], facet) << i;
+    }
+}
+
+namespace {
+
+// The exit through every plane by a plain loop: the smallest num / den over the planes with den > 0, the
+// lowest facet on ties, 0 for a point a rounding error outside; t = +inf and facet 0 where there is none.
+SurfaceHit exitOverEveryPlane(const Stone& stone, const Vec3f& o, const Vec3f& d) {
+    SurfaceHit best{INFINITY, 0};
+    for (const Facet& f : stone.facets) {
+        const Vec3f n(f.normal);
+        const float den = dot(d, n), t = (float(f.offset) - dot(o, n)) / den, leaving = t > 0 ? t : 0.0f;
+        if (den > 0 && leaving < best.t) best = {leaving, f.id};
+    }
+    return best;
+}
+
+// Rays that try the girdle split: walks of reflections from random inside points, rays from points on the
+// girdle and parallel to its planes, rays through vertices and edges (ties), points a rounding error
+// outside, directions far from unit length, zero and NaN.
+std::vector<std::pair<Vec3f, Vec3f>> testRays(const Stone& stone, const ConvexIntersector& convex) {
+    std::vector<std::pair<Vec3f, Vec3f>> rays;
+    Rng rng(11, 3);
+    auto unit = [&] {
+        for (;;) {
+            const Vec3f v(2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1);
+            if (dot(v, v) > 0.01f && dot(v, v) <= 1) return normalize(v);
+        }
+    };
+    const Vec3f center(stone.bounds.center());
+    for (int walk = 0; walk < 1500; ++walk) {
+        const Vec3 v = stone.vertices[size_t(rng.uniform() * float(stone.vertices.size()))];
+        Vec3f o = center + (Vec3f(v) - center) * rng.uniform(), d = unit();
+        for (int bounce = 0; bounce < 6; ++bounce) {
+            rays.push_back({o, d});
+            SurfaceHit hit;
+            if (!convex.leave(o, d, hit)) break;
+            const Vec3f n(stone.facets[hit.facet].normal);
+            o = o + d * hit.t;
+            d = d - n * (2 * dot(d, n));
+        }
+    }
+    for (const Facet& f : stone.facets) {
+        const Vec3f n(f.normal), along = normalize(Vec3f(-n.y, n.x, 0.0f));
+        for (uint32_t a : f.outline) {
+            for (uint32_t b : f.outline) {
+                const Vec3f onFacet = (Vec3f(stone.vertices[a]) + Vec3f(stone.vertices[b])) * 0.5f;
+                rays.push_back({onFacet, unit()});
+                rays.push_back({onFacet, along});  // parallel to the facet's plane when it is upright
+                rays.push_back({onFacet, along * -1.0f});
+                rays.push_back({center, onFacet - center});  // through an edge or a vertex: ties
+                rays.push_back({center, normalize(onFacet - center)});
+                rays.push_back({onFacet + n * 1e-6f, unit()});  // just outside
+                rays.push_back({onFacet, unit() * 3.0f});
+                rays.push_back({onFacet, unit() * 0.1f});
+            }
+        }
+    }
+    rays.push_back({center, Vec3f(0, 0, 0)});
+    rays.push_back({center, Vec3f(NAN, 0, 1)});
+    rays.push_back({Vec3f(1e30f, 0, 0), Vec3f(0, 0, 1)});
+    return rays;
+}
+
+}  // namespace
+
+// The exit search that skips a round stone's girdle where it cannot be the answer gives, bit for bit, the
+// exit through every plane, on every target, one ray at a time and a packet at a time (the packet walk: test
+// above).
+TEST(ConvexIntersector, GirdleSkipGivesTheExitThroughEveryPlane) {
+    const std::vector<std::string> round = {"round_brilliant", "round_brilliant_deep", "old_european"};
+    std::vector<std::string> names = round;
+    names.insert(names.end(), {"single_cut", "rose_cut", "oval", "pear", "round_brilliant_tolkowsky"});
+    for (const std::string& name : names) {
+        SCOPED_TRACE(name);
+        const Stone stone = shipped(name);
+        const ConvexIntersector convex(stone);
+        if (std::find(round.begin(), round.end(), name) != round.end()) {
+            ASSERT_TRUE(convex.girdle());
+            EXPECT_EQ(convex.girdle()->facets.count, 64u);
+        }
+        std::printf("%s: %zu girdle facets searched apart\n", name.c_str(),
+                    convex.girdle() ? convex.girdle()->facets.count : 0);
+        const std::vector<std::pair<Vec3f, Vec3f>> rays = testRays(stone, convex);
+        forEachSimdTarget([&] {
+            const ConvexIntersector onTarget(stone);
+            size_t wrong = 0;
+            for (const auto& [o, d] : rays) {
+                SurfaceHit hit;
+                const bool found = onTarget.leave(o, d, hit);
+                const SurfaceHit every = exitOverEveryPlane(stone, o, d);
+                wrong += found != (every.t < INFINITY) ||
+                         std::bit_cast<uint32_t>(hit.t) != std::bit_cast<uint32_t>(every.t) ||
+                         hit.facet != every.facet;
+            }
+            EXPECT_EQ(wrong, 0u) << "of " << rays.size();
+        });
     }
 }
 

@@ -7,7 +7,7 @@ namespace facetlight {
 
 struct ConvexKernels {
     bool (*enter)(const ConvexIntersector::Planes&, const Vec3f& origin, const Vec3f& dir, SurfaceHit&);
-    bool (*leave)(const ConvexIntersector::Planes&, const Vec3f& origin, const Vec3f& dir, SurfaceHit&);
+    bool (*leave)(const ConvexIntersector&, const Vec3f& origin, const Vec3f& dir, SurfaceHit&);
     bool (*enterBeam)(const ConvexBeamEntry&, const Vec3f& origin, SurfaceHit&);
 };
 

@@ -74,24 +74,66 @@ HWY_INLINE PlaneCrossing<PlaneLanes> crossings(const ConvexIntersector::Planes& 
             PlaneLanes::load(&p.offset[i])};
 }
 
-HWY_INLINE bool LeaveRay(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d,
+// The planes' facets, [i, i + lanes).
+HWY_INLINE hn::Vec<PlaneIndexTag> facetsAt(const ConvexIntersector::Planes& p, size_t i) {
+    return hn::BitCast(PlaneIndexTag(), hn::LoadU(hn::RebindToUnsigned<PlaneTag>(), &p.facet[i]));
+}
+
+// The nearest exit through the planes of `p`, the lowest facet on ties; t = +inf where there is none.
+HWY_INLINE void LeaveRay(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d,
                          SurfaceHit& hit) {
     const PlaneTag df;
     const PlaneIndexTag di;
     const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z), zero(0.0f);
     PlaneLanes best(kInf);
-    auto bestFacet = hn::Zero(di), facet = hn::Iota(di, 0);
-    const auto step = hn::Set(di, int32_t(hn::Lanes(df)));
+    auto bestFacet = hn::Zero(di);
     for (size_t i = 0; i < p.count; i += hn::Lanes(df)) {
         const PlaneCrossing<PlaneLanes> c = crossings(p, i, ox, oy, oz, dx, dy, dz);
         const PlaneLanes t = leavingT(c);
         const auto better = hn::And(zero < c.den, t < best);
         best = select(better, t, best);
-        bestFacet = hn::IfThenElse(hn::RebindMask(di, better), facet, bestFacet);
-        facet = hn::Add(facet, step);
+        bestFacet = hn::IfThenElse(hn::RebindMask(di, better), facetsAt(p, i), bestFacet);
     }
     const auto nearest = hn::MinOfLanes(df, best.v);
     hit = {hn::GetLane(nearest), lowestFacetAt(best, nearest, bestFacet)};
+}
+
+// Where the exit at distance t through the planes other than the girdle's is certainly nearer than any girdle
+// plane (ConvexIntersector::Girdle), and an entry at t farther than any girdle plane the ray heads in through
+// and nearer than any it heads out through: the point at t inside the cylinder within the stone's height, the
+// ray's direction of length 1/2 to 2 and |t| bounded, so that the rounding of every value here and in the
+// girdle planes' searches is a few float ulps of the stone's coordinates, far below the cylinder's margin.
+template <class D>
+HWY_INLINE hn::Mask<D> insideGirdle(const ConvexIntersector::Girdle& g, Lanes<D> ox, Lanes<D> oy, Lanes<D> oz,
+                                    Lanes<D> dx, Lanes<D> dy, Lanes<D> dz, Lanes<D> t) {
+    const Lanes<D> rx = ox + dx * t - Lanes<D>(g.cx), ry = oy + dy * t - Lanes<D>(g.cy), qz = oz + dz * t;
+    const Lanes<D> length2 = dot3(dx, dy, dz, dx, dy, dz);
+    auto inside = hn::And(rx * rx + ry * ry < Lanes<D>(g.radius2),
+                          hn::And(-Lanes<D>(g.maxT) < t, t < Lanes<D>(g.maxT)));
+    inside = hn::And(inside, hn::And(Lanes<D>(g.zLow) < qz, qz < Lanes<D>(g.zHigh)));
+    return hn::And(inside, hn::And(Lanes<D>(0.25f) < length2, length2 < Lanes<D>(4.0f)));
+}
+
+// The nearer of two exits, the lower facet on a tie: what one search over both sets of planes picks.
+HWY_INLINE void takeNearer(const SurfaceHit& h, SurfaceHit& best) {
+    if (h.t < best.t || (h.t == best.t && h.facet < best.facet)) best = h;
+}
+
+// ConvexIntersector::leave: the exit through every plane, the girdle's searched only where they may be it.
+HWY_INLINE bool LeaveStone(const ConvexIntersector& convex, const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
+    const ConvexIntersector::Girdle* g = convex.girdle();
+    if (!g) {
+        LeaveRay(convex.planes(), o, d, hit);
+        return hit.t < kInf;
+    }
+    LeaveRay(g->others, o, d, hit);
+    const PlaneTag df;
+    if (!hn::AllTrue(df, insideGirdle(*g, PlaneLanes(o.x), PlaneLanes(o.y), PlaneLanes(o.z), PlaneLanes(d.x),
+                                      PlaneLanes(d.y), PlaneLanes(d.z), PlaneLanes(hit.t)))) {
+        SurfaceHit girdle;
+        LeaveRay(g->facets, o, d, girdle);
+        takeNearer(girdle, hit);
+    }
     return hit.t < kInf;
 }
 
@@ -130,7 +172,7 @@ HWY_INLINE bool EnterBeamRay(const ConvexBeamEntry& beam, const Vec3f& o, Surfac
     const PlaneTag df;
     const PlaneIndexTag di;
     const PlaneLanes ox(o.x), oy(o.y), oz(o.z);
-    const ConvexBeamEntry::Planes& in = beam.in();
+    const ConvexBeamEntry::Planes& in = beam.planes().in;
     PlaneLanes tIn(-kInf);
     auto inFacet = hn::Zero(di);
     for (size_t i = 0; i < in.count; i += hn::Lanes(df)) {
@@ -145,14 +187,15 @@ HWY_INLINE bool EnterBeamRay(const ConvexBeamEntry& beam, const Vec3f& o, Surfac
     const auto farthest = hn::MaxOfLanes(df, tIn.v);
     hit = {hn::GetLane(farthest), lowestFacetAt(tIn, farthest, inFacet)};
     if (!(hit.t > 0)) return false;
-    const ConvexBeamEntry::Planes& out = beam.out();
+    const ConvexBeamEntry::Planes& out = beam.planes().out;
     for (size_t i = 0; i < out.count; i += hn::Lanes(df)) {
         const PlaneLanes t = beamT(PlaneLanes::load(&out.a[i]), PlaneLanes::load(&out.mx[i]),
                                    PlaneLanes::load(&out.my[i]), PlaneLanes::load(&out.mz[i]), ox, oy, oz);
         if (!hn::AllFalse(df, t < PlaneLanes(hit.t))) return false;
     }
-    for (size_t i = 0; i < beam.parallelOffsets().size(); ++i) {
-        if (dot(o, beam.parallelNormals()[i]) > beam.parallelOffsets()[i]) return false;
+    const ConvexBeamEntry::Crossings& c = beam.planes();
+    for (size_t i = 0; i < c.parallelOffset.size(); ++i) {
+        if (dot(o, c.parallelNormal[i]) > c.parallelOffset[i]) return false;
     }
     return true;
 }
@@ -162,14 +205,14 @@ HWY_INLINE bool EnterBeamRay(const ConvexBeamEntry& beam, const Vec3f& o, Surfac
 
 using Facets = hn::Vec<IndexTag>;
 
-// LeaveRay for each lane's ray: t and facet as LeaveRay gives them, t = +inf where it finds no way out. Two
-// searches over even and odd planes halve the chain of dependent compares.
-HWY_INLINE void LeavePacket(const ConvexIntersector::Planes& p, Floats ox, Floats oy, Floats oz, Floats dx,
+// The nearest exit through the planes of `p` for each lane's ray, as LeaveRay gives it: t = +inf where there
+// is none. Two searches over even and odd planes halve the chain of dependent compares.
+HWY_INLINE void LeavePlanes(const ConvexIntersector::Planes& p, Floats ox, Floats oy, Floats oz, Floats dx,
                             Floats dy, Floats dz, Floats& tOut, Facets& facetOut) {
     const IndexTag di;
     const Floats zero(0.0f);
     Floats best[2] = {Floats(kInf), Floats(kInf)};
-    Facets bestFacet[2] = {hn::Zero(di), hn::Zero(di)};
+    Facets bestPlane[2] = {hn::Zero(di), hn::Zero(di)};
     Facets plane[2] = {hn::Set(di, 0), hn::Set(di, 1)};  // i in lanes, kept by adding rather than broadcast
     const Facets two = hn::Set(di, 2);
     auto visit = [&](size_t i, int chain) HWY_ATTR {
@@ -178,7 +221,7 @@ HWY_INLINE void LeavePacket(const ConvexIntersector::Planes& p, Floats ox, Float
         const Floats t = leavingT(c);
         const auto better = hn::And(zero < c.den, t < best[chain]);
         best[chain] = select(better, t, best[chain]);
-        bestFacet[chain] = hn::IfThenElse(hn::RebindMask(di, better), plane[chain], bestFacet[chain]);
+        bestPlane[chain] = hn::IfThenElse(hn::RebindMask(di, better), plane[chain], bestPlane[chain]);
     };
     size_t i = 0;
     for (; i + 1 < p.count; i += 2) {
@@ -187,43 +230,99 @@ HWY_INLINE void LeavePacket(const ConvexIntersector::Planes& p, Floats ox, Float
         plane[0] = hn::Add(plane[0], two), plane[1] = hn::Add(plane[1], two);
     }
     if (i < p.count) visit(i, 0);
-    // The nearer of the two, and on a tie the lower plane, as LeaveRay picks.
+    // The nearer of the two, and on a tie the lower plane, which is the lower facet (the planes are in facet
+    // order), as LeaveRay picks.
     const auto odd =
         hn::Or(best[1] < best[0], hn::And(hn::Eq(best[1].v, best[0].v),
-                                          hn::RebindMask(FloatTag(), hn::Lt(bestFacet[1], bestFacet[0]))));
+                                          hn::RebindMask(FloatTag(), hn::Lt(bestPlane[1], bestPlane[0]))));
     tOut = select(odd, best[1], best[0]);
-    facetOut = hn::IfThenElse(hn::RebindMask(di, odd), bestFacet[1], bestFacet[0]);
+    const Facets nearest = hn::IfThenElse(hn::RebindMask(di, odd), bestPlane[1], bestPlane[0]);
+    facetOut = hn::GatherIndex(di, reinterpret_cast<const int32_t*>(p.facet.data()), nearest);
 }
 
-// EnterBeamRay for each lane's origin: the lanes that enter, each with its t and facet.
+// LeaveStone for each lane's ray in `live`. The girdle's planes are searched one ray at a time for the few
+// rays that leave near the girdle: a packet's rays go every way, so the packet as a whole rarely could skip
+// a plane.
+HWY_INLINE void LeavePacket(const ConvexIntersector& convex, FloatMask live, Floats ox, Floats oy, Floats oz,
+                            Floats dx, Floats dy, Floats dz, Floats& tOut, Facets& facetOut) {
+    const ConvexIntersector::Girdle* g = convex.girdle();
+    LeavePlanes(g ? g->others : convex.planes(), ox, oy, oz, dx, dy, dz, tOut, facetOut);
+    if (!g) return;
+    const auto nearGirdle = hn::AndNot(insideGirdle(*g, ox, oy, oz, dx, dy, dz, tOut), live);
+    if (hn::AllFalse(FloatTag(), nearGirdle)) return;
+    constexpr size_t kMax = HWY_LANES(float);
+    alignas(64) float t[kMax], px[kMax], py[kMax], pz[kMax], vx[kMax], vy[kMax], vz[kMax];
+    alignas(64) int32_t facet[kMax];
+    uint8_t bits[8] = {};
+    tOut.store(t), ox.store(px), oy.store(py), oz.store(pz), dx.store(vx), dy.store(vy), dz.store(vz);
+    hn::StoreU(facetOut, IndexTag(), facet);
+    hn::StoreMaskBits(FloatTag(), nearGirdle, bits);
+    for (size_t k = 0; k < hn::Lanes(FloatTag()); ++k) {
+        if (!((bits[k / 8] >> (k % 8)) & 1)) continue;
+        SurfaceHit girdle, hit{t[k], uint32_t(facet[k])};
+        LeaveRay(g->facets, {px[k], py[k], pz[k]}, {vx[k], vy[k], vz[k]}, girdle);
+        takeNearer(girdle, hit);
+        t[k] = hit.t, facet[k] = int32_t(hit.facet);
+    }
+    tOut = Floats::load(t);
+    facetOut = hn::LoadU(IndexTag(), facet);
+}
+
+// Each lane's beam ray against the planes of `c`: the farthest plane it heads in through (the lowest facet on
+// ties), the nearest it heads out through, and whether it is inside every plane parallel to it.
+struct BeamCrossings {
+    Floats tIn, tExit;
+    Facets inFacet;
+    FloatMask inside;
+};
+HWY_INLINE BeamCrossings crossBeam(const ConvexBeamEntry::Crossings& c, Floats ox, Floats oy, Floats oz) {
+    const IndexTag di;
+    BeamCrossings x{Floats(-kInf), Floats(kInf), hn::Zero(di), hn::FirstN(FloatTag(), HWY_LANES(float))};
+    for (size_t i = 0; i < c.in.count; ++i) {
+        const Floats t =
+            beamT(Floats(c.in.a[i]), Floats(c.in.mx[i]), Floats(c.in.my[i]), Floats(c.in.mz[i]), ox, oy, oz);
+        const auto better = x.tIn < t;
+        x.tIn = select(better, t, x.tIn);
+        x.inFacet =
+            hn::IfThenElse(hn::RebindMask(di, better), hn::Set(di, int32_t(c.in.facet[i])), x.inFacet);
+    }
+    for (size_t i = 0; i < c.out.count; ++i) {
+        const Floats t = beamT(Floats(c.out.a[i]), Floats(c.out.mx[i]), Floats(c.out.my[i]),
+                               Floats(c.out.mz[i]), ox, oy, oz);
+        x.tExit = select(t < x.tExit, t, x.tExit);
+    }
+    for (size_t i = 0; i < c.parallelOffset.size(); ++i) {
+        const Vec3f& n = c.parallelNormal[i];
+        const Floats side = dot3(ox, oy, oz, Floats(n.x), Floats(n.y), Floats(n.z));
+        x.inside = hn::AndNot(Floats(c.parallelOffset[i]) < side, x.inside);
+    }
+    return x;
+}
+
+// EnterBeamRay for each lane's origin: the lanes that enter, each with its t and facet. The girdle's planes
+// (ConvexBeamEntry::girdle) are crossed only when a lane enters near the girdle.
 HWY_INLINE FloatMask EnterBeamPacket(const ConvexBeamEntry& beam, Floats ox, Floats oy, Floats oz,
                                      Floats& tOut, Facets& facetOut) {
-    const IndexTag di;
-    const ConvexBeamEntry::Planes& in = beam.in();
-    const ConvexBeamEntry::Planes& out = beam.out();
-    Floats tIn(-kInf), tExit(kInf);
-    Facets inFacet = hn::Zero(di);
-    for (size_t i = 0; i < in.count; ++i) {
-        const Floats t =
-            beamT(Floats(in.a[i]), Floats(in.mx[i]), Floats(in.my[i]), Floats(in.mz[i]), ox, oy, oz);
-        const auto better = tIn < t;
-        tIn = select(better, t, tIn);
-        inFacet = hn::IfThenElse(hn::RebindMask(di, better), hn::Set(di, int32_t(in.facet[i])), inFacet);
+    const ConvexIntersector::Girdle* g = beam.girdle();
+    BeamCrossings x = crossBeam(g ? beam.otherFacets() : beam.planes(), ox, oy, oz);
+    if (g) {
+        const Floats dx(beam.direction().x), dy(beam.direction().y), dz(beam.direction().z);
+        if (!hn::AllTrue(FloatTag(), insideGirdle(*g, ox, oy, oz, dx, dy, dz, x.tIn))) {
+            // As one search over both sets of planes: the farther entry and on a tie the lower facet, the
+            // nearer exit.
+            const BeamCrossings y = crossBeam(beam.girdleFacets(), ox, oy, oz);
+            const auto girdle = hn::Or(
+                x.tIn < y.tIn,
+                hn::And(hn::Eq(y.tIn.v, x.tIn.v), hn::RebindMask(FloatTag(), hn::Lt(y.inFacet, x.inFacet))));
+            x.tIn = select(girdle, y.tIn, x.tIn);
+            x.inFacet = hn::IfThenElse(hn::RebindMask(IndexTag(), girdle), y.inFacet, x.inFacet);
+            x.tExit = select(y.tExit < x.tExit, y.tExit, x.tExit);
+            x.inside = hn::And(x.inside, y.inside);
+        }
     }
-    for (size_t i = 0; i < out.count; ++i) {
-        const Floats t =
-            beamT(Floats(out.a[i]), Floats(out.mx[i]), Floats(out.my[i]), Floats(out.mz[i]), ox, oy, oz);
-        tExit = select(t < tExit, t, tExit);
-    }
-    auto enters = hn::AndNot(tExit < tIn, Floats(0.0f) < tIn);
-    for (size_t i = 0; i < beam.parallelOffsets().size(); ++i) {
-        const Vec3f& n = beam.parallelNormals()[i];
-        const Floats side = dot3(ox, oy, oz, Floats(n.x), Floats(n.y), Floats(n.z));
-        enters = hn::AndNot(Floats(beam.parallelOffsets()[i]) < side, enters);
-    }
-    tOut = tIn;
-    facetOut = inFacet;
-    return enters;
+    tOut = x.tIn;
+    facetOut = x.inFacet;
+    return hn::And(x.inside, hn::AndNot(x.tExit < x.tIn, Floats(0.0f) < x.tIn));
 }
 #endif  // HWY_TARGET != HWY_SCALAR
 
