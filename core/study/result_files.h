@@ -21,6 +21,6 @@ struct ResultFile {
 };
 
 // In the order they are written: stats.json last, so that its presence says a folder is complete.
-extern const std::array<ResultFile, 9> kResultFiles;
+extern const std::array<ResultFile, 10> kResultFiles;
 
 }  // namespace facetlight
