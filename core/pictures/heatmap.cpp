@@ -150,8 +150,7 @@ Image fireHeatmap(const Stone& stone, const FireStats& fire) {
     for (uint64_t c : fire.colouredByFacet) share.push_back(double(c) / coloured);
     return shareHeatmap(stone, share,
                         {"Share of the fire leaving through each facet",
-                         "of the coloured exits, red and blue apart by more than the pupil (" +
-                             std::to_string(fire.coloured) + ")",
+                         "of the coloured exits (" + std::to_string(fire.coloured) + ")",
                          "share of the fire leaving through the facet (%)"});
 }
 

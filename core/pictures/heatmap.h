@@ -1,7 +1,8 @@
 #pragma once
 // The facet diagram: the crown and table seen from above (left) and the pavilion seen from below (right),
-// each facet filled by its share of the light leaving the stone (or, the fire view, of the fire), with outlines, the busiest facets' shares
-// written on them and a colour bar with numbered ticks (readable without colour).
+// each facet filled by its share of the light leaving the stone (or, the fire view, of the fire), with
+// outlines, the busiest facets' shares written on them and a colour bar with numbered ticks (readable without
+// colour).
 #include <vector>
 
 #include <nlohmann/json.hpp>

@@ -47,7 +47,8 @@ std::vector<uint64_t> FireStats::tallies() const {
 void FireStats::setTallies(std::span<const uint64_t> values) {
     size_t count = 0;
     forEachTally(*this, [&](uint64_t) { ++count; });
-    if (values.size() != count) throw Error("fire statistics of a different stone: tally count does not match");
+    if (values.size() != count)
+        throw Error("fire statistics of a different stone: tally count does not match");
     size_t i = 0;
     forEachTally(*this, [&](uint64_t& v) { v = values[i++]; });
 }

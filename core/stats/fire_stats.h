@@ -36,9 +36,9 @@ struct alignas(64) FireStats {
     uint64_t pairs = 0;  // red and blue both out through table or crown, upward, along the same facet path
     uint64_t split = 0;  // one of them out so, the other elsewhere or along another path
     uint64_t separationSum = 0, separationSquareSum = 0;  // red-blue angle of the pairs; square >> 20
-    uint64_t coloured = 0;  // pairs further apart than the pupil's angle
-    uint64_t colouredWeightSum = 0, colouredWeightSquareSum = 0;  // their cos(angle to vertical), outside the
-                                                                  // head cone, as kWeightScale fixed point
+    uint64_t coloured = 0;                                // pairs further apart than the pupil's angle
+    // The coloured pairs' cos(angle to vertical) outside the head cone, in kWeightScale fixed point.
+    uint64_t colouredWeightSum = 0, colouredWeightSquareSum = 0;
     std::array<std::array<uint64_t, kFireSeparationBins>, kFireExitBins> histogram{};  // pairs
     std::vector<uint64_t> colouredByFacet;  // coloured pairs by the facet they left through
 

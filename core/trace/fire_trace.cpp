@@ -20,8 +20,9 @@ class FireTally {
         : s_(s),
           st_(stats),
           up_(s.up()),
-          cosHeadCone_(s.settings().light.headShadowDeg > 0 ? std::cos(radians(s.settings().light.headShadowDeg))
-                                                             : 2.0),
+          cosHeadCone_(s.settings().light.headShadowDeg > 0
+                           ? std::cos(radians(s.settings().light.headShadowDeg))
+                           : 2.0),
           pupil_(uint64_t(s.settings().fire.pupilAngleDeg() * kSeparationScale + 0.5)) {}
 
     void band(size_t k) {

@@ -41,8 +41,9 @@ const Schema<LightSettings>& lightSchema() {
 
 const Schema<FireSettings>& fireSchema() {
     static const Schema<FireSettings> schema({
-        boolean("enabled", &FireSettings::enabled,
-                {"--fire", "Also trace each photon at the C, D and F lines and measure fire (stats.json: fire)"}),
+        boolean(
+            "enabled", &FireSettings::enabled,
+            {"--fire", "Also trace each photon at the C, D and F lines and measure fire (stats.json: fire)"}),
         number("pupil_mm", &FireSettings::pupilMm, {.lo = 0, .hi = 20, .openLo = true},
                {"--pupil-mm", "Fire: the viewer's pupil diameter", "mm"}),
         number("distance_mm", &FireSettings::distanceMm, {.lo = 10, .hi = 100000},

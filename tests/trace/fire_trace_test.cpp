@@ -81,7 +81,7 @@ TEST(FireTrace, PrismSeparationMatchesTheDeviationFormulas) {
     const double nRed = float(bk7.index(kFireWavelengthsNm[kFireRed]));
     const double nBlue = float(bk7.index(kFireWavelengthsNm[kFireBlue]));
     const double a = radians(kApexDeg), i = minimumDeviationIncidence(bk7.index(kFireWavelengthsNm[1]));
-    // Exact at the fixed incidence: refracted in at asin(sin i / n), out of the top at e = asin(n sin(A - r)).
+    // Exact at the fixed incidence: in at r = asin(sin i / n), out of the top at e = asin(n sin(A - r)).
     auto exitAngle = [&](double n) { return std::asin(n * std::sin(a - std::asin(std::sin(i) / n))); };
     const double exact = degrees(exitAngle(nBlue) - exitAngle(nRed));
     // Minimum deviation d = 2 asin(n sin(A/2)) - A at each index: the incidence is minimum-deviation for the

@@ -141,8 +141,8 @@ class PhotonWalker {
         }
     }
     template <class Intersector, class Visitor>
-    static void walkBands(const Scene& s, const Intersector& isect, uint64_t index, std::span<const float> bands,
-                          Visitor& visit) {
+    static void walkBands(const Scene& s, const Intersector& isect, uint64_t index,
+                          std::span<const float> bands, Visitor& visit) {
         Rng rng(s.settings_.seed, index);
         const LightRay ray = s.light_.sample(rng);
         if (s.dispersive()) rng.uniform();  // start()'s wavelength: the later draws are the plain trace's
