@@ -239,6 +239,14 @@ TEST_F(ServiceTest, FireIsMeasuredLinkedAndServed) {
     EXPECT_NEAR(stats["fire"]["pupil_deg"].get<double>(), 0.45837, 1e-5);  // 2 atan(1 / 250)
     EXPECT_EQ(stats["settings"]["fire"]["pupil_mm"], 2);
 
+    json off = smallJob();
+    off["fire"] = {{"enabled", false}};
+    auto offRun = submit(off);
+    ASSERT_TRUE(offRun && offRun->status == 202);
+    const json offDone = waitFinished(json::parse(offRun->body)["id"]);
+    ASSERT_EQ(offDone["state"], "succeeded");
+    EXPECT_FALSE(offDone["links"].contains("heatmap_fire"));
+
     json bad = smallJob();
     bad["fire"] = {{"pupil_mm", 0}};
     expectProblem(submit(bad), 422, "fire.pupil_mm");
