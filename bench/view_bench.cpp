@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
 
             t0 = std::chrono::steady_clock::now();
             c0 = std::clock();
-            const TiltSeries series = tiltSeries(stone, trace, CameraSettings{}, 320, 320, aset, tilt);
+            const TiltSeries series = tiltSeries(scene, CameraSettings{}, 320, 320, aset, tilt);
             std::vector<Image> frames;
             for (const TiltFrame& f : series.frames) {
                 frames.push_back(asetPicture(f.view, aset, "tilt " + std::to_string(f.tiltDeg)));

@@ -25,9 +25,7 @@ struct RenderOptions {
     SettingsFlags render;
     std::string out = ".";
     bool aset = false;
-    AsetSettings asetSettings;
-    double tiltSeries = 0;
-    TiltSeriesSettings tilt;
+    SettingsFlags asetFlags, tiltFlags;
 };
 
 void run(RenderOptions& o) {
@@ -35,14 +33,14 @@ void run(RenderOptions& o) {
     settings.trace = toTraceSettings(o.trace);
     settings.render.emplace();
     o.render.apply(renderSettingsSchema(), *settings.render);
-    if (o.aset) {
-        o.asetSettings.validate();
-        settings.aset = o.asetSettings;
+    // A view's own flags turn it on, with the defaults for the flags not given.
+    if (o.aset || o.asetFlags.given()) {
+        settings.aset.emplace();
+        o.asetFlags.apply(asetSettingsSchema(), *settings.aset);
     }
-    if (o.tiltSeries > 0) {
-        o.tilt.maxDeg = o.tiltSeries;
-        o.tilt.validate();
-        settings.tiltSeries = o.tilt;
+    if (o.tiltFlags.given()) {
+        settings.tiltSeries.emplace();
+        o.tiltFlags.apply(tiltSeriesSettingsSchema(), *settings.tiltSeries);
     }
     const fs::path out(o.out);
     std::error_code ec;
@@ -84,22 +82,10 @@ void addRenderCommand(CLI::App& app) {
     addTraceOptions(cmd, o->trace);
     o->render.add(cmd, renderSettingsSchema().fields(), toJson(RenderSettings{}), "render");
     cmd->add_flag("--aset", o->aset,
-                  "Also write aset.png: each pixel coloured by where its light comes from (docs/physics.md)");
-    cmd->add_option("--aset-head-cone", o->asetSettings.headConeDeg,
-                    "ASET: half-angle of the viewer's head cone, degrees (blue)")
-        ->capture_default_str();
-    cmd->add_option("--aset-low-below", o->asetSettings.lowBelowDeg,
-                    "ASET: elevation below which light is low (green), above bright (red), degrees")
-        ->capture_default_str();
-    cmd->add_option("--aset-samples", o->asetSettings.samples, "ASET: view rays per pixel")
-        ->capture_default_str();
-    cmd->add_flag("--aset-white-leakage", o->asetSettings.whiteLeakage,
-                  "ASET: draw leakage white, not black");
-    cmd->add_option("--tilt-series", o->tiltSeries,
-                    "Rock the stone from -DEG to +DEG about x in ASET views: tilt.webp (animation), tilt.png "
-                    "(light return against tilt) and the scintillation");
-    cmd->add_option("--tilt-step", o->tilt.stepDeg, "Tilt series: degrees between frames")
-        ->capture_default_str();
+                  "Also write aset.png: each pixel coloured by where its light comes from (docs/physics.md); "
+                  "any --aset-... flag implies it");
+    o->asetFlags.add(cmd, asetSettingsSchema().fields(), toJson(AsetSettings{}), "aset");
+    o->tiltFlags.add(cmd, tiltSeriesSettingsSchema().fields(), toJson(TiltSeriesSettings{}), "tilt_series");
     cmd->add_option("--out", o->out, "Folder for the pictures and statistics (created if missing)")
         ->capture_default_str();
     cmd->callback([o] { run(*o); });

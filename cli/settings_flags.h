@@ -26,6 +26,13 @@ class SettingsFlags {
         addFields(cmd, fields, defaults, "");
     }
 
+    // Whether any of the flags was given.
+    bool given() const {
+        for (const Flag& f : flags_)
+            if (f.option->count() > 0) return true;
+        return false;
+    }
+
     // Reads the flags given onto `s`. Throws Error naming the flag.
     template <class S>
     void apply(const settings::Schema<S>& schema, S& s) const {

@@ -67,7 +67,8 @@ Image tiltChart(const TiltSeries& series, const std::string& title) {
                                  formatNumber("%.1f", 100 * s.standardError) + " % per frame";
     drawText(image, kWidth / 2.0, 40, subtitle, textWidth(subtitle, 2) > kWidth - 10 ? 1.5 : 2, ink,
              Align::Center);
-    drawText(image, kLeft + plotW / 2, kHeight - 24, "tilt about x (deg)", 2, ink, Align::Center);
+    drawText(image, kLeft + plotW / 2, kHeight - 24, "tilt about " + tiltAxisName(series.axisDeg) + " (deg)",
+             2, ink, Align::Center);
     drawText(image, 8, kTop - 26, "light return (% of face-up area)", 2, ink);
     return image;
 }

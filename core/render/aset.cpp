@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/rotation.h"
 #include "optics/fresnel.h"
 #include "render/camera.h"
 #include "trace/detail/photon_walker.h"
@@ -16,24 +17,42 @@ namespace {
 // Keeps the view's random streams apart from the tracer's and the renderer's under the same job seed.
 constexpr uint64_t kAsetStreams = 0x41534554ULL;
 
+// The world as the view sees it: the scene's frame turned by a StoneTurn.
+class TurnedFrame {
+  public:
+    TurnedFrame(const Scene& scene, const StoneTurn& turn)
+        : scene_(scene),
+          axis_(std::cos(radians(turn.axisDeg)), std::sin(radians(turn.axisDeg)), 0),
+          cos_(std::cos(radians(turn.deg))),
+          sin_(std::sin(radians(turn.deg))) {}
+
+    Vec3 toWorld(const Vec3& v) const { return rotateAbout(scene_.toWorld(v), axis_, cos_, sin_); }
+    Vec3 toStone(const Vec3& v) const { return scene_.toStone(rotateAbout(v, axis_, cos_, -sin_)); }
+
+  private:
+    const Scene& scene_;
+    Vec3 axis_;
+    double cos_, sin_;
+};
+
 // Classes a direction outside the stone (stone frame) by where it points in the world.
 class SkyBands {
   public:
-    SkyBands(const Scene& scene, const AsetSettings& s, const Vec3& toViewer)
-        : scene_(scene),
+    SkyBands(const TurnedFrame& frame, const AsetSettings& s, const Vec3& toViewer)
+        : frame_(frame),
           toViewer_(toViewer),
           cosHead_(std::cos(radians(s.headConeDeg))),
           sinLow_(std::sin(radians(s.lowBelowDeg))) {}
 
     AsetClass operator()(const Vec3f& dir) const {
-        const Vec3 w = scene_.toWorld(Vec3{dir.x, dir.y, dir.z});
+        const Vec3 w = frame_.toWorld(Vec3{dir.x, dir.y, dir.z});
         if (w.z < 0) return AsetClass::Leakage;
         if (dot(w, toViewer_) >= cosHead_) return AsetClass::Head;
         return w.z >= sinLow_ ? AsetClass::Bright : AsetClass::Low;
     }
 
   private:
-    const Scene& scene_;
+    const TurnedFrame& frame_;
     Vec3 toViewer_;
     double cosHead_, sinLow_;
 };
@@ -123,16 +142,18 @@ bool AsetView::lit(size_t pixel) const {
 }
 
 AsetView asetView(const Scene& scene, const CameraSettings& cameraSettings, int width, int height,
-                  const AsetSettings& settings, int threads, uint64_t seed, RunControl* control) {
+                  const AsetSettings& settings, int threads, uint64_t seed, RunControl* control,
+                  const StoneTurn& turn) {
     settings.validate();
     if (width < kMinImageSide || width > kMaxImageSide || height < kMinImageSide || height > kMaxImageSide) {
         throw Error("render.width", "an ASET view's sides must be between " + std::to_string(kMinImageSide) +
                                         " and " + std::to_string(kMaxImageSide) + " pixels");
     }
-    const Vec3 target = scene.toWorld(scene.center());
+    const TurnedFrame frame(scene, turn);
+    const Vec3 target = frame.toWorld(scene.center());
     const Camera camera(cameraSettings, target, scene.diameter(), width, height);
-    const SkyBands bands(scene, settings, normalize(camera.position() - target));
-    const Vec3f eye(scene.toStone(camera.position()));
+    const SkyBands bands(frame, settings, normalize(camera.position() - target));
+    const Vec3f eye(frame.toStone(camera.position()));
     const float n = float(scene.index(Material::kSodiumD));
     const uint64_t streams = mix64(seed ^ kAsetStreams);
 
@@ -152,7 +173,7 @@ AsetView asetView(const Scene& scene, const CameraSettings& cameraSettings, int 
                     PhotonWalker::Photon ph;
                     ph.rng = Rng(streams, pixel * uint64_t(settings.samples) + uint64_t(s));
                     const double px = x + ph.rng.uniformDouble(), py = double(y) + ph.rng.uniformDouble();
-                    const Vec3f dir(scene.toStone(camera.direction(px, py)));
+                    const Vec3f dir(frame.toStone(camera.direction(px, py)));
                     AsetClass end;
                     if (!followViewRay(scene, bands, eye, dir, n, ph, end)) continue;
                     ++counts[size_t(end)];

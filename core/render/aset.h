@@ -48,10 +48,17 @@ struct AsetView {
     bool lit(size_t pixel) const;
 };
 
-// The view through `camera` at width x height pixels. Advances control->done() by the pixels of each row.
-// Throws Error on bad settings.
+// The stone turned by `deg` about the horizontal world axis at azimuth `axisDeg` (0: x, 90: y) through the
+// origin of its frame, after the scene's own tilt: a tilt series' frame, every frame sharing one Scene.
+struct StoneTurn {
+    double deg = 0, axisDeg = 0;
+};
+
+// The view through `camera` at width x height pixels, of the scene's stone turned by `turn`. Advances
+// control->done() by the pixels of each row. Throws Error on bad settings.
 AsetView asetView(const Scene& scene, const CameraSettings& camera, int width, int height,
-                  const AsetSettings& settings, int threads, uint64_t seed, RunControl* control = nullptr);
+                  const AsetSettings& settings, int threads, uint64_t seed, RunControl* control = nullptr,
+                  const StoneTurn& turn = {});
 
 // {"settings", "rays" (that met the stone), "shares": {class: {"share", "stderr"}}}
 nlohmann::json toJson(const AsetView& view, const AsetSettings& settings);

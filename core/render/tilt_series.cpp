@@ -1,6 +1,7 @@
 #include "render/tilt_series.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "intersect/scene.h"
 
@@ -12,18 +13,18 @@ AsetShare TiltSeries::scintillation() const {
     return {p, std::sqrt(p * (1 - p) / double(pixelPairs))};
 }
 
-TiltSeries tiltSeries(const Stone& stone, const TraceSettings& trace, const CameraSettings& camera, int width,
-                      int height, const AsetSettings& aset, const TiltSeriesSettings& settings,
-                      RunControl* control) {
+TiltSeries tiltSeries(const Scene& scene, const CameraSettings& camera, int width, int height,
+                      const AsetSettings& aset, const TiltSeriesSettings& settings, RunControl* control) {
     settings.validate();
+    const TraceSettings& trace = scene.settings();
     TiltSeries series;
+    series.axisDeg = settings.axisDeg;
     for (int k = 0; k < settings.frames(); ++k) {
-        TraceSettings tilted = trace;
-        tilted.light.tiltDeg += settings.tiltDeg(k);
-        const Scene scene(stone, tilted);
-        TiltFrame frame{settings.tiltDeg(k),
-                        asetView(scene, camera, width, height, aset, trace.threads, trace.seed, control),
-                        {}};
+        const StoneTurn turn{settings.tiltDeg(k), settings.axisDeg};
+        TiltFrame frame{
+            settings.tiltDeg(k),
+            asetView(scene, camera, width, height, aset, trace.threads, trace.seed, control, turn),
+            {}};
         if (frame.view.cancelled) {
             series.cancelled = true;
             return series;
@@ -42,6 +43,14 @@ TiltSeries tiltSeries(const Stone& stone, const TraceSettings& trace, const Came
         series.frames.push_back(std::move(frame));
     }
     return series;
+}
+
+std::string tiltAxisName(double axisDeg) {
+    if (axisDeg == 0) return "x";
+    if (axisDeg == 90) return "y";
+    char name[48];
+    std::snprintf(name, sizeof name, "the axis at %g deg azimuth", axisDeg);
+    return name;
 }
 
 nlohmann::json toJson(const TiltSeries& series, const TiltSeriesSettings& settings) {

@@ -5,13 +5,12 @@
 //
 // Every frame draws the same random streams (the job seed): a pixel whose light paths do not change with the
 // tilt keeps its class, so switching measures the stone, not the noise.
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "render/aset.h"
-#include "stone/stone.h"
-#include "trace/trace_settings.h"
 
 namespace facetlight {
 
@@ -22,6 +21,7 @@ struct TiltFrame {
 };
 
 struct TiltSeries {
+    double axisDeg = 0;  // the azimuth of the axis the stone rocked about
     std::vector<TiltFrame> frames;
     // Pixels on the stone in both frames of a consecutive pair, and how many of them switched, over all
     // pairs.
@@ -31,11 +31,15 @@ struct TiltSeries {
     AsetShare scintillation() const;  // switched / pixelPairs, binomial standard error
 };
 
-// Frames at settings.tiltDeg(k) about the world's x axis through `camera`, each through its own Scene built
-// from `trace` (the stone must outlive the call). Advances control->done() by each frame's pixels.
-TiltSeries tiltSeries(const Stone& stone, const TraceSettings& trace, const CameraSettings& camera, int width,
-                      int height, const AsetSettings& aset, const TiltSeriesSettings& settings,
+// Frames of the scene's stone turned by settings.tiltDeg(k) about the horizontal axis at settings.axisDeg,
+// after the job's own tilt, through `camera`; the scene's threads and seed. Advances control->done() by each
+// frame's pixels.
+TiltSeries tiltSeries(const Scene& scene, const CameraSettings& camera, int width, int height,
+                      const AsetSettings& aset, const TiltSeriesSettings& settings,
                       RunControl* control = nullptr);
+
+// "x", "y" or "the axis at 30 deg azimuth": the axis at azimuth `axisDeg`, for titles.
+std::string tiltAxisName(double axisDeg);
 
 // {"settings", "frames": [{"tilt_deg", "light_return", "light_return_stderr", "shares": {...}}],
 //  "scintillation", "scintillation_stderr", "pixel_pairs"}

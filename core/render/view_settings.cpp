@@ -1,55 +1,66 @@
 #include "render/view_settings.h"
 
 #include <cmath>
-#include <set>
 #include <string>
 
 #include "util/error.h"
-#include "util/settings_schema.h"
 
 namespace facetlight {
-namespace {
 
-using nlohmann::json;
+using namespace settings;
 
-// Refuses a non-object and any key not in `known`, naming the field.
-void checkKeys(const json& j, const std::string& path, const std::set<std::string>& known) {
-    if (!j.is_object()) throw Error(path, path + " must be an object");
-    for (const auto& [key, value] : j.items()) {
-        const std::string field = settings::fieldPath(path, key);
-        if (!known.count(key)) throw Error(field, "unknown field '" + field + "'");
-    }
+const Schema<AsetSettings>& asetSettingsSchema() {
+    static const Schema<AsetSettings> schema({
+        number("head_cone_deg", &AsetSettings::headConeDeg, {.lo = 0, .hi = 90, .openHi = true},
+               {"--aset-head-cone", "ASET: half-angle of the viewer's head cone (blue)", "degrees"}),
+        number("low_below_deg", &AsetSettings::lowBelowDeg, {.lo = 0, .hi = 90},
+               {"--aset-low-below", "ASET: elevation below which light is low (green), above it bright (red)",
+                "degrees"}),
+        count("samples", &AsetSettings::samples, 1, kMaxAsetSamples,
+              {"--aset-samples", "ASET: view rays per pixel"}),
+        boolean("white_leakage", &AsetSettings::whiteLeakage,
+                {"--aset-white-leakage", "ASET: draw leakage white, not black"}),
+    });
+    return schema;
 }
 
-double number(const json& j, const std::string& field) {
-    return settings::readNumber(j, field, {});
+const Schema<TiltSeriesSettings>& tiltSeriesSettingsSchema() {
+    static const Schema<TiltSeriesSettings> schema(
+        {
+            number(
+                "max_deg", &TiltSeriesSettings::maxDeg, {.lo = 0, .hi = kMaxTiltDeg, .openLo = true},
+                {"--tilt-series",
+                 "Tilt series (off unless a --tilt-... flag is given): rock the stone from -DEG to +DEG in "
+                 "ASET views: tilt.webp (animation), tilt.png (light return against tilt) and the "
+                 "scintillation",
+                 "degrees"}),
+            number("step_deg", &TiltSeriesSettings::stepDeg, {.lo = 0, .hi = kMaxTiltDeg, .openLo = true},
+                   {"--tilt-step", "Tilt series: the step between frames", "degrees"}),
+            number("axis_deg", &TiltSeriesSettings::axisDeg, {.lo = -360, .hi = 360},
+                   {"--tilt-axis",
+                    "Tilt series: azimuth of the horizontal axis the stone rocks about (0: x, the picture's "
+                    "horizontal axis face-up; 90: y)",
+                    "degrees"}),
+        },
+        [](const TiltSeriesSettings& s, const std::string& path) {
+            const std::string step = fieldPath(path, "step_deg");
+            if (s.stepDeg > s.maxDeg)
+                throw Error(step, step + " must be no more than " + fieldPath(path, "max_deg"));
+            if (s.frames() > kMaxTiltFrames) {
+                throw Error(step, step + " gives " + std::to_string(s.frames()) + " frames, more than " +
+                                      std::to_string(kMaxTiltFrames) + ": raise it");
+            }
+        });
+    return schema;
 }
 
-}  // namespace
-
+// The tables' checks, for settings made in code.
 void AsetSettings::validate() const {
-    if (!(headConeDeg >= 0 && headConeDeg < 90)) {
-        throw Error("aset.head_cone_deg", "aset.head_cone_deg must be a number from 0 to below 90");
-    }
-    if (!(lowBelowDeg >= 0 && lowBelowDeg <= 90))
-        throw Error("aset.low_below_deg", "aset.low_below_deg must be a number from 0 to 90");
-    if (samples < 1 || samples > kMaxAsetSamples) {
-        throw Error("aset.samples",
-                    "aset.samples must be an integer between 1 and " + std::to_string(kMaxAsetSamples));
-    }
+    fromJson(toJson(*this));
 }
 
-AsetSettings AsetSettings::fromJson(const json& j) {
-    checkKeys(j, "aset", {"head_cone_deg", "low_below_deg", "samples", "white_leakage"});
-    AsetSettings s;
-    if (j.contains("head_cone_deg")) s.headConeDeg = number(j["head_cone_deg"], "aset.head_cone_deg");
-    if (j.contains("low_below_deg")) s.lowBelowDeg = number(j["low_below_deg"], "aset.low_below_deg");
-    if (j.contains("samples"))
-        s.samples = int(settings::readCount(j["samples"], "aset.samples", 1, kMaxAsetSamples));
-    if (j.contains("white_leakage"))
-        s.whiteLeakage = settings::readBool(j["white_leakage"], "aset.white_leakage");
-    s.validate();
-    return s;
+AsetSettings AsetSettings::fromJson(const nlohmann::json& j) {
+    return asetSettingsSchema().read(j, "aset");
 }
 
 int TiltSeriesSettings::frames() const {
@@ -61,39 +72,19 @@ double TiltSeriesSettings::tiltDeg(int frame) const {
 }
 
 void TiltSeriesSettings::validate() const {
-    if (!(maxDeg > 0 && maxDeg <= kMaxTiltDeg)) {
-        throw Error("tilt_series.max_deg",
-                    "tilt_series.max_deg must be a number above 0 up to " + std::to_string(int(kMaxTiltDeg)));
-    }
-    if (!(stepDeg > 0 && stepDeg <= maxDeg)) {
-        throw Error("tilt_series.step_deg",
-                    "tilt_series.step_deg must be a number above 0 up to tilt_series.max_deg");
-    }
-    if (frames() > kMaxTiltFrames) {
-        throw Error("tilt_series.step_deg", "tilt_series: " + std::to_string(frames()) +
-                                                " frames, more than " + std::to_string(kMaxTiltFrames) +
-                                                "; raise tilt_series.step_deg");
-    }
+    fromJson(toJson(*this));
 }
 
-TiltSeriesSettings TiltSeriesSettings::fromJson(const json& j) {
-    checkKeys(j, "tilt_series", {"max_deg", "step_deg"});
-    TiltSeriesSettings s;
-    if (j.contains("max_deg")) s.maxDeg = number(j["max_deg"], "tilt_series.max_deg");
-    if (j.contains("step_deg")) s.stepDeg = number(j["step_deg"], "tilt_series.step_deg");
-    s.validate();
-    return s;
+TiltSeriesSettings TiltSeriesSettings::fromJson(const nlohmann::json& j) {
+    return tiltSeriesSettingsSchema().read(j, "tilt_series");
 }
 
-json toJson(const AsetSettings& s) {
-    return {{"head_cone_deg", s.headConeDeg},
-            {"low_below_deg", s.lowBelowDeg},
-            {"samples", s.samples},
-            {"white_leakage", s.whiteLeakage}};
+nlohmann::json toJson(const AsetSettings& s) {
+    return asetSettingsSchema().write(s);
 }
 
-json toJson(const TiltSeriesSettings& s) {
-    return {{"max_deg", s.maxDeg}, {"step_deg", s.stepDeg}};
+nlohmann::json toJson(const TiltSeriesSettings& s) {
+    return tiltSeriesSettingsSchema().write(s);
 }
 
 }  // namespace facetlight

@@ -1,8 +1,11 @@
 #pragma once
 // The inputs of the viewer's views (docs/physics.md, "ASET view" and "Tilt series and sparkle"): the ASET
 // picture's angles and samples, and the tilt series. Apart from the algorithms (render/aset.h,
-// render/tilt_series.h); fromJson() is strict, for untrusted job JSON.
+// render/tilt_series.h), each setting described once in its table: JSON, checks, CLI flags and the API
+// schema follow from it.
 #include <nlohmann/json.hpp>
+
+#include "util/settings_schema.h"
 
 namespace facetlight {
 
@@ -15,19 +18,20 @@ struct AsetSettings {
     int samples = 8;            // view rays per pixel, each followed one way at every facet
     bool whiteLeakage = false;  // leakage drawn white (ASET on a white ground) instead of black
 
-    void validate() const;  // throws Error naming the field
+    void validate() const;  // throws Error naming the field ("aset.samples")
     static AsetSettings fromJson(const nlohmann::json& j);
 };
 
-// The stone rocked from -maxDeg to +maxDeg in steps of stepDeg about the world's x axis (the picture's
-// horizontal axis; the stone's own x axis when face-up).
+// The stone rocked from -maxDeg to +maxDeg in steps of stepDeg about the horizontal world axis at azimuth
+// axisDeg (0: the x axis, the picture's horizontal axis face-up; 90: the y axis, its vertical axis).
 struct TiltSeriesSettings {
     double maxDeg = 10;
     double stepDeg = 1;
+    double axisDeg = 0;
 
     int frames() const;  // 2 * maxDeg / stepDeg + 1
     double tiltDeg(int frame) const;
-    void validate() const;  // throws Error naming the field
+    void validate() const;  // throws Error naming the field ("tilt_series.step_deg")
     static TiltSeriesSettings fromJson(const nlohmann::json& j);
 };
 
@@ -35,6 +39,9 @@ constexpr int kMaxAsetSamples = 64;
 constexpr double kMaxTiltDeg = 45;  // the tilt sweeps the field uses (Sasian et al. 2007: up to +-45 deg)
 constexpr int kMaxTiltFrames = 181;
 
+// Their paths start with "aset." and "tilt_series.", where a job holds them.
+const settings::Schema<AsetSettings>& asetSettingsSchema();
+const settings::Schema<TiltSeriesSettings>& tiltSeriesSettingsSchema();
 nlohmann::json toJson(const AsetSettings& s);
 nlohmann::json toJson(const TiltSeriesSettings& s);
 

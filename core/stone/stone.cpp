@@ -9,6 +9,7 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "geometry/rotation.h"
 #include "geometry/self_intersection.h"
 #include "util/error.h"
 
@@ -420,9 +421,7 @@ private:
             const double s = length(axis), c = from.z;
             if (s > 1e-12) {
                 const Vec3 k = axis / s;
-                transform([&](const Vec3& v) {  // Rodrigues' rotation
-                    return v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c));
-                });
+                transform([&](const Vec3& v) { return rotateAbout(v, k, c, s); });
             } else if (c < 0) {
                 transform([](const Vec3& v) { return Vec3{v.x, -v.y, -v.z}; });
             }

@@ -129,15 +129,16 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
     }
     if (settings.tiltSeries) {
         const AsetSettings aset = settings.aset.value_or(AsetSettings{});
-        const TiltSeries series = tiltSeries(stone, settings.trace, r.camera, r.width, r.height, aset,
-                                             *settings.tiltSeries, &control);
+        const TiltSeries series =
+            tiltSeries(scene, r.camera, r.width, r.height, aset, *settings.tiltSeries, &control);
         if (series.cancelled || control.cancelled()) throw Canceled();
         result.stats["tilt_series"] = toJson(series, *settings.tiltSeries);
         std::vector<Image> frames;
+        const std::string axis = tiltAxisName(settings.tiltSeries->axisDeg);
         for (const TiltFrame& f : series.frames) {
-            char title[64];
-            std::snprintf(title, sizeof title, "%s tilted %+.1f deg about x", stone.name.c_str(), f.tiltDeg);
-            frames.push_back(asetPicture(f.view, aset, title));
+            char tilt[32];
+            std::snprintf(tilt, sizeof tilt, " tilted %+.1f deg about ", f.tiltDeg);
+            frames.push_back(asetPicture(f.view, aset, stone.name + tilt + axis));
         }
         result.tiltWebp = encodeAnimatedWebp(frames, kTiltFrameMs);
         result.tiltChartPng = encodePng(tiltChart(series, "Light return against tilt: " + stone.name));

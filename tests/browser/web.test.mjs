@@ -409,6 +409,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.setChecked('#f-aset', true);
     await page.setChecked('#f-tilt-series', true);
     const id = await submitAndGetId();
+    jobIds.viewer = id;
     await waitForFinished(id);
     await page.setChecked('#f-aset', false);
     await page.setChecked('#f-tilt-series', false);
@@ -446,6 +447,59 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.match(await page.textContent('[data-figure="fire.coloured_share"] .figure-value'), /% ± /);
     assert.ok(await page.locator('.fire-histogram-chart rect').count() > 2, 'the histogram has filled cells');
     await shot('09c-fire');
+  });
+
+  test('the comparison shows each design\'s ASET picture with its shares, and the tilt series where present', async () => {
+    // A second design seen by the viewer: the brilliant tilted by 8 deg, with the ASET view alone.
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    await page.selectOption('#f-mesh', jobIds.brilliantMesh);
+    await fillSmallJob({ width: '48', height: '48' });
+    await page.fill('#f-tilt', '8');
+    await page.setChecked('#f-aset', true);
+    const tilted = await submitAndGetId();
+    await waitForFinished(tilted);
+    await page.setChecked('#f-aset', false);
+    await page.fill('#f-tilt', '0');
+
+    await page.goto(`${baseUrl}/#/compare/${jobIds.viewer},${tilted},${jobIds.brilliant}`);
+    await page.waitForSelector('[data-section="viewer-compare"] .viewer-card:nth-child(3)');
+    const order = await page.$$eval('.compare-card', (cs) => cs.map((c) => c.dataset.id));
+    const cards = await page.$$eval('.viewer-card', (cs) => cs.map((c) => c.dataset.id));
+    assert.deepEqual(cards, order, 'the viewer cards in the ranking\'s order');
+    // The pictures load lazily, as they come near the window.
+    await page.locator('[data-section="viewer-compare"] .compare-grid').scrollIntoViewIfNeeded();
+    const pics = await picturesLoaded('[data-section="viewer-compare"]');
+    for (const p of pics) assert.ok(p.width > 0, `${p.src} did not load`);
+    const picsOf = async (id) => page.$$eval(`.viewer-card[data-id="${id}"] img`, (imgs) => imgs.map((i) => i.getAttribute('src').split('/').pop()));
+    assert.deepEqual(await picsOf(jobIds.viewer), ['aset.png', 'tilt.webp', 'tilt.png']);
+    assert.deepEqual(await picsOf(tilted), ['aset.png']);
+    assert.deepEqual(await picsOf(jobIds.brilliant), []);
+    assert.match(await page.textContent(`.viewer-card[data-id="${jobIds.brilliant}"]`), /no ASET view/);
+    // Each picture says which light it uses.
+    assert.match(await page.textContent(`.compare-card[data-id="${jobIds.brilliant}"] .pic-render figcaption`), /studio light, the viewer's head shadow/);
+    assert.match(await page.textContent(`.compare-card[data-id="${jobIds.brilliant}"] .pic-heatmap figcaption`), /light/);
+    assert.match(await page.textContent(`.viewer-card[data-id="${jobIds.viewer}"] figcaption`), /Scintillation .* 21 frames/);
+    // Each design's shares, as its statistics give them, in its card and in the table's column.
+    const column = 1 + order.indexOf(tilted);
+    for (const id of [jobIds.viewer, tilted]) {
+      const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+      assert.equal(await page.locator(`.viewer-card[data-id="${id}"] table.aset-shares tbody tr`).count(), 5);
+      const bright = await page.textContent(`.viewer-card[data-id="${id}"] tr[data-aset="bright"] td`);
+      assert.ok(Math.abs(parseFloat(bright) - stats.aset.shares.bright.share * 100) <= 0.05, `${bright} vs ${stats.aset.shares.bright.share}`);
+      if (id === tilted) {
+        const cell = await page.textContent(`.viewer-compare-table tbody tr:nth-child(2) td:nth-child(${column + 1})`);
+        assert.equal(cell, bright);
+      }
+    }
+    const rows = await page.$$eval('.viewer-compare-table tbody tr', (trs) => trs.map((tr) => tr.textContent));
+    const sparkle = rows.find((r) => r.startsWith('Scintillation'));
+    assert.equal((sparkle.match(/not asked for/g) || []).length, 2, sparkle);
+    await shot('09c-compare-viewer');
+    await page.setViewportSize(PHONE);
+    await page.waitForTimeout(200);
+    assert.ok(await noHorizontalOverflow(), 'the viewer comparison fits a phone');
+    await page.setViewportSize(DESKTOP);
   });
 
   test('the home page fits a phone', async () => {

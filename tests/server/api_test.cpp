@@ -256,7 +256,7 @@ TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
     json job = smallJob();
     job["render"] = {{"width", 24}, {"height", 24}, {"samples", 1}, {"map_photons", 2000}};
     job["aset"] = {{"samples", 2}};
-    job["tilt_series"] = {{"max_deg", 2}};
+    job["tilt_series"] = {{"max_deg", 2}, {"axis_deg", 90}};
     auto r = submit(job);
     ASSERT_TRUE(r);
     ASSERT_EQ(r->status, 202) << r->body;
@@ -276,6 +276,7 @@ TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
     const json stats = json::parse(client_->Get(self + "/stats")->body);
     EXPECT_EQ(stats["aset"]["shares"].size(), 5u);
     EXPECT_EQ(stats["tilt_series"]["frames"].size(), 5u);
+    EXPECT_EQ(stats["tilt_series"]["settings"]["axis_deg"], 90);
 
     json bad = smallJob();
     bad["aset"] = json::object();
@@ -286,6 +287,8 @@ TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
     bad.erase("aset");
     bad["tilt_series"] = {{"max_deg", 90}};
     expectProblem(submit(bad), 422, "tilt_series.max_deg");
+    bad["tilt_series"] = {{"axis_deg", 400}};
+    expectProblem(submit(bad), 422, "tilt_series.axis_deg");
 }
 
 TEST_F(ServiceTest, StatsOnlyJobHasNoPictures) {

@@ -9,6 +9,7 @@
 
 #include "cli/trace_options.h"
 #include "render/render_settings.h"
+#include "render/view_settings.h"
 #include "study/study_spec.h"
 #include "util/error.h"
 
@@ -32,10 +33,13 @@ void forEachField(const std::vector<FieldInfo>& fields, const std::string& path,
     }
 }
 
-// Every leaf of a job: the trace settings at the top, the render settings under "render".
+// Every leaf of a job: the trace settings at the top, the render settings under "render", the viewer's
+// views under "aset" and "tilt_series".
 void forEachJobField(const std::function<void(const std::string&, const FieldInfo&)>& visit) {
     forEachField(traceSettingsSchema().fields(), "", visit);
     forEachField(renderSettingsSchema().fields(), "render", visit);
+    forEachField(asetSettingsSchema().fields(), "aset", visit);
+    forEachField(tiltSeriesSettingsSchema().fields(), "tilt_series", visit);
 }
 
 json::json_pointer pointer(const std::string& path) {
@@ -94,6 +98,17 @@ TEST(SettingsSchema, ABadValueInEachFieldNamesItsDottedPath) {
     EXPECT_EQ(errorField({{"mesh", "m"}, {"material", "unobtainium"}, {"n", 2}}), "no error");
     EXPECT_EQ(errorField({{"mesh", 3}}), "mesh");
     EXPECT_EQ(errorField({{"mesh", "m"}, {"render", "yes"}}), "render");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"render", true}, {"aset", 1}}), "aset");
+    EXPECT_EQ(
+        errorField({{"mesh", "m"}, {"render", true}, {"tilt_series", {{"max_deg", 5}, {"step_deg", 6}}}}),
+        "tilt_series.step_deg");
+    EXPECT_EQ(
+        errorField({{"mesh", "m"}, {"render", true}, {"tilt_series", {{"max_deg", 45}, {"step_deg", 0.2}}}}),
+        "tilt_series.step_deg");
+    EXPECT_EQ(
+        errorField({{"mesh", "m"}, {"render", true}, {"tilt_series", {{"max_deg", 45}, {"step_deg", 0.5}}}}),
+        "no error");
+    EXPECT_EQ(errorField({{"mesh", "m"}, {"tilt_series", json::object()}}), "tilt_series");
 }
 
 TEST(SettingsSchema, IntegerRangesAreExact) {
@@ -124,6 +139,8 @@ TEST(SettingsSchema, JsonRoundTrip) {
     t.light = {LightModelKind::Point, {1, 2, -3}, 12.5, 30, SkyKind::Cosine, {4, 5, 60}};
     t.fire = {true, 3, 400};
     spec.settings.render = RenderSettings{64, 48, 2, 5, 5000, {45, -30, 6, 33}};
+    spec.settings.aset = AsetSettings{20, 40, 3, true};
+    spec.settings.tiltSeries = TiltSeriesSettings{5, 0.5, 90};
     const json written = toJson(spec);
     const StudySpec back = StudySpec::fromJson(written);
     EXPECT_EQ(toJson(back), written);
@@ -134,9 +151,13 @@ TEST(SettingsSchema, JsonRoundTrip) {
         ASSERT_TRUE(written.contains(pointer(path))) << path;
         StudySpec defaults;
         defaults.settings.render.emplace();
+        defaults.settings.aset.emplace();
+        defaults.settings.tiltSeries.emplace();
         EXPECT_NE(written[pointer(path)], toJson(defaults)[pointer(path)]) << path;
     });
     spec.settings.render.reset();
+    spec.settings.aset.reset();
+    spec.settings.tiltSeries.reset();
     EXPECT_EQ(toJson(StudySpec::fromJson(toJson(spec))), toJson(spec));
 }
 
@@ -144,15 +165,18 @@ TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
     CLI::App app;
     cli::TraceOptions trace;
     cli::addTraceOptions(&app, trace);
-    cli::SettingsFlags render;
+    cli::SettingsFlags render, aset, tilt;
     render.add(&app, renderSettingsSchema().fields(), toJson(RenderSettings{}), "render");
+    aset.add(&app, asetSettingsSchema().fields(), toJson(AsetSettings{}), "aset");
+    tilt.add(&app, tiltSeriesSettingsSchema().fields(), toJson(TiltSeriesSettings{}), "tilt_series");
     std::set<std::string> flags;
     forEachJobField([&](const std::string& path, const FieldInfo& f) {
         EXPECT_NE(app.get_option_no_throw(f.doc.flag), nullptr) << path;
         EXPECT_FALSE(f.doc.help.empty()) << path;
         EXPECT_TRUE(flags.insert(f.doc.flag).second) << "two fields share " << f.doc.flag;
     });
-    app.parse(std::vector<std::string>{"1", "0", "0", "--light-direction", "30", "--fov", "point", "--light",
+    app.parse(std::vector<std::string>{"90", "--tilt-axis", "4", "--tilt-series", "--aset-white-leakage", "1",
+                                       "0", "0", "--light-direction", "30", "--fov", "point", "--light",
                                        "1e6", "--photons", "round_brilliant", "--mesh"});
     const TraceSettings t = cli::toTraceSettings(trace);
     EXPECT_EQ(t.photons, 1'000'000u);
@@ -162,6 +186,15 @@ TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
     RenderSettings r;
     render.apply(renderSettingsSchema(), r);
     EXPECT_EQ(r.camera.fovDeg, 30);
+    EXPECT_TRUE(aset.given());
+    AsetSettings a;
+    aset.apply(asetSettingsSchema(), a);
+    EXPECT_TRUE(a.whiteLeakage);
+    EXPECT_EQ(a.samples, 8);
+    TiltSeriesSettings ts;
+    tilt.apply(tiltSeriesSettingsSchema(), ts);
+    EXPECT_EQ(ts.maxDeg, 4);
+    EXPECT_EQ(ts.axisDeg, 90);
 
     CLI::App bad;
     cli::TraceOptions badTrace;
@@ -172,6 +205,17 @@ TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
         FAIL();
     } catch (const Error& e) {
         EXPECT_EQ(std::string(e.what()), "--tilt must be a number from -90 to 90 (got '95')");
+    }
+    CLI::App badTilt;
+    cli::SettingsFlags tooFine;
+    tooFine.add(&badTilt, tiltSeriesSettingsSchema().fields(), toJson(TiltSeriesSettings{}), "tilt_series");
+    badTilt.parse(std::vector<std::string>{"0.01", "--tilt-step"});
+    TiltSeriesSettings fine;
+    try {
+        tooFine.apply(tiltSeriesSettingsSchema(), fine);
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("--tilt-step", 0), 0u) << e.what();
     }
 }
 
@@ -225,8 +269,7 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     const json api = json::parse(in);
     const json& job = api["components"]["schemas"]["JobRequest"];
     const json& properties = job["properties"];
-    // The viewer's views (aset, tilt_series) have readers of their own (render/view_settings.h), not tables yet.
-    std::set<std::string> keys = {"mesh", "name", "render", "aset", "tilt_series"};
+    std::set<std::string> keys = {"mesh", "name", "render"};
     for (const FieldInfo& f : traceSettingsSchema().fields()) {
         keys.insert(f.key);
         ASSERT_TRUE(properties.contains(f.key)) << f.key;
@@ -234,10 +277,18 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     }
     std::set<std::string> documented;
     for (const auto& [key, value] : properties.items()) documented.insert(key);
-    EXPECT_EQ(documented, keys);
     FieldInfo render = settings::describe("render", FieldType::Object);
     render.fields = &renderSettingsSchema().fields();
     expectOpenApiAgrees(properties["render"]["oneOf"][1], render, "render");
+    FieldInfo aset = settings::describe("aset", FieldType::Object);
+    aset.fields = &asetSettingsSchema().fields();
+    keys.insert("aset");
+    expectOpenApiAgrees(properties["aset"], aset, "aset");
+    FieldInfo tilt = settings::describe("tilt_series", FieldType::Object);
+    tilt.fields = &tiltSeriesSettingsSchema().fields();
+    keys.insert("tilt_series");
+    expectOpenApiAgrees(properties["tilt_series"], tilt, "tilt_series");
+    EXPECT_EQ(documented, keys);
 }
 
 }  // namespace

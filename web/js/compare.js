@@ -7,6 +7,7 @@ import { decimalsFor, fmtPctErr, shortId } from './format.js';
 import { pictures, scaleEnd } from './heatmap.js';
 import { displayMeshName } from './meshes.js';
 import { jobSummary } from './progress.js';
+import { viewerCompare } from './compare_viewer.js';
 import { regionTable } from './result.js';
 
 const compareView = { ids: [] };
@@ -48,7 +49,7 @@ export async function showCompare(ids) {
   if (failed.length) {
     parts.push(h('p', { class: 'form-error', role: 'alert' }, failed.map((f) => `Job ${shortId(f.id)}: ${f.error}`).join('; ')));
   }
-  if (ok.length) parts.push(ranking(ok), compareCards(ok), compareTable(ok), ...[fireCompare(ok, entryName)].filter(Boolean));
+  if (ok.length) parts.push(...[ranking(ok), compareCards(ok), viewerCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName)].filter(Boolean));
   body.replaceChildren(...parts);
 }
 

@@ -108,17 +108,19 @@ export function pictures(job, name, stats, commonScale = 0) {
     return h('p', { class: 'empty' }, 'No pictures: this job ran without rendering (statistics only).');
   }
   const size = render ? { width: render.width, height: render.height } : {};
+  // Which light each picture uses (docs/physics.md, "Which light each picture uses").
+  const model = (job.settings && job.settings.light && job.settings.light.model) || 'the job\'s';
   const items = [
-    { href: links.render, cls: 'pic-render', title: 'Render', alt: `Render of ${name} as the camera sees it` },
-    { href: links.heatmap, cls: 'pic-heatmap', title: 'Facet heat-map', alt: `Heat-map of ${name}: facets shaded by the share of light leaving them` },
-    { href: links.angular, cls: 'pic-angular', title: 'Exit angles', alt: `Chart of ${name}: where the light leaves, by angle from vertical` },
+    { href: links.render, cls: 'pic-render', title: 'Render', light: 'studio light, the viewer\'s head shadow', alt: `Render of ${name} as the camera sees it` },
+    { href: links.heatmap, cls: 'pic-heatmap', title: 'Facet heat-map', light: `${model} light`, alt: `Heat-map of ${name}: facets shaded by the share of light leaving them` },
+    { href: links.angular, cls: 'pic-angular', title: 'Exit angles', light: `${model} light`, alt: `Chart of ${name}: where the light leaves, by angle from vertical` },
   ];
   const drawHeatmap = commonScale > 0 && links.heatmap_layout;
   const figures = items.map((p) => h('figure', { class: `picture ${p.cls}` },
     h('a', { href: p.href, target: '_blank', rel: 'noopener' },
       drawHeatmap && p.cls === 'pic-heatmap' ? h('div', { class: 'heatmap-pending' })
         : h('img', { src: p.href, alt: p.alt, ...(p.cls === 'pic-angular' ? {} : size), decoding: 'async' })),
-    h('figcaption', {}, p.title)));
+    h('figcaption', {}, p.title, h('span', { class: 'muted picture-light' }, ` · ${p.light}`))));
   if (links.heatmap_layout) heatmapShapes(figures[1], links.heatmap_layout, stats, drawHeatmap ? commonScale : 0);
   return h('div', { class: 'pictures' }, figures);
 }

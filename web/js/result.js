@@ -137,32 +137,46 @@ function proportionList(mesh) {
 }
 
 // The ASET classes in the order of aset.png's legend (docs/physics.md, "ASET view").
-const ASET_CLASSES = [
+export const ASET_CLASSES = [
   ['head', 'Head cone (blue)'], ['bright', 'Bright light (red)'], ['low', 'Low light (green)'],
   ['leakage', 'Leakage'], ['trapped', 'Trapped'],
 ];
 
-// What a viewer sees: the ASET picture with its shares, the tilt series' animation and chart.
-function viewerSection(job, stats) {
+// The tilt series' scintillation in words.
+export function scintillationText(tilt) {
+  return `Scintillation ${fmtPctErr(tilt.scintillation, tilt.scintillation_stderr)} of the face-up area per frame, over ${tilt.frames.length} frames`;
+}
+
+// A job's viewer figures: the ASET picture with its shares, the tilt series' animation and chart; none
+// when the job asked for neither.
+export function viewerFigures(job, stats, name = '') {
   const links = job.links || {};
-  if (!links.aset && !links.tilt_animation) return null;
   const aset = stats.aset;
   const tilt = stats.tilt_series;
+  const of = name ? ` of ${name}` : ' of the stone';
+  return [
+    links.aset ? h('figure', { class: 'viewer-aset' },
+      h('img', { src: links.aset, alt: `ASET view${of} face-up`, loading: 'lazy' }),
+      aset ? h('table', { class: 'data aset-shares' },
+        h('caption', {}, `Shares of the face-up area (${fmtInt(aset.rays)} view rays)`),
+        h('tbody', {}, ASET_CLASSES.filter(([k]) => aset.shares[k]).map(([k, label]) => h('tr', { 'data-aset': k },
+          h('th', { scope: 'row' }, label),
+          h('td', { class: 'num' }, fmtPctErr(aset.shares[k].share, aset.shares[k].stderr)))))) : null) : null,
+    links.tilt_animation ? h('figure', { class: 'viewer-tilt' },
+      h('img', { src: links.tilt_animation, alt: `The stone${name ? ` (${name})` : ''} rocking through the tilt series (animation)`, loading: 'lazy' }),
+      tilt ? h('figcaption', {}, scintillationText(tilt)) : null,
+      h('img', { src: links.tilt_chart, alt: `Light return against tilt${name ? `, ${name}` : ''}`, loading: 'lazy' })) : null,
+  ].filter(Boolean);
+}
+
+// What a viewer sees: the ASET picture with its shares, the tilt series' animation and chart.
+function viewerSection(job, stats) {
+  const figures = viewerFigures(job, stats);
+  if (!figures.length) return null;
   return h('section', { class: 'card', 'aria-labelledby': 'viewer-title', 'data-section': 'viewer' },
     h('h2', { id: 'viewer-title' }, 'What a viewer sees'),
-    h('p', { class: 'hint' }, 'Each view ray traced back through the stone and coloured by where its light comes from (AGS ASET colours).'),
-    h('div', { class: 'result-grid' },
-      links.aset ? h('figure', { class: 'viewer-aset' },
-        h('img', { src: links.aset, alt: 'ASET view of the stone face-up', loading: 'lazy' }),
-        aset ? h('table', { class: 'data aset-shares' },
-          h('caption', {}, `Shares of the face-up area (${fmtInt(aset.rays)} view rays)`),
-          h('tbody', {}, ASET_CLASSES.filter(([k]) => aset.shares[k]).map(([k, label]) => h('tr', { 'data-aset': k },
-            h('th', { scope: 'row' }, label),
-            h('td', { class: 'num' }, fmtPctErr(aset.shares[k].share, aset.shares[k].stderr)))))) : null) : null,
-      links.tilt_animation ? h('figure', { class: 'viewer-tilt' },
-        h('img', { src: links.tilt_animation, alt: 'The stone rocking through the tilt series (animation)', loading: 'lazy' }),
-        tilt ? h('figcaption', {}, `Scintillation ${fmtPctErr(tilt.scintillation, tilt.scintillation_stderr)} of the face-up area per frame, over ${tilt.frames.length} frames`) : null,
-        h('img', { src: links.tilt_chart, alt: 'Light return against tilt', loading: 'lazy' })) : null));
+    h('p', { class: 'hint' }, 'Each view ray traced back through the stone and coloured by where its light comes from (AGS ASET colours: the sky by elevation and the viewer\'s head cone, not the job\'s light model).'),
+    h('div', { class: 'result-grid' }, figures));
 }
 
 function resultPage(job, stats) {
