@@ -1,11 +1,13 @@
 // Stats-only photon tracing of a 57-facet round brilliant (collimated light straight down, no dispersion),
 // in photons per second for 1 and 2 threads; the same with dispersion, and the shipped 121-facet brilliant.
-// Figures go to docs/performance.md ("Photon tracing"). --simd=NAME (e.g. AVX2, SSE4) limits the dispatch to
+// A fire trace against the plain one, interleaved (BM_FireVsPlainBrilliant57). Figures go to
+// docs/performance.md ("Photon tracing", "Fire trace"). --simd=NAME (e.g. AVX2, SSE4) limits the dispatch to
 // that SIMD target, to measure a lower target on a better CPU; --simd=list prints the targets this CPU runs.
 // scripts/perf-figures runs it for every target and two builds, interleaved.
 //   build-*/bin/bench_trace [--simd=AVX2] --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -15,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bench_timing.h"
 #include "geometry/halfspace.h"
 #include "io/mesh_io.h"
 #include "trace/photon_tracer.h"
@@ -151,6 +154,31 @@ void BM_TraceShippedWithoutGirdle(benchmark::State& state) {
     traceStats(state, knifeEdge);
 }
 BENCHMARK(BM_TraceShippedWithoutGirdle)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+// A fire trace (each photon also at the C, D and F lines, trace/fire_trace.h) against the plain trace it
+// extends, 1 M photons of the dispersive job each, timed alternately in each iteration so that a loaded
+// machine slows both alike: the medians and their ratio (target: fire at most 2x plain).
+void BM_FireVsPlainBrilliant57(benchmark::State& state) {
+    TraceSettings plain;
+    plain.photons = 1'000'000;
+    plain.threads = int(state.range(0));
+    TraceSettings fire = plain;
+    fire.fire.enabled = true;
+    const Scene plainScene(brilliant(), plain), fireScene(brilliant(), fire);
+    std::vector<double> plainSeconds, fireSeconds;
+    for (auto _ : state) {
+        for (const Scene* scene : {&plainScene, &fireScene}) {
+            const auto start = std::chrono::steady_clock::now();
+            const TraceResult r = trace(*scene);
+            benchmark::DoNotOptimize(r.stats.exited);
+            (scene == &plainScene ? plainSeconds : fireSeconds).push_back(bench::seconds(start));
+        }
+    }
+    const double p = bench::median(plainSeconds), f = bench::median(fireSeconds);
+    state.counters["plain_ms"] = 1e3 * p;
+    state.counters["fire_ms"] = 1e3 * f;
+    state.counters["fire_over_plain"] = f / p;
+}
+BENCHMARK(BM_FireVsPlainBrilliant57)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(9);
 
 }  // namespace
 

@@ -44,6 +44,7 @@ void run(const TraceCommandOptions& o) {
     if (!comm.isRoot()) return;
     nlohmann::json stats = statsToJson(result.stats, stone, settings, result.timing);
     if (comm.size() > 1) stats["timing"]["ranks"] = comm.size();
+    if (result.fire) stats["fire"] = fireToJson(*result.fire, stone, settings);
     const std::string json = stats.dump(2) + "\n";
     if (o.jsonPath.empty()) {
         std::cout << json;

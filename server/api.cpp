@@ -236,8 +236,12 @@ json Api::statusJson(const JobRecord& job) const {
             progress = {{"phase", "done"}, {"done", 1}, {"total", 1}, {"fraction", 1.0}};
             step = steps;
             overall = 1;
+            // A result that needs a part of the request is linked when that part is an object not switched off
+            // ("fire": {"enabled": false} makes no fire heat-map).
             for (const ResultFile& f : kResultFiles)
-                if (f.needs.empty() || (request.contains(f.needs) && request[std::string(f.needs)].is_object()))
+                if (f.needs.empty() ||
+                    (request.contains(f.needs) && request[std::string(f.needs)].is_object() &&
+                     request[std::string(f.needs)].value("enabled", true)))
                     links[std::string(f.link)] = self + "/" + std::string(f.route);
             break;
         }

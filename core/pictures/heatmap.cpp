@@ -71,17 +71,22 @@ nlohmann::json toJson(const HeatmapLayout& layout, const Stone& stone) {
     return {{"width", layout.width}, {"height", layout.height}, {"facets", facets}};
 }
 
-Image facetHeatmap(const Stone& stone, const FacetStats& stats) {
-    if (stats.facets.size() != stone.facets.size())
-        throw Error("statistics do not belong to stone '" + stone.name + "'");
+namespace {
+
+// What a heat-map says about the shares it shows.
+struct ShareWording {
+    std::string title;  // above the diagrams
+    std::string whole;  // what the shares are of, with its count, e.g. "of the photons hitting the stone (n)"
+    std::string bar;    // the colour bar's label
+};
+
+// The facet diagram of `share` (one per facet, in [0, 1]); facets of zero share stay unlabelled.
+Image shareHeatmap(const Stone& stone, const std::vector<double>& share, const ShareWording& words) {
     const HeatmapLayout layout = heatmapLayout(stone);
     Image image(layout.width, layout.height, {1, 1, 1});
     const Rgb ink{0.1f, 0.1f, 0.1f};
 
-    const double hit = double(std::max<uint64_t>(stats.hit, 1));
-    auto shareOf = [&](size_t f) { return double(stats.facets[f].leaving) / hit; };
-    double maxShare = 0;
-    for (size_t f = 0; f < stone.facets.size(); ++f) maxShare = std::max(maxShare, shareOf(f));
+    const double maxShare = *std::max_element(share.begin(), share.end());
     // The colour scale ends on the colour bar's first tick at or above the largest share.
     double step;
     niceTicks(100 * maxShare, step);
@@ -92,38 +97,61 @@ Image facetHeatmap(const Stone& stone, const FacetStats& stats) {
         for (const HeatmapFacet& f : layout.facets) {
             if (f.side != side) continue;
             order.push_back(&f);
-            fillPolygon(image, f.outline, viridis(barMax > 0 ? shareOf(f.facet) / barMax : 0));
+            fillPolygon(image, f.outline, viridis(barMax > 0 ? share[f.facet] / barMax : 0));
             drawPolyline(image, f.outline, true, 1.2, ink);
         }
         // The busiest facets of this side, labelled with their shares.
         std::vector<const HeatmapFacet*> busiest = order;
         std::sort(busiest.begin(), busiest.end(), [&](const HeatmapFacet* a, const HeatmapFacet* b) {
-            return shareOf(a->facet) > shareOf(b->facet);
+            return share[a->facet] > share[b->facet];
         });
         busiest.resize(std::min<size_t>(busiest.size(), 8));
         for (const HeatmapFacet* f : busiest) {
-            if (stats.facets[f->facet].leaving == 0) continue;
-            const double t = barMax > 0 ? shareOf(f->facet) / barMax : 0;
-            drawText(image, f->centroid[0], f->centroid[1] - textHeight(1.5) / 2,
-                     percent(shareOf(f->facet), 1), 1.5, contrastOn(t), Align::Center);
+            if (share[f->facet] == 0) continue;
+            const double t = barMax > 0 ? share[f->facet] / barMax : 0;
+            drawText(image, f->centroid[0], f->centroid[1] - textHeight(1.5) / 2, percent(share[f->facet], 1),
+                     1.5, contrastOn(t), Align::Center);
         }
         const char* title = side == 0 ? "Crown and table, from above" : "Pavilion, from below";
         drawText(image, kCentre[side][0], 78, title, 2.5, ink, Align::Center);
     }
 
-    drawText(image, kWidth / 2.0, 14, "Share of the light leaving through each facet", 3, ink, Align::Center);
+    drawText(image, kWidth / 2.0, 14, words.title, 3, ink, Align::Center);
     std::array<double, kRegionCount> regionShare{};
-    for (size_t f = 0; f < stone.facets.size(); ++f)
-        regionShare[size_t(stone.facets[f].region)] += shareOf(f);
-    const std::string summary = "of the photons hitting the stone (" + std::to_string(stats.hit) +
-                                "): table " + percent(regionShare[size_t(Region::Table)], 1) + ", crown " +
-                                percent(regionShare[size_t(Region::Crown)], 1) + ", pavilion " +
+    for (size_t f = 0; f < stone.facets.size(); ++f) regionShare[size_t(stone.facets[f].region)] += share[f];
+    const std::string summary = words.whole + ": table " + percent(regionShare[size_t(Region::Table)], 1) +
+                                ", crown " + percent(regionShare[size_t(Region::Crown)], 1) + ", pavilion " +
                                 percent(regionShare[size_t(Region::Pavilion)], 1) + ", girdle " +
                                 percent(regionShare[size_t(Region::Girdle)], 1);
     drawText(image, kWidth / 2.0, 48, summary, 2, ink, Align::Center);
-    drawColourBar(image, 200, kHeight - 110, kWidth - 400, 24, barMax > 0 ? 100 * barMax : 1,
-                  "share of the light leaving through the facet (%)", 2);
+    drawColourBar(image, 200, kHeight - 110, kWidth - 400, 24, barMax > 0 ? 100 * barMax : 1, words.bar, 2);
     return image;
+}
+
+}  // namespace
+
+Image facetHeatmap(const Stone& stone, const FacetStats& stats) {
+    if (stats.facets.size() != stone.facets.size())
+        throw Error("statistics do not belong to stone '" + stone.name + "'");
+    const double hit = double(std::max<uint64_t>(stats.hit, 1));
+    std::vector<double> share;
+    for (const FacetCounts& c : stats.facets) share.push_back(double(c.leaving) / hit);
+    return shareHeatmap(stone, share,
+                        {"Share of the light leaving through each facet",
+                         "of the photons hitting the stone (" + std::to_string(stats.hit) + ")",
+                         "share of the light leaving through the facet (%)"});
+}
+
+Image fireHeatmap(const Stone& stone, const FireStats& fire) {
+    if (fire.colouredByFacet.size() != stone.facets.size())
+        throw Error("fire statistics do not belong to stone '" + stone.name + "'");
+    const double coloured = double(std::max<uint64_t>(fire.coloured, 1));
+    std::vector<double> share;
+    for (uint64_t c : fire.colouredByFacet) share.push_back(double(c) / coloured);
+    return shareHeatmap(stone, share,
+                        {"Share of the fire leaving through each facet",
+                         "of the coloured exits (" + std::to_string(fire.coloured) + ")",
+                         "share of the fire leaving through the facet (%)"});
 }
 
 }  // namespace facetlight

@@ -1,18 +1,22 @@
 #pragma once
 // The facet diagram: the crown and table seen from above (left) and the pavilion seen from below (right),
-// each facet filled by its share of the light leaving the stone, with outlines, the busiest facets' shares
-// written on them and a colour bar with numbered ticks (readable without colour).
+// each facet filled by its share of the light leaving the stone (or, the fire view, of the fire), with
+// outlines, the busiest facets' shares written on them and a colour bar with numbered ticks (readable without
+// colour).
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "pictures/image.h"
 #include "stats/facet_stats.h"
+#include "stats/fire_stats.h"
 #include "stone/stone.h"
 
 namespace facetlight {
 
 Image facetHeatmap(const Stone& stone, const FacetStats& stats);
+// The fire view: each facet filled by its share of the fire (the coloured exits of a fire trace).
+Image fireHeatmap(const Stone& stone, const FireStats& fire);
 
 // Where each facet lies in facetHeatmap's picture, so that a page showing it can tell which facet is under
 // the pointer: the outline and centroid in pixels, in drawing order (far facets first; a later facet covers

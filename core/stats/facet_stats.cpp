@@ -15,11 +15,6 @@ double share(uint64_t count, uint64_t of) {
     return of ? double(count) / double(of) : 0.0;
 }
 
-// Binomial standard error of a proportion over n trials.
-double stderrOf(double p, uint64_t n) {
-    return n ? std::sqrt(std::max(0.0, p * (1 - p)) / double(n)) : 0.0;
-}
-
 json meshJson(const Stone& stone) {
     return {{"name", stone.name},
             {"facets", stone.facets.size()},
@@ -33,6 +28,14 @@ json histogramJson(const std::array<uint64_t, kHistogramBins>& h) {
 }
 
 }  // namespace
+
+double stderrOf(double p, uint64_t n) {
+    return n ? std::sqrt(std::max(0.0, p * (1 - p)) / double(n)) : 0.0;
+}
+
+double meanStderr(double mean, double meanSquare, uint64_t n) {
+    return n ? std::sqrt(std::max(0.0, meanSquare - mean * mean) / double(n)) : 0.0;
+}
 
 ExitAngleBins::ExitAngleBins() {
     for (int k = 0; k <= kHistogramBins; ++k) bound_[k] = float(std::cos(radians(k)));
@@ -124,7 +127,7 @@ json statsToJson(const FacetStats& s, const Stone& stone, const TraceSettings& s
     const double w = n ? double(s.weightSum) / kWeightScale / double(n) : 0.0;
     const double w2 = n ? double(s.weightSquareSum) / kWeightScale / double(n) : 0.0;
     totals["weighted_return"] = w;
-    totals["weighted_return_stderr"] = n ? std::sqrt(std::max(0.0, w2 - w * w) / double(n)) : 0.0;
+    totals["weighted_return_stderr"] = meanStderr(w, w2, n);
     for (int c = 0; c < kConeCount; ++c) {
         figure("cone_return_" + std::to_string(int(kConeDegrees[c])), share(s.coneReturn[c], n));
     }

@@ -30,6 +30,11 @@ constexpr std::array<double, kConeCount> kConeDegrees{30, 45, 60};
 // Fixed-point scale of the cosine weights: 1e10 photons of weight 1 still fit in 64 bits.
 constexpr double kWeightScale = 1073741824.0;  // 2^30
 
+// Binomial standard error of a proportion p over n trials.
+double stderrOf(double p, uint64_t n);
+// Standard error of a mean over n samples, from the means of the samples and of their squares.
+double meanStderr(double mean, double meanSquare, uint64_t n);
+
 // The histogram bin of an exit at cos(angle to the vertical) = cosUp: floor(angle in degrees), at most 179.
 // Without acos: a table over cosUp gives the bin within two of the answer, and comparisons with the bin
 // boundaries cos(k degrees) finish it.

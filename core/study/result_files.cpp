@@ -2,7 +2,7 @@
 
 namespace facetlight {
 
-const std::array<ResultFile, 10> kResultFiles{{
+const std::array<ResultFile, 11> kResultFiles{{
     {"stats.csv", "text/csv", "stats.csv", "stats_csv", "", [](const StudyResult& r) { return r.statsCsv; },
      [](StudyResult& r, std::string&& b) { r.statsCsv = std::move(b); }},
     {"render.png", "image/png", "render.png", "render", "render",
@@ -17,6 +17,9 @@ const std::array<ResultFile, 10> kResultFiles{{
     {"heatmap.json", "application/json", "heatmap.json", "heatmap_layout", "render",
      [](const StudyResult& r) { return r.heatmapLayout; },
      [](StudyResult& r, std::string&& b) { r.heatmapLayout = std::move(b); }},
+    {"heatmap_fire.png", "image/png", "heatmap_fire.png", "heatmap_fire", "fire",
+     [](const StudyResult& r) { return r.fireHeatmapPng; },
+     [](StudyResult& r, std::string&& b) { r.fireHeatmapPng = std::move(b); }},
     {"angular.png", "image/png", "angular.png", "angular", "render",
      [](const StudyResult& r) { return r.angularPng; },
      [](StudyResult& r, std::string&& b) { r.angularPng = std::move(b); }},

@@ -22,6 +22,6 @@ struct ResultFile {
 };
 
 // In the order they are written: stats.json last, so that its presence says a folder is complete.
-extern const std::array<ResultFile, 10> kResultFiles;
+extern const std::array<ResultFile, 11> kResultFiles;
 
 }  // namespace facetlight

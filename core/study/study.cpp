@@ -91,6 +91,10 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
         result.statsCsv = csv.str();
         result.heatmapPng = encodePng(facetHeatmap(stone, traced.stats));
         result.heatmapLayout = toJson(heatmapLayout(stone), stone).dump();
+        if (traced.fire) {
+            result.stats["fire"] = fireToJson(*traced.fire, stone, settings.trace);
+            result.fireHeatmapPng = encodePng(fireHeatmap(stone, *traced.fire));
+        }
     }
 
     if (!settings.render) {

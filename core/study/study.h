@@ -35,6 +35,7 @@ struct StudyResult {
     std::string renderPng, heatmapPng, angularPng;  // empty without a render (the heat-map: always)
     std::string heatmapLayout;  // heatmap.png's facets in pixels (JSON, docs/stats-schema.md), with it
     std::string asetPng;        // with an ASET view
+    std::string fireHeatmapPng;          // with a fire trace: each facet's share of the fire
     std::string tiltWebp, tiltChartPng;  // with a tilt series: the animation and light return against tilt
     std::string firePng;                 // with a fire picture
 };

@@ -13,19 +13,29 @@ uint64_t localPhotons(const Communicator& comm, uint64_t photons) {
 TraceResult traceDistributed(Communicator& comm, const Scene& scene, RunControl* control) {
     const auto start = std::chrono::steady_clock::now();
     const TraceSettings& settings = scene.settings();
-    TraceResult result{FacetStats(scene.stone().facets.size()), {0, settings.threads}, false};
+    TraceResult result{FacetStats(scene.stone().facets.size()), {0, settings.threads}, false, std::nullopt};
     const IndexRange blocks = partition(blockCount(settings.photons), comm.rank(), comm.size());
+    if (settings.fire.enabled) result.fire = FireStats(scene.stone().facets.size());
+    FireStats* fire = result.fire ? &*result.fire : nullptr;
     const bool finished =
-        traceBlocks(scene, blocks.begin, blocks.end, settings.threads, result.stats, control);
+        traceBlocks(scene, blocks.begin, blocks.end, settings.threads, result.stats, control, fire);
 
-    // The last element counts cancelled ranks, so a cancel anywhere is seen on rank 0.
+    // The fire tallies follow the trace's; the last element counts cancelled ranks, so a cancel anywhere is
+    // seen on rank 0.
     std::vector<uint64_t> tallies = result.stats.tallies();
+    const size_t traceTallies = tallies.size();
+    if (fire) {
+        const std::vector<uint64_t> fireTallies = fire->tallies();
+        tallies.insert(tallies.end(), fireTallies.begin(), fireTallies.end());
+    }
     tallies.push_back(finished ? 0 : 1);
     comm.sumToRoot(tallies);
     if (comm.isRoot()) {
         result.cancelled = tallies.back() != 0;
         tallies.pop_back();
-        result.stats.setTallies(tallies);
+        const std::span<const uint64_t> all(tallies);
+        result.stats.setTallies(all.first(traceTallies));
+        if (fire) fire->setTallies(all.subspan(traceTallies));
     } else {
         result.cancelled = !finished;
     }

@@ -4,10 +4,12 @@
 // and the tallies are integers, so a trace gives the same bits for any thread count, and a distributed run
 // that splits the blocks among ranks and merges their tallies reproduces a local one exactly.
 #include <cstdint>
+#include <optional>
 
 #include "geometry/ray.h"
 #include "intersect/scene.h"
 #include "stats/facet_stats.h"
+#include "stats/fire_stats.h"
 #include "util/run_control.h"
 
 namespace facetlight {
@@ -34,11 +36,12 @@ inline uint64_t blockCount(uint64_t photons) {
 }
 
 // Traces blocks [firstBlock, lastBlock) of the job (clipped to settings.photons) with `threads` workers and
-// adds their tallies to `stats` (sized for the stone's facets), advancing control->done() by the photons
-// traced. Returns false when cancelled before all blocks were traced. A distributed run gives each rank a
-// block range and sums the tallies with FacetStats::merge.
+// adds their tallies to `stats` (sized for the stone's facets), and with `fire` the fire trace's tallies of
+// the same photons to *fire (trace/fire_trace.h), advancing control->done() by the photons traced. Returns
+// false when cancelled before all blocks were traced. A distributed run gives each rank a block range and
+// sums the tallies with FacetStats::merge.
 bool traceBlocks(const Scene& scene, uint64_t firstBlock, uint64_t lastBlock, int threads, FacetStats& stats,
-                 RunControl* control = nullptr);
+                 RunControl* control = nullptr, FireStats* fire = nullptr);
 
 struct TraceResult {
     FacetStats stats;
@@ -46,9 +49,11 @@ struct TraceResult {
     // True when cancelled through RunControl: `stats` then holds the blocks finished so far, which depend on
     // timing and are not reproducible.
     bool cancelled = false;
+    std::optional<FireStats> fire;  // when settings.fire.enabled
 };
 
-// The whole job: the scene's settings.photons photons with settings.threads workers.
+// The whole job: the scene's settings.photons photons with settings.threads workers (and the fire trace when
+// settings.fire.enabled).
 TraceResult trace(const Scene& scene, RunControl* control = nullptr);
 
 }  // namespace facetlight

@@ -39,6 +39,19 @@ const Schema<LightSettings>& lightSchema() {
     return schema;
 }
 
+const Schema<FireSettings>& fireSchema() {
+    static const Schema<FireSettings> schema({
+        boolean(
+            "enabled", &FireSettings::enabled,
+            {"--fire", "Also trace each photon at the C, D and F lines and measure fire (stats.json: fire)"}),
+        number("pupil_mm", &FireSettings::pupilMm, {.lo = 0, .hi = 20, .openLo = true},
+               {"--pupil-mm", "Fire: the viewer's pupil diameter", "mm"}),
+        number("distance_mm", &FireSettings::distanceMm, {.lo = 10, .hi = 100000},
+               {"--viewing-distance-mm", "Fire: the distance from the eye to the stone", "mm"}),
+    });
+    return schema;
+}
+
 std::string materialHelp() {
     std::string help = "Material: ";
     const std::vector<std::string> names = materialNames();
@@ -67,6 +80,7 @@ const Schema<TraceSettings>& traceSettingsSchema() {
             choice("intersector", &TraceSettings::intersector, kIntersectorNames,
                    {"--intersector", "Ray-stone intersection"}),
             object("light", &TraceSettings::light, lightSchema()),
+            object("fire", &TraceSettings::fire, fireSchema()),
         },
         // The material's name matters only without an `n` to override it.
         [](const TraceSettings& s, const std::string& path) {

@@ -1,6 +1,7 @@
 #pragma once
 // The inputs of a photon trace (after Tungsten: plain settings structs, kept apart from the algorithm), each
 // setting described once in traceSettingsSchema(): JSON, checks, CLI flags and the API schema follow from it.
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -36,6 +37,16 @@ struct LightSettings {
     Vec3 position{0, 0, 10};   // point: the source position, outside the stone's bounding sphere
 };
 
+// The fire trace (trace/fire_trace.h): each photon also followed at the Fraunhofer C, D and F lines with the
+// same random choices, and its red and blue exits compared against what the viewer's pupil spans.
+struct FireSettings {
+    bool enabled = false;
+    double pupilMm = 4;       // pupil diameter
+    double distanceMm = 250;  // from the eye to the stone
+    // The angle the pupil spans seen from the stone: 2 atan(pupil / 2 / distance), 0.917 deg by default.
+    double pupilAngleDeg() const { return degrees(2 * std::atan(pupilMm / 2 / distanceMm)); }
+};
+
 struct TraceSettings {
     uint64_t photons = 1'000'000;
     int threads = 1;
@@ -46,6 +57,7 @@ struct TraceSettings {
     int maxBounces = 512;     // internal reflections after which a photon counts as trapped (docs/optics.md)
     IntersectorKind intersector = IntersectorKind::Auto;
     LightSettings light;
+    FireSettings fire;
 
     // Missing keys keep their defaults; throws Error naming the field by its dotted path.
     static TraceSettings fromJson(const nlohmann::json& j);

@@ -427,6 +427,28 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await shot('09b-viewer-views');
   });
 
+  test('a job with fire shows its figures with errors, the histogram chart and the fire heat-map', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    await page.selectOption('#f-mesh', jobIds.brilliantMesh);
+    await fillSmallJob({ width: '48', height: '48' });
+    await page.setChecked('#f-fire', true);
+    const id = await submitAndGetId();
+    await waitForFinished(id);
+    await page.setChecked('#f-fire', false);
+    await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
+    await page.waitForSelector('[data-section="fire"]');
+    const pics = await picturesLoaded('[data-section="fire"]');
+    assert.deepEqual(pics.map((p) => p.src.split('/').pop()), ['heatmap_fire.png']);
+    const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+    const mean = await page.textContent('[data-figure="fire.mean_separation_deg"] .figure-value');
+    assert.match(mean, /° ± /);
+    assert.ok(Math.abs(parseFloat(mean) - stats.fire.mean_separation_deg) < 0.01, `${mean} vs ${stats.fire.mean_separation_deg}`);
+    assert.match(await page.textContent('[data-figure="fire.coloured_share"] .figure-value'), /% ± /);
+    assert.ok(await page.locator('.fire-histogram-chart rect').count() > 2, 'the histogram has filled cells');
+    await shot('09c-fire');
+  });
+
   test('the comparison shows each design\'s ASET picture with its shares, and the tilt series where present', async () => {
     // A second design seen by the viewer: the brilliant tilted by 8 deg, with the ASET view alone.
     await page.goto(`${baseUrl}/#/`);

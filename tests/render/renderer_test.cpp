@@ -205,8 +205,9 @@ std::vector<std::array<int, 2>> changedPixels(const Image& a, const Image& b) {
 }
 
 // Each facet is filled with the colour of its share: all the light through the table (the top of the scale)
-// and none elsewhere (the bottom), sampled below the table's label and at the unlabelled facets' centroids.
-// A picture with axes, titles and colour bar but no filled facets fails.
+// and none elsewhere (the bottom), sampled below the table's label and at the unlabelled facets' centroids;
+// the same for the fire view (each facet's share of the fire). A picture with axes, titles and colour bar but
+// no filled facets fails.
 TEST(Pictures, HeatmapFillsEachFacetWithItsShare) {
     const Stone& stone = roundBrilliant();
     FacetStats stats(stone.facets.size());
@@ -218,14 +219,17 @@ TEST(Pictures, HeatmapFillsEachFacetWithItsShare) {
     }
     ASSERT_NE(table, nullptr);
     stats.facets[table->facet].leaving = 600;
-    const Image heatmap = facetHeatmap(stone, stats);
-    const auto colourAt = [&](const Point2& p) { return heatmap.at(int(p[0]), int(p[1])); };
-    EXPECT_LT(
-        colourDistance(colourAt({table->centroid[0], table->centroid[1] + 2 * textHeight(1.5)}), viridis(1)),
-        0.02);
-    for (const HeatmapFacet& f : layout.facets) {
-        if (&f == table) continue;
-        EXPECT_LT(colourDistance(colourAt(f.centroid), viridis(0)), 0.02) << f.facet;
+    FireStats fire(stone.facets.size());  // the fire view: all the fire through the table too
+    fire.coloured = fire.colouredByFacet[table->facet] = 40;
+    for (const Image& heatmap : {facetHeatmap(stone, stats), fireHeatmap(stone, fire)}) {
+        const auto colourAt = [&](const Point2& p) { return heatmap.at(int(p[0]), int(p[1])); };
+        EXPECT_LT(colourDistance(colourAt({table->centroid[0], table->centroid[1] + 2 * textHeight(1.5)}),
+                                 viridis(1)),
+                  0.02);
+        for (const HeatmapFacet& f : layout.facets) {
+            if (&f == table) continue;
+            EXPECT_LT(colourDistance(colourAt(f.centroid), viridis(0)), 0.02) << f.facet;
+        }
     }
     // A traced stone's shares colour most of the diagrams, compared with a stone no light left.
     const TraceResult traced = trace(Scene(stone, smallTrace(2)));

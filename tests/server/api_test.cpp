@@ -220,6 +220,38 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     EXPECT_EQ(be32(20), 24u);  // IHDR height
 }
 
+TEST_F(ServiceTest, FireIsMeasuredLinkedAndServed) {
+    json job = smallJob();
+    job["fire"] = {{"enabled", true}, {"pupil_mm", 2}};
+    auto r = submit(job);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 202) << r->body;
+    const std::string id = json::parse(r->body)["id"];
+    const json done = waitFinished(id);
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    const std::string self = "/api/jobs/" + id;
+    EXPECT_EQ(done["links"]["heatmap_fire"], self + "/heatmap_fire.png");
+    auto png = client_->Get(self + "/heatmap_fire.png");
+    ASSERT_TRUE(png && png->status == 200);
+    EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
+    const json stats = json::parse(client_->Get(self + "/stats")->body);
+    EXPECT_GT(stats["fire"]["pairs"].get<uint64_t>(), 0u);
+    EXPECT_NEAR(stats["fire"]["pupil_deg"].get<double>(), 0.45837, 1e-5);  // 2 atan(1 / 250)
+    EXPECT_EQ(stats["settings"]["fire"]["pupil_mm"], 2);
+
+    json off = smallJob();
+    off["fire"] = {{"enabled", false}};
+    auto offRun = submit(off);
+    ASSERT_TRUE(offRun && offRun->status == 202);
+    const json offDone = waitFinished(json::parse(offRun->body)["id"]);
+    ASSERT_EQ(offDone["state"], "succeeded");
+    EXPECT_FALSE(offDone["links"].contains("heatmap_fire"));
+
+    json bad = smallJob();
+    bad["fire"] = {{"pupil_mm", 0}};
+    expectProblem(submit(bad), 422, "fire.pupil_mm");
+}
+
 TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
     json job = smallJob();
     job["render"] = {{"width", 24}, {"height", 24}, {"samples", 1}, {"map_photons", 2000}};

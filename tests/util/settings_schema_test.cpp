@@ -140,6 +140,7 @@ TEST(SettingsSchema, JsonRoundTrip) {
     t.maxBounces = 7;
     t.intersector = IntersectorKind::Embree;
     t.light = {LightModelKind::Point, {1, 2, -3}, 12.5, 30, SkyKind::Cosine, {4, 5, 60}};
+    t.fire = {true, 3, 400};
     spec.settings.render = RenderSettings{64, 48, 2, 5, 5000, {45, -30, 6, 33}};
     spec.settings.aset = AsetSettings{20, 40, 3, true};
     spec.settings.tiltSeries = TiltSeriesSettings{5, 0.5, 90};

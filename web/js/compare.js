@@ -2,6 +2,7 @@
 import { api, jobUrl } from './api.js';
 import { FIGURES } from './constants.js';
 import { $, h } from './dom.js';
+import { fireCompare } from './fire.js';
 import { decimalsFor, fmtPctErr, shortId } from './format.js';
 import { pictures, scaleEnd } from './heatmap.js';
 import { displayMeshName } from './meshes.js';
@@ -48,7 +49,7 @@ export async function showCompare(ids) {
   if (failed.length) {
     parts.push(h('p', { class: 'form-error', role: 'alert' }, failed.map((f) => `Job ${shortId(f.id)}: ${f.error}`).join('; ')));
   }
-  if (ok.length) parts.push(ranking(ok), compareCards(ok), viewerCompare(ok, entryName), compareTable(ok));
+  if (ok.length) parts.push(...[ranking(ok), compareCards(ok), viewerCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName)].filter(Boolean));
   body.replaceChildren(...parts);
 }
 

@@ -74,6 +74,7 @@ function buildJob(form) {
   }
   job.material = form.elements.material.value;
   job.dispersion = form.elements.dispersion.checked;
+  if (form.elements['fire.enabled'].checked) job.fire = { enabled: true };
   job.max_bounces = readNumber(form, 'max_bounces', errors);
   if (form.elements.render.checked) {
     job.render = {

@@ -3,6 +3,7 @@ import { api, jobUrl } from './api.js';
 import { FACET_COLUMNS, FIGURES, POLL_ACTIVE_MS, REGIONS } from './constants.js';
 import { $, h } from './dom.js';
 import { decimalsFor, fmtDuration, fmtInt, fmtNumber, fmtPct, fmtPctErr, fmtTime, humanize, shortId } from './format.js';
+import { fireSection } from './fire.js';
 import { linkFacet, pictures } from './heatmap.js';
 import { displayMeshName } from './meshes.js';
 import { jobSummary, progressBar, stateBadge } from './progress.js';
@@ -197,6 +198,7 @@ function resultPage(job, stats) {
     h('section', { class: 'card', 'aria-labelledby': 'pictures-title' },
       h('h2', { id: 'pictures-title' }, 'Pictures'), pictures(job, name, stats)),
     viewerSection(job, stats),
+    fireSection(job, stats),
     h('div', { class: 'result-grid' },
       h('section', { class: 'card', 'aria-labelledby': 'regions-title' },
         h('h2', { id: 'regions-title' }, 'Where the light leaves'), regionTable(stats.regions || {}, 'Light leaving each region')),

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 
 #include "intersect/convex_intersector.h"
 #include "intersect/embree_intersector.h"
@@ -41,7 +42,14 @@ class PhotonWalker {
             ph.n = float(s.material_.index(wavelength));
         }
         visit.wavelength(wavelength);
+        return enter(s, isect, ray, visit, ph);
+    }
 
+    // Takes a photon drawn from the light to the stone, with ph.rng and ph.n set; true when it is inside.
+    // The fire trace (trace/fire_trace.cpp) enters one drawn ray at several indices of refraction.
+    template <class Intersector, class Visitor>
+    static bool enter(const Scene& s, const Intersector& isect, const LightRay& ray, Visitor& visit,
+                      Photon& ph) {
         Vec3f d(ray.direction), p(ray.origin);
         SurfaceHit hit;
         if (!(s.beam_ ? s.beam_->enter(p, hit) : isect.enter(p, d, hit))) {
@@ -117,6 +125,35 @@ class PhotonWalker {
         Photon ph;
         if (start(s, isect, index, visit, ph)) {
             while (step(s, isect, visit, ph)) {
+            }
+        }
+    }
+
+    // Photon `index` at each index of refraction of `bands` in turn, with the same random choices: the light
+    // ray is drawn once and every band enters and steps from the same stream (the fire trace's walk; a band's
+    // draws part from another's only where their choices differ). visit.band(k) precedes band k.
+    template <class Visitor>
+    static void walkBands(const Scene& s, uint64_t index, std::span<const float> bands, Visitor& visit) {
+        if (s.convex_) {
+            walkBands(s, *s.convex_, index, bands, visit);
+        } else {
+            walkBands(s, *s.embree_, index, bands, visit);
+        }
+    }
+    template <class Intersector, class Visitor>
+    static void walkBands(const Scene& s, const Intersector& isect, uint64_t index,
+                          std::span<const float> bands, Visitor& visit) {
+        Rng rng(s.settings_.seed, index);
+        const LightRay ray = s.light_.sample(rng);
+        if (s.dispersive()) rng.uniform();  // start()'s wavelength: the later draws are the plain trace's
+        for (size_t k = 0; k < bands.size(); ++k) {
+            visit.band(k);
+            Photon ph;
+            ph.rng = rng;
+            ph.n = bands[k];
+            if (enter(s, isect, ray, visit, ph)) {
+                while (step(s, isect, visit, ph)) {
+                }
             }
         }
     }

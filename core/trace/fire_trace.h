@@ -1,0 +1,16 @@
+#pragma once
+// The fire trace: each photon of the job followed at the Fraunhofer C, D and F lines with the same random
+// choices, and its red and blue exits through table or crown toward the viewer compared: the angle between
+// them, whether it exceeds what the viewer's pupil spans, where they left (docs/physics.md, "Fire"). The
+// tallies are integers, so a fire trace gives the same bits for any thread or rank count.
+#include <cstdint>
+
+#include "intersect/scene.h"
+#include "stats/fire_stats.h"
+
+namespace facetlight {
+
+// Adds photons [begin, end) of the job to `stats` (sized for the stone's facets).
+void traceFire(const Scene& scene, uint64_t begin, uint64_t end, FireStats& stats);
+
+}  // namespace facetlight
