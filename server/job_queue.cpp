@@ -120,8 +120,11 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
         const int threads = std::min(spec.settings.trace.threads, cores_);
         spec.settings.trace.threads = threads;
         store_.markRunning(id, threads);
-        results_.clear(id);  // a job re-run after a crash starts from nothing
-        const StudyResult result = runner_.run(spec, control);
+        // A study re-run after a crash starts from nothing; a sweep resumes from the points it kept.
+        const bool sweep = spec.settings.sweep.has_value();
+        if (!sweep) results_.clear(id);
+        const StudyResult result =
+            runner_.run(spec, control, sweep ? sweepCheckpoint(results_, id) : SweepCheckpoint{});
         try {
             for (const ResultFile& f : kResultFiles)
                 if (std::string bytes = f.bytes(result); !bytes.empty())
@@ -141,13 +144,14 @@ void JobQueue::runJob(const std::string& id, RunControl& control) {
             std::lock_guard lock(mutex_);
             shuttingDown = stopping_;
         }
-        results_.clear(id);
         if (shuttingDown) {
-            store_.markQueued(id);
+            store_.markQueued(id);  // a sweep keeps its finished points for the restart
         } else {
+            results_.clear(id);
             store_.markFinished(id, JobState::Canceled);
         }
     } catch (const Error& e) {
+        results_.clear(id);  // a sweep's kept points
         store_.markFinished(id, JobState::Failed, e.what());
     } catch (const std::bad_alloc&) {
         store_.markFinished(id, JobState::Failed, "out of memory: ask for fewer photons or a smaller image");

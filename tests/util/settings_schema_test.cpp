@@ -10,6 +10,7 @@
 #include "cli/trace_options.h"
 #include "render/render_settings.h"
 #include "study/study_spec.h"
+#include "study/sweep_job.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -225,7 +226,7 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     const json& job = api["components"]["schemas"]["JobRequest"];
     const json& properties = job["properties"];
     // The viewer's views (aset, tilt_series) have readers of their own (render/view_settings.h), not tables yet.
-    std::set<std::string> keys = {"mesh", "name", "render", "aset", "tilt_series"};
+    std::set<std::string> keys = {"mesh", "name", "render", "aset", "tilt_series", "sweep", "cut"};
     for (const FieldInfo& f : traceSettingsSchema().fields()) {
         keys.insert(f.key);
         ASSERT_TRUE(properties.contains(f.key)) << f.key;
@@ -237,6 +238,21 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     FieldInfo render = settings::describe("render", FieldType::Object);
     render.fields = &renderSettingsSchema().fields();
     expectOpenApiAgrees(properties["render"]["oneOf"][1], render, "render");
+}
+
+// A sweep's object (core/study/sweep_job.h) has the keys its table reads, no more.
+TEST(SettingsSchema, OpenApiSweepAgreesWithItsTable) {
+    std::ifstream in(FACETLIGHT_SOURCE_DIR "/server/openapi.json");
+    const json api = json::parse(in);
+    const json& sweep = api["components"]["schemas"]["SweepRequest"];
+    EXPECT_EQ(api["components"]["schemas"]["JobRequest"]["properties"]["sweep"]["$ref"],
+              "#/components/schemas/SweepRequest");
+    EXPECT_EQ(sweep.value("additionalProperties", true), false);
+    std::set<std::string> documented, read;
+    for (const auto& [key, value] : sweep["properties"].items()) documented.insert(key);
+    for (const FieldInfo& f : sweepRequestSchema().fields()) read.insert(f.key);
+    EXPECT_EQ(documented, read);
+    EXPECT_EQ(sweep["properties"]["figure"]["enum"], json(sweepFigureNames()));
 }
 
 }  // namespace
