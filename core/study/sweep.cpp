@@ -362,10 +362,11 @@ nlohmann::json sweepAxesJson(const SweepSpec& spec) {
 nlohmann::json sweepToJson(const SweepResult& result) {
     const SweepSpec& spec = result.spec;
     nlohmann::json fixed = nlohmann::json::object();
-    for (const auto& [name, value] : completeCutValues(findCutShape(spec.shape), spec.fixed)) {
+    // A named pair, not a structured binding: clang 14 (the fuzz build) cannot capture bindings in lambdas.
+    for (const auto& parameter : completeCutValues(findCutShape(spec.shape), spec.fixed)) {
         const bool varied = std::any_of(spec.axes.begin(), spec.axes.end(),
-                                        [&](const SweepAxis& a) { return a.name == name; });
-        if (!varied) fixed[name] = value;
+                                        [&](const SweepAxis& a) { return a.name == parameter.first; });
+        if (!varied) fixed[parameter.first] = parameter.second;
     }
     nlohmann::json points = nlohmann::json::array();
     for (const SweepPoint& p : result.points) points.push_back(sweepPointJson(spec, p));

@@ -27,6 +27,9 @@ nlohmann::json parseUntrustedJson(std::string_view text, const std::string& what
         throw Error(what + " nests arrays and objects deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     } catch (const json::parse_error& e) {
         throw Error(what + " is not valid JSON: byte " + std::to_string(e.byte));
+    } catch (const json::out_of_range&) {
+        // A literal beyond a double's range, such as 2e308 (found by fuzz_job).
+        throw Error(what + " holds a number beyond the range of a double (about 1.8e308)");
     }
 }
 

@@ -50,3 +50,10 @@ TEST(JsonText, SyntaxErrorsNameTheByte) {
     EXPECT_EQ(errorOf(""), "the body is not valid JSON: byte 1");
     EXPECT_EQ(errorOf("{} x"), "the body is not valid JSON: byte 4");
 }
+
+TEST(JsonText, NumbersBeyondADoubleAreRefused) {
+    // fuzz_job found that nlohmann-json throws out_of_range, not parse_error, for such a literal.
+    const std::string expected = "the body holds a number beyond the range of a double (about 1.8e308)";
+    EXPECT_EQ(errorOf(R"({"light": {"direction": [2e308, 1e308, 1e308]}})"), expected);
+    EXPECT_EQ(errorOf("-1e400"), expected);
+}
