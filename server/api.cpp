@@ -180,8 +180,10 @@ json Api::statusJson(const JobRecord& job) const {
     const bool rendered = request.contains("render") && request["render"].is_object();
     const bool sweep = request.contains("sweep") && request["sweep"].is_object();
     const json& sweepRequest = sweep ? request["sweep"] : json();
-    const int steps = sweep ? 1 + (sweepRequest["maximize"].is_string() ? sweepRequest.value("refine_rounds", 0) : 0)
-                            : rendered ? 3 : 1;
+    const int steps =
+        sweep      ? 1 + (sweepRequest["maximize"].is_string() ? sweepRequest.value("refine_rounds", 0) : 0)
+        : rendered ? 3
+                   : 1;
     uint64_t pointsTotal = sweep ? 1 : 0, pointsDone = 0;
     if (sweep)
         for (const json& axis : sweepRequest["axes"])
@@ -218,7 +220,8 @@ json Api::statusJson(const JobRecord& job) const {
                     step = live->stage();
                     pointsDone = live->itemsDone();
                     pointsTotal = live->itemsTotal();
-                    overall = (step - 1 + (pointsTotal ? double(pointsDone) / double(pointsTotal) : 0.0)) / steps;
+                    overall =
+                        (step - 1 + (pointsTotal ? double(pointsDone) / double(pointsTotal) : 0.0)) / steps;
                 } else if (sweep) {  // in a launcher's child: its photons only
                     overall = std::clamp(fraction, 0.0, 1.0) / steps;
                 }
@@ -237,8 +240,7 @@ json Api::statusJson(const JobRecord& job) const {
             overall = 1;
             pointsDone = pointsTotal;
             for (const ResultFile& f : kResultFiles)
-                if (hasResultFile(f, request))
-                    links[std::string(f.link)] = self + "/" + std::string(f.route);
+                if (hasResultFile(f, request)) links[std::string(f.link)] = self + "/" + std::string(f.route);
             break;
         }
         case JobState::Failed:
@@ -484,7 +486,8 @@ void Api::install(httplib::Server& server, bool accessLog) {
         {"GET /api/jobs", [this](const Request& req, Response& res) { listJobs(req, res); }},
         {"GET /api/jobs/{id}", [this](const Request& req, Response& res) { getJob(req, res); }},
         {"DELETE /api/jobs/{id}", [this](const Request& req, Response& res) { deleteJob(req, res); }},
-        {"GET /api/jobs/{id}/points", [this](const Request& req, Response& res) { getSweepPoints(req, res); }},
+        {"GET /api/jobs/{id}/points",
+         [this](const Request& req, Response& res) { getSweepPoints(req, res); }},
         {"GET /api/meshes", [this](const Request&, Response& res) { sendJson(res, 200, catalog_.list()); }},
     };
     for (const ResultFile& f : kResultFiles)

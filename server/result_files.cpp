@@ -102,7 +102,8 @@ std::vector<std::string> ResultFiles::names(const std::string& jobId, const std:
     for (auto it = fs::directory_iterator(jobDir(jobId), ec); !ec && it != fs::directory_iterator();
          it.increment(ec)) {
         const std::string name = it->path().filename().string();
-        if (name.compare(0, prefix.size(), prefix) == 0 && it->path().extension() != ".tmp") found.push_back(name);
+        if (name.compare(0, prefix.size(), prefix) == 0 && it->path().extension() != ".tmp")
+            found.push_back(name);
     }
     std::sort(found.begin(), found.end());
     return found;
@@ -129,7 +130,8 @@ SweepCheckpoint sweepCheckpoint(ResultFiles& files, const std::string& jobId) {
                 return j.is_discarded() ? std::nullopt : std::optional(std::move(j));
             },
             [&files, jobId](size_t round, size_t point, const nlohmann::json& j) {
-                // A point that cannot be kept (a full disk) is traced again after a restart; the sweep goes on.
+                // A point that cannot be kept (a full disk) is traced again after a restart; the sweep goes
+                // on.
                 try {
                     files.write(jobId, sweepPointFile(round, point), j.dump());
                 } catch (const std::exception& e) {

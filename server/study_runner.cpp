@@ -2,7 +2,8 @@
 
 namespace facetlight::server {
 
-StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control, const SweepCheckpoint& checkpoint) {
+StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control,
+                                 const SweepCheckpoint& checkpoint) {
     if (spec.settings.sweep) {
         SerialCommunicator serial;
         return runSweepJob(spec.mesh, spec.settings, control, serial, checkpoint);
@@ -15,7 +16,8 @@ StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control, con
     return runStudy(named, spec.settings, control);
 }
 
-StudyResult LauncherRunner::run(const StudySpec& spec, RunControl& control, const SweepCheckpoint& checkpoint) {
+StudyResult LauncherRunner::run(const StudySpec& spec, RunControl& control,
+                                const SweepCheckpoint& checkpoint) {
     if (!useLauncher(launch_, spec.settings)) return inProcess_.run(spec, control, checkpoint);
     // A sweep's designs, and a design of the cut library, are built by the child.
     if (spec.settings.sweep || !spec.cut.empty())

@@ -16,7 +16,8 @@ namespace facetlight::server {
 class StudyRunner {
   public:
     virtual ~StudyRunner() = default;
-    virtual StudyResult run(const StudySpec& spec, RunControl& control, const SweepCheckpoint& checkpoint) = 0;
+    virtual StudyResult run(const StudySpec& spec, RunControl& control,
+                            const SweepCheckpoint& checkpoint) = 0;
 };
 
 // In the service's own process, on the worker's thread.
@@ -30,8 +31,8 @@ class InProcessRunner final : public StudyRunner {
 };
 
 // Jobs the launch settings select run as child processes through the launcher (e.g. mpirun,
-// docs/distributed.md); smaller ones in-process. A sweep's points are spread over the ranks; a sweep in a child
-// starts afresh after a restart (its points are kept only in-process).
+// docs/distributed.md); smaller ones in-process. A sweep's points are spread over the ranks; a sweep in a
+// child starts afresh after a restart (its points are kept only in-process).
 class LauncherRunner final : public StudyRunner {
   public:
     LauncherRunner(const MeshCatalog& catalog, LaunchSettings launch)

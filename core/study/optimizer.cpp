@@ -125,12 +125,14 @@ GridObjective sweepObjective(const SweepSpec& base, const std::string& figure,
                              std::vector<SweepResult>& rounds, Communicator& comm,
                              const SweepRoundHooks& hooks) {
     checkSweepFigure(figure);
-    return [base, figure, constraints, &control, &rounds, &comm, hooks](const std::vector<SweepAxis>& axes,
-                                                                       uint64_t photons) {
+    return
+        [base, figure, constraints, &control, &rounds, &comm, hooks](const std::vector<SweepAxis>& axes,
+                                                                     uint64_t photons) {
             SweepSpec spec = base;
             spec.axes = axes;
             spec.trace.photons = photons;
-            rounds.push_back(runSweep(spec, control, hooks ? hooks(rounds.size(), spec) : SweepPointHooks{}, comm));
+            rounds.push_back(
+                runSweep(spec, control, hooks ? hooks(rounds.size(), spec) : SweepPointHooks{}, comm));
             std::vector<DesignEstimate> out;
             for (const SweepPoint& p : rounds.back().points) {
                 DesignEstimate e;

@@ -10,7 +10,8 @@ StudySpec StudySpec::fromJson(const nlohmann::json& j, StudySpec spec) {
     spec.mesh = settings::readText(j["mesh"], "mesh");
     if (j.contains("name")) spec.name = settings::readText(j["name"], "name");
     nlohmann::json trace = j;
-    for (const char* key : {"mesh", "name", "render", "aset", "tilt_series", "sweep", "cut"}) trace.erase(key);
+    for (const char* key : {"mesh", "name", "render", "aset", "tilt_series", "sweep", "cut"})
+        trace.erase(key);
     if (const auto r = j.find("render"); r != j.end()) {
         if (r->is_object()) {
             spec.settings.render = renderSettingsSchema().read(*r, "render");
@@ -40,7 +41,8 @@ StudySpec StudySpec::fromJson(const nlohmann::json& j, StudySpec spec) {
             throw Error("cut", std::string("cut: ") + e.what());
         }
     }
-    // A sweep of a shape of the cut library (docs/sweeps.md): every point an ordinary trace of these settings.
+    // A sweep of a shape of the cut library (docs/sweeps.md): every point an ordinary trace of these
+    // settings.
     if (const auto s = j.find("sweep"); s != j.end() && !s->is_null()) {
         spec.settings.sweep = sweepRequestSchema().read(*s, "sweep");
         if (spec.settings.render) throw Error("render", "a sweep makes no render: set render to false");

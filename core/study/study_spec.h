@@ -15,7 +15,8 @@ struct StudySpec {
     std::string mesh;  // a file, a shipped shape's name, or (in the service) an uploaded mesh's id
     std::string name;  // the stone's name in the results; empty: the one the mesh gives
     StudySettings settings;
-    CutValues cut;  // with a shape of the cut library: parameters at other than their defaults (a sweep's point)
+    // With a shape of the cut library: its parameters at other than their defaults (a sweep's point).
+    CutValues cut;
 
     // Read through the settings schema onto `defaults` (keys absent keep their values); throws Error naming
     // the field by its dotted path.

@@ -73,12 +73,13 @@ std::string SweepAxis::label(size_t i) const {
 
 SweepAxis sweepRange(const std::string& name, double lo, double hi, double step) {
     const std::string range = formatNumber(lo) + ":" + formatNumber(hi) + ":" + formatNumber(step);
-    if (!(step > 0)) throw Error("sweep axis " + name + ": the step must be above 0, got " + formatNumber(step));
+    if (!(step > 0))
+        throw Error("sweep axis " + name + ": the step must be above 0, got " + formatNumber(step));
     if (hi < lo) throw Error("sweep axis " + name + ": the range " + range + " is inverted (HI below LO)");
     const double steps = std::floor((hi - lo) / step + 1e-9);
     if (steps + 1 > double(kMaxSweepPoints))
-        throw Error("sweep axis " + name + ": " + range + " has more than " + std::to_string(kMaxSweepPoints) +
-                    " values");
+        throw Error("sweep axis " + name + ": " + range + " has more than " +
+                    std::to_string(kMaxSweepPoints) + " values");
     // lo + i step, rounded to nine decimals so that 37.3 is the number a user typing 37.3 gets.
     SweepAxis axis{name, {}, {}};
     for (int i = 0; i <= int(steps); ++i) axis.values.push_back(std::round((lo + i * step) * 1e9) / 1e9);
@@ -219,7 +220,8 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPoin
     if (comm.isRoot() && hooks.restore) {
         nlohmann::json restored = nlohmann::json::object();
         for (size_t k = 0; k < count; ++k)
-            if (std::optional<nlohmann::json> j = hooks.restore(k)) restored[std::to_string(k)] = std::move(*j);
+            if (std::optional<nlohmann::json> j = hooks.restore(k))
+                restored[std::to_string(k)] = std::move(*j);
         restoredText = restored.dump();
     }
     if (comm.size() > 1) comm.broadcast(restoredText);

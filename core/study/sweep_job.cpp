@@ -21,16 +21,16 @@ std::string itemPath(const std::string& path, size_t i) {
 
 const std::vector<FieldInfo>& axisFields() {
     static const std::vector<FieldInfo> fields{
-        settings::describe("name", FieldType::Text), settings::describe("from", FieldType::Number),
-        settings::describe("to", FieldType::Number), settings::describe("step", FieldType::Number),
+        settings::describe("name", FieldType::Text),     settings::describe("from", FieldType::Number),
+        settings::describe("to", FieldType::Number),     settings::describe("step", FieldType::Number),
         settings::describe("values", FieldType::Object), settings::describe("choices", FieldType::Object)};
     return fields;
 }
 
 const json& requiredArray(const json& j, const std::string& path, size_t lo, size_t hi) {
     if (!j.is_array() || j.size() < lo || j.size() > hi)
-        throw Error(path, path + " must be a list of " + std::to_string(lo) + " to " + std::to_string(hi) +
-                              " items");
+        throw Error(
+            path, path + " must be a list of " + std::to_string(lo) + " to " + std::to_string(hi) + " items");
     return j;
 }
 
@@ -97,14 +97,15 @@ settings::Field<SweepRequest> axesField() {
 }
 
 settings::Field<SweepRequest> setField() {
-    return {settings::describe("set", FieldType::Object, {"", "parameters held at other than their defaults"}),
-            [](SweepRequest& r, const json& j, const std::string& path) {
-                if (!j.is_object()) throw Error(path, path + " must be an object of parameter values");
-                r.set.clear();
-                for (const auto& [name, value] : j.items())
-                    r.set[name] = settings::readNumber(value, settings::fieldPath(path, name), {});
-            },
-            [](const SweepRequest& r) { return json(r.set); }};
+    return {
+        settings::describe("set", FieldType::Object, {"", "parameters held at other than their defaults"}),
+        [](SweepRequest& r, const json& j, const std::string& path) {
+            if (!j.is_object()) throw Error(path, path + " must be an object of parameter values");
+            r.set.clear();
+            for (const auto& [name, value] : j.items())
+                r.set[name] = settings::readNumber(value, settings::fieldPath(path, name), {});
+        },
+        [](const SweepRequest& r) { return json(r.set); }};
 }
 
 settings::Field<SweepRequest> figureField() {
@@ -118,7 +119,8 @@ settings::Field<SweepRequest> figureField() {
 }
 
 settings::Field<SweepRequest> maximizeField() {
-    FieldInfo info = settings::describe("maximize", FieldType::Choice, {"", "the figure whose best design is searched"});
+    FieldInfo info =
+        settings::describe("maximize", FieldType::Choice, {"", "the figure whose best design is searched"});
     info.choices = sweepFigureNames();
     return {info,
             [](SweepRequest& r, const json& j, const std::string& path) {
@@ -196,8 +198,8 @@ SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const
             throw Error(itemPath("sweep.axes", i), e.what());
         }
         if (!request.maximize.empty() && !request.axes[i].numeric())
-            throw Error("sweep.maximize", "the best design is searched over numbers; " + request.axes[i].name +
-                                              " takes names");
+            throw Error("sweep.maximize",
+                        "the best design is searched over numbers; " + request.axes[i].name + " takes names");
     }
     try {
         spec.validate();
@@ -266,8 +268,12 @@ SweepOutputs runSweepRequest(const SweepSpec& spec, const SweepRequest& request,
     bestJson["photons"] = best->photons;
     bestJson["cut"] = cut;
     bestJson["command"] = command;
-    out.best = {{"figure", request.maximize},   {"confidence", 0.95}, {"constraints", request.constraints},
-                {"best", bestJson},             {"ties", ties},       {"rounds", roundsJson},
+    out.best = {{"figure", request.maximize},
+                {"confidence", 0.95},
+                {"constraints", request.constraints},
+                {"best", bestJson},
+                {"ties", ties},
+                {"rounds", roundsJson},
                 {"evaluations", best->evaluations}};
     return out;
 }

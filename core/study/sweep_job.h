@@ -1,6 +1,6 @@
 #pragma once
-// A sweep as a job (docs/sweeps.md): the `sweep` object of the one job format (study_spec.h), read through its
-// settings table, and its run into the files that the CLI writes and the service serves: sweep.json,
+// A sweep as a job (docs/sweeps.md): the `sweep` object of the one job format (study_spec.h), read through
+// its settings table, and its run into the files that the CLI writes and the service serves: sweep.json,
 // sweep.csv, the pictures and, with a search for the best design, best.json and best.obj.
 #include <cstddef>
 #include <functional>

@@ -135,6 +135,11 @@ async function waitForFinished(id) {
   }, bar, { timeout: JOB_TIMEOUT_MS, polling: 100 });
 }
 
+// An axis of the sweep form: its quantity, from, to and step.
+async function fillSweepAxis(i, values) {
+  for (const [k, key] of ['name', 'from', 'to', 'step'].entries()) await page.fill(`#s-${key}-${i}`, values[k]);
+}
+
 async function picturesLoaded(scope) {
   await page.waitForFunction((sel) => {
     const imgs = [...document.querySelectorAll(`${sel} img`)];
@@ -432,10 +437,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.click('#sweep-submit');
     const stepError = await page.waitForSelector('[id="err-sweep.axes[0].step"]:not([hidden])');
     assert.match(await stepError.textContent(), /step/);
-    await page.fill('#s-name-0', 'pavilion');
-    await page.fill('#s-from-0', '39');
-    await page.fill('#s-to-0', '41');
-    await page.fill('#s-step-0', '1');
+    await fillSweepAxis(0, ['pavilion', '39', '41', '1']);
     await page.fill('#s-photons', '4000');
     await page.click('#sweep-submit');
     await page.waitForFunction(() => location.hash.startsWith('#/sweeps/'));
@@ -468,14 +470,9 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
 
   test('a sweep over two axes draws a filled map with its best point starred and a colour legend', async () => {
     await page.goto(`${baseUrl}/#/`);
-    await page.fill('#s-from-0', '39');
-    await page.fill('#s-to-0', '41');
-    await page.fill('#s-step-0', '1');
+    await fillSweepAxis(0, ['pavilion', '39', '41', '1']);
     await page.setChecked('#s-second', true);
-    await page.fill('#s-name-1', 'crown');
-    await page.fill('#s-from-1', '30');
-    await page.fill('#s-to-1', '36');
-    await page.fill('#s-step-1', '3');
+    await fillSweepAxis(1, ['crown', '30', '36', '3']);
     await page.fill('#s-photons', '2000');
     await page.click('#sweep-submit');
     await page.waitForFunction(() => location.hash.startsWith('#/sweeps/'));

@@ -131,7 +131,9 @@ class ServiceTest : public ::testing::Test {
         return {{"mesh", "round_brilliant"},
                 {"photons", photons},
                 {"threads", 2},
-                {"sweep", {{"axes", {{{"name", "pavilion"}, {"from", 39}, {"to", 39 + 0.5 * (points - 1)}, {"step", 0.5}}}}}}};
+                {"sweep",
+                 {{"axes",
+                   {{{"name", "pavilion"}, {"from", 39}, {"to", 39 + 0.5 * (points - 1)}, {"step", 0.5}}}}}}};
     }
     json getJson(const std::string& path) {
         auto r = client_->Get(path);
@@ -500,8 +502,10 @@ TEST_F(ServiceTest, SweepRunsToSuccessWithPointsAndResults) {
     EXPECT_EQ(done["progress"]["points_done"], 3);
     EXPECT_EQ(done["progress"]["overall"], 1.0);
     const json& links = done["links"];
-    for (const char* link : {"sweep", "sweep_csv", "sweep_picture", "points"}) EXPECT_TRUE(links.contains(link)) << link;
-    for (const char* link : {"stats", "stats_csv", "best", "best_obj"}) EXPECT_FALSE(links.contains(link)) << link;
+    for (const char* link : {"sweep", "sweep_csv", "sweep_picture", "points"})
+        EXPECT_TRUE(links.contains(link)) << link;
+    for (const char* link : {"stats", "stats_csv", "best", "best_obj"})
+        EXPECT_FALSE(links.contains(link)) << link;
 
     const json sweep = getJson(links["sweep"]);
     EXPECT_EQ(sweep["shape"], "round_brilliant");
@@ -575,7 +579,8 @@ TEST_F(ServiceTest, SweepResumesAfterARestartWithTheSameBits) {
     start();
     const json done = waitFinished(id);
     ASSERT_EQ(done["state"], "succeeded") << done.dump();
-    for (const auto& [path, time] : kept) EXPECT_EQ(fs::last_write_time(path), time) << path;  // not traced again
+    for (const auto& [path, time] : kept)
+        EXPECT_EQ(fs::last_write_time(path), time) << path;  // not traced again
     const json resumed = sweepWithoutTiming(id);
     const json whole = waitFinished(submitOk(job));
     EXPECT_EQ(resumed.dump(), sweepWithoutTiming(whole["id"]).dump());
@@ -596,12 +601,20 @@ TEST_F(ServiceTest, BadSweepsAreRefusedNamingTheField) {
     refused([](json& j) { j["sweep"]["axes"][0]["name"] = "sparkle"; }, "sweep.axes[0]");
     refused([](json& j) { j["sweep"]["axes"][0]["from"] = "39"; }, "sweep.axes[0].from");
     refused([](json& j) { j["sweep"]["axes"][1] = j["sweep"]["axes"][0]; }, "sweep.axes");
-    refused([](json& j) { j["sweep"]["axes"][0]["to"] = 1e6; j["sweep"]["axes"][0]["step"] = 1e-3; },
-            "sweep.axes[0]");
+    refused(
+        [](json& j) {
+            j["sweep"]["axes"][0]["to"] = 1e6;
+            j["sweep"]["axes"][0]["step"] = 1e-3;
+        },
+        "sweep.axes[0]");
     refused([](json& j) { j["sweep"]["figure"] = "sparkle"; }, "sweep.figure");
     refused([](json& j) { j["sweep"]["constraints"] = {"total_depth<=62"}; }, "sweep.constraints");
-    refused([](json& j) { j["sweep"]["maximize"] = "leakage"; j["sweep"]["constraints"] = {"depth<=62"}; },
-            "sweep.constraints[0]");
+    refused(
+        [](json& j) {
+            j["sweep"]["maximize"] = "leakage";
+            j["sweep"]["constraints"] = {"depth<=62"};
+        },
+        "sweep.constraints[0]");
     refused([](json& j) { j["sweep"]["set"] = {{"table", 500}}; }, "sweep.set");
     refused([](json& j) { j["sweep"]["bogus"] = 1; }, "sweep.bogus");
     refused([](json& j) { j["sweep"]["refine_rounds"] = 9; }, "sweep.refine_rounds");

@@ -16,8 +16,28 @@ const M = { left: 70, right: 170, top: 20, bottom: 56 };
 
 function figureInfo(key) { return FIGURES.find((f) => f.key === key) || { key, label: humanize(key) }; }
 
+// The defaults of each axis: a pavilion range, and a crown range for the map.
+const AXIS_DEFAULTS = [{ name: 'pavilion', from: 38, to: 43, step: 0.5 }, { name: 'crown', from: 30, to: 38, step: 2 }];
+
+// An axis's fieldset: its quantity and range, each input with its label and the id the server's field errors
+// (sweep.axes[i].step) are shown under.
+function axisFieldset(i) {
+  const path = `sweep.axes[${i}]`;
+  const defaults = AXIS_DEFAULTS[i];
+  const input = (key, attrs) => h('div', { class: 'field' },
+    h('label', { for: `s-${key}-${i}` }, key === 'name' ? 'Quantity' : key[0].toUpperCase() + key.slice(1)),
+    h('input', { id: `s-${key}-${i}`, name: `${key}-${i}`, value: defaults[key], 'aria-describedby': `err-${path}.${key}`, ...attrs }));
+  const legend = i === 0 ? 'First axis'
+    : h('label', {}, h('input', { type: 'checkbox', id: 's-second', name: 'second' }), ' Second axis');
+  return h('fieldset', { id: `s-axis-${i}` }, h('legend', {}, legend),
+    h('div', { class: 'field-row' }, input('name', { type: 'text', list: 'sweep-quantities' }),
+      ...['from', 'to', 'step'].map((key) => input(key, { type: 'number', step: 'any' }))),
+    ['', '.name', '.from', '.to', '.step'].map((key) => h('p', { class: 'field-error', id: `err-${path}${key}`, role: 'alert', hidden: true })));
+}
+
 export function initSweepForm() {
   const form = $('#sweep-form');
+  $('#sweep-axes').replaceChildren(axisFieldset(0), axisFieldset(1));
   $('#s-figure').replaceChildren(...FIGURES.map((f) => h('option', { value: f.key, selected: f.key === 'weighted_return' }, f.label)));
   const second = $('#s-second');
   const sync = () => { for (const el of $('#s-axis-1').querySelectorAll('.field input')) el.disabled = !second.checked; };
