@@ -50,8 +50,7 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunControl& control,
                      Communicator& comm);
 // A sweep job (settings.sweep) of the cut library's shape `shape` on every rank of `comm`: rank 0's result
-// holds its files (sweepJson, sweepCsv, sweepPng of the first figure, and with a search bestJson and
-// bestObj).
+// holds its files (sweepJson, sweepCsv, sweepPng of the first figure; with a search bestJson, bestObj).
 StudyResult runSweepJob(const std::string& shape, const StudySettings& settings, RunControl& control,
                         Communicator& comm, const SweepCheckpoint& checkpoint = {});
 // The units of a phase of the whole study, over every rank: its photons or pixels (0 for the others).

@@ -15,8 +15,7 @@ struct StudySpec {
     std::string mesh;  // a file, a shipped shape's name, or (in the service) an uploaded mesh's id
     std::string name;  // the stone's name in the results; empty: the one the mesh gives
     StudySettings settings;
-    // With a shape of the cut library: its parameters at other than their defaults (a sweep's point).
-    CutValues cut;
+    CutValues cut;  // a cut library shape's parameters other than their defaults (a sweep's point)
 
     // Read through the settings schema onto `defaults` (keys absent keep their values); throws Error naming
     // the field by its dotted path.
