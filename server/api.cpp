@@ -230,6 +230,10 @@ json Api::statusJson(const JobRecord& job) const {
                     step = i + 1;
                     overall = (i + std::clamp(fraction, 0.0, 1.0)) / steps;
                 }
+                if (phase == RunPhase::Done) {  // the work is over; its results are being stored
+                    step = steps;
+                    overall = 1;
+                }
                 doc["cancel_requested"] = live->cancelled();
             }
             links["cancel"] = self + "/cancel";
