@@ -51,8 +51,6 @@ void runStudyCommand(const StudyOptions& options) {
         throw Error(e.field(), "job file " + options.job + ": " + e.what());
     }
     const StudySettings& settings = spec.settings;
-    Stone stone = resolveStone(spec.mesh);
-    if (!spec.name.empty()) stone.name = spec.name;
     const fs::path out(options.out);
     if (comm.isRoot()) {  // before the work, so that a folder we cannot make costs no trace
         std::error_code ec;
@@ -62,13 +60,21 @@ void runStudyCommand(const StudyOptions& options) {
 
     RunControl control;
     StudyResult result;
-    {
+    if (settings.sweep) {
+        // The points are shared among the ranks; progress in this rank's photons, as a share of the round's.
+        ProgressJson progress(options.progressJson && comm.isRoot(), control, [&](RunPhase phase) {
+            return phase == RunPhase::Tracing ? control.itemsTotal() * settings.trace.photons : 0;
+        });
+        result = runSweepJob(spec.mesh, settings, control, comm);
+    } else {
+        Stone stone = spec.cut.empty() ? resolveStone(spec.mesh) : cutStone(spec);
+        if (!spec.name.empty()) stone.name = spec.name;
         ProgressJson progress(options.progressJson && comm.isRoot(), control,
                               [&](RunPhase phase) { return studyUnits(settings, phase); });
         result = runStudy(stone, settings, control, comm);
+        if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();
     }
     if (!comm.isRoot()) return;
-    if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();
     writeResultFiles(out, result);
 }
 

@@ -7,8 +7,7 @@
 #include "commands.h"
 #include "io/obj_writer.h"
 #include "study/optimizer.h"
-#include "study/sweep.h"
-#include "study/sweep_pictures.h"
+#include "study/sweep_job.h"
 #include "terminal_output.h"
 #include "trace_options.h"
 #include "util/error.h"
@@ -43,100 +42,55 @@ CutValues fixedValues(const std::vector<std::string>& settings) {
     return values;
 }
 
-// sweep.json, sweep.csv and the pictures; throws Error when no point could be traced.
-void writeSweep(const SweepOptions& o, const SweepResult& result, const fs::path& out) {
-    size_t failed = 0;
-    for (const SweepPoint& p : result.points) failed += !p.ok();
-    if (failed == result.points.size())
-        throw Error("no point of the sweep could be traced: " + result.points[0].error);
-    writeFile(out / "sweep.csv", sweepCsv(result));
-    writeFile(out / "sweep.json", sweepToJson(result).dump(2) + "\n");
-    for (const auto& [name, image] : sweepPictures(result, o.figures))
-        writeFile(out / name, encodePng(image));
-    std::printf("wrote %s: %zu points in %.1f s", (out / "sweep.json").c_str(), result.points.size(),
-                result.seconds);
-    if (failed) std::printf(" (%zu could not be traced: see their \"error\")", failed);
-    std::printf("\n");
-}
-
-nlohmann::json designJson(const std::vector<SweepAxis>& axes, const RatedDesign& d, double z) {
-    nlohmann::json values = nlohmann::json::object();
-    for (size_t a = 0; a < axes.size(); ++a) values[axes[a].name] = d.values[a];
-    return {{"values", values},
-            {"value", d.estimate.value},
-            {"stderr", d.estimate.sigma},
-            {"interval", {d.estimate.value - z * d.estimate.sigma, d.estimate.value + z * d.estimate.sigma}}};
-}
-
-// --maximize: the coarse sweep written as usual, then refined rounds; best.json and best.obj.
-void searchBest(const SweepOptions& o, const SweepSpec& spec, RunControl& control, const fs::path& out) {
-    std::vector<SweepConstraint> constraints;
-    for (const std::string& text : o.constraints) constraints.push_back(parseSweepConstraint(text));
-    if (o.refineRounds < 0 || o.refineRounds > 6) throw Error("--refine-rounds must be between 0 and 6");
-    OptimizeSettings settings;
-    settings.refineRounds = o.refineRounds;
-    std::vector<SweepResult> rounds;
-    const OptimizeResult best =
-        maximize(spec.axes, spec.trace.photons,
-                 sweepObjective(spec, o.maximize, constraints, control, rounds), settings);
-    writeSweep(o, rounds.front(), out);
-
-    SweepSpec bestSpec = spec;
-    for (size_t a = 0; a < spec.axes.size(); ++a) bestSpec.axes[a].values = {best.best.values[a]};
-    const CutShape& shape = findCutShape(spec.shape);
-    const CutValues cut = sweepPoints(bestSpec)[0].cut;
-    const std::string command = cutCommandLine(shape, cut);
-    writeTextFile((out / "best.obj").string(), objText(shape.build(cut), "facetlight cut " + command));
-
-    nlohmann::json ties = nlohmann::json::array();
-    for (const RatedDesign& t : best.ties) ties.push_back(designJson(best.lastAxes, t, settings.z));
-    nlohmann::json limits = nlohmann::json::array();
-    for (const std::string& text : o.constraints) limits.push_back(text);
-    nlohmann::json roundsJson = nlohmann::json::array();
-    for (const SweepResult& r : rounds) {
-        nlohmann::json axes = nlohmann::json::object();
-        for (const SweepAxis& a : r.spec.axes) axes[a.name] = a.values;
-        roundsJson.push_back({{"photons", r.spec.trace.photons}, {"axes", axes}, {"seconds", r.seconds}});
-    }
-    nlohmann::json bestJson = designJson(best.lastAxes, best.best, settings.z);
-    bestJson["photons"] = best.photons;
-    bestJson["cut"] = cut;
-    bestJson["command"] = "facetlight cut " + command;
-    const nlohmann::json report = {
-        {"figure", o.maximize}, {"confidence", 0.95},   {"constraints", limits},          {"best", bestJson},
-        {"ties", ties},         {"rounds", roundsJson}, {"evaluations", best.evaluations}};
-    writeFile(out / "best.json", report.dump(2) + "\n");
-    std::printf("best %s %.4f +- %.4f (95%%: %.4f to %.4f) at", o.maximize.c_str(), best.best.estimate.value,
-                best.best.estimate.sigma, bestJson["interval"][0].get<double>(),
-                bestJson["interval"][1].get<double>());
-    for (size_t a = 0; a < spec.axes.size(); ++a)
-        std::printf(" %s %g", spec.axes[a].name.c_str(), best.best.values[a]);
-    std::printf(" (%llu photons); %zu designs cannot be told apart from it; wrote %s and %s\n",
-                (unsigned long long)best.photons, best.ties.size(), (out / "best.json").c_str(),
-                (out / "best.obj").c_str());
-}
-
 void runSweepCommand(const SweepOptions& o) {
     if (o.vary.empty())
         throw Error("sweep: say what to vary with --vary NAME=LO:HI:STEP (or NAME=V1,V2,...)");
-    SweepSpec spec;
-    spec.shape = o.shape;
-    spec.fixed = fixedValues(o.set);
-    for (const std::string& text : o.vary) spec.axes.push_back(parseSweepAxis(text));
-    spec.trace = toTraceSettings(o.trace);
-    spec.validate();
-    for (const std::string& f : o.figures) checkSweepFigure(f);
-    if (!o.maximize.empty()) checkSweepFigure(o.maximize);
     if (o.maximize.empty() && !o.constraints.empty()) throw Error("--constraint applies to --maximize only");
+    if (o.refineRounds < 0 || o.refineRounds > 6) throw Error("--refine-rounds must be between 0 and 6");
+    SweepRequest request;
+    for (const std::string& text : o.vary) request.axes.push_back(parseSweepAxis(text));
+    request.set = fixedValues(o.set);
+    request.figures = o.figures;
+    request.maximize = o.maximize;
+    if (!o.maximize.empty()) checkSweepFigure(o.maximize);
+    for (const std::string& text : o.constraints) parseSweepConstraint(text);
+    request.constraints = o.constraints;
+    request.refineRounds = o.refineRounds;
+    const SweepSpec spec = sweepSpec(o.shape, request, toTraceSettings(o.trace));
     const fs::path out(o.out);
     std::error_code ec;
     fs::create_directories(out, ec);
     if (ec) throw Error("cannot create the folder " + out.string() + ": " + ec.message());
 
     RunControl control;
-    ProgressLine bar(true, control);
-    if (o.maximize.empty()) return writeSweep(o, runSweep(spec, control), out);
-    searchBest(o, spec, control, out);
+    SerialCommunicator serial;
+    SweepOutputs result;
+    {
+        ProgressLine bar(true, control);
+        result = runSweepRequest(spec, request, control, serial);
+    }
+    writeFile(out / "sweep.csv", result.csv());
+    writeFile(out / "sweep.json", result.json());
+    for (const auto& [name, png] : result.pictures) writeFile(out / name, png);
+    size_t failed = 0;
+    for (const SweepPoint& p : result.sweep.points) failed += !p.ok();
+    std::printf("wrote %s: %zu points in %.1f s", (out / "sweep.json").c_str(), result.sweep.points.size(),
+                result.sweep.seconds);
+    if (failed) std::printf(" (%zu could not be traced: see their \"error\")", failed);
+    std::printf("\n");
+    if (result.best.is_null()) return;
+
+    writeTextFile((out / "best.obj").string(), result.bestObj);
+    writeFile(out / "best.json", result.best.dump(2) + "\n");
+    const nlohmann::json& best = result.best["best"];
+    std::printf("best %s %.4f +- %.4f (95%%: %.4f to %.4f) at", o.maximize.c_str(),
+                best["value"].get<double>(), best["stderr"].get<double>(), best["interval"][0].get<double>(),
+                best["interval"][1].get<double>());
+    for (const auto& [name, value] : best["values"].items())
+        std::printf(" %s %g", name.c_str(), value.get<double>());
+    std::printf(" (%llu photons); %zu designs cannot be told apart from it; wrote %s and %s\n",
+                (unsigned long long)best["photons"].get<uint64_t>(), result.best["ties"].size(),
+                (out / "best.json").c_str(), (out / "best.obj").c_str());
 }
 
 }  // namespace

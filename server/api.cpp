@@ -170,6 +170,7 @@ std::vector<Route> Api::routes() {
         {"GET", "/api/jobs/{id}"},
         {"DELETE", "/api/jobs/{id}"},
         {"POST", "/api/jobs/{id}/cancel"},
+        {"GET", "/api/jobs/{id}/points"},
     };
     for (const ResultFile& f : kResultFiles)
         routes.push_back({"GET", "/api/jobs/{id}/" + std::string(f.route)});
@@ -188,10 +189,20 @@ json Api::statusJson(const JobRecord& job) const {
     if (used < requested) {
         threads["note"] = "capped at the " + std::to_string(queue_.cores()) + " cores of this machine";
     }
-    // A study with pictures runs three phases (tracing, photon map, rendering), one without only the first:
-    // `step` of `steps` and `overall` say where the whole job is, so that clients need not know the phases.
+    // A study with pictures runs three phases (tracing, photon map, rendering), one without only the first, a
+    // sweep one round (or a search's rounds): `step` of `steps` and `overall` say where the whole job is, so
+    // that clients need not know the phases.
     const bool rendered = request.contains("render") && request["render"].is_object();
-    const int steps = rendered ? 3 : 1;
+    const bool sweep = request.contains("sweep") && request["sweep"].is_object();
+    const json& sweepRequest = sweep ? request["sweep"] : json();
+    const int steps =
+        sweep      ? 1 + (sweepRequest["maximize"].is_string() ? sweepRequest.value("refine_rounds", 0) : 0)
+        : rendered ? 3
+                   : 1;
+    uint64_t pointsTotal = sweep ? 1 : 0, pointsDone = 0;
+    if (sweep)
+        for (const json& axis : sweepRequest["axes"])
+            pointsTotal *= axis.contains("values") ? axis["values"].size() : axis["choices"].size();
     json progress = {{"phase", jobStateName(job.state)}, {"done", 0}, {"total", 0}, {"fraction", 0.0}};
     int step = 0;
     double overall = 0;
@@ -219,7 +230,17 @@ json Api::statusJson(const JobRecord& job) const {
                             {"total", total},
                             {"fraction", fraction}};
                 const RunPhase phases[] = {RunPhase::Tracing, RunPhase::PhotonMap, RunPhase::Rendering};
-                for (int i = 0; i < steps; ++i) {
+                if (sweep && live->stage() > 0) {
+                    // Whole points of the round under way (points_total: that round's).
+                    step = live->stage();
+                    pointsDone = live->itemsDone();
+                    pointsTotal = live->itemsTotal();
+                    overall =
+                        (step - 1 + (pointsTotal ? double(pointsDone) / double(pointsTotal) : 0.0)) / steps;
+                } else if (sweep) {  // in a launcher's child: its photons only
+                    overall = std::clamp(fraction, 0.0, 1.0) / steps;
+                }
+                for (int i = 0; i < steps && !sweep; ++i) {
                     if (phases[i] != phase) continue;
                     step = i + 1;
                     overall = (i + std::clamp(fraction, 0.0, 1.0)) / steps;
@@ -236,13 +257,9 @@ json Api::statusJson(const JobRecord& job) const {
             progress = {{"phase", "done"}, {"done", 1}, {"total", 1}, {"fraction", 1.0}};
             step = steps;
             overall = 1;
-            // A result that needs a part of the request is linked when that part is an object not switched off
-            // ("fire": {"enabled": false} makes no fire heat-map).
+            pointsDone = pointsTotal;
             for (const ResultFile& f : kResultFiles)
-                if (f.needs.empty() ||
-                    (request.contains(f.needs) && request[std::string(f.needs)].is_object() &&
-                     request[std::string(f.needs)].value("enabled", true)))
-                    links[std::string(f.link)] = self + "/" + std::string(f.route);
+                if (hasResultFile(f, request)) links[std::string(f.link)] = self + "/" + std::string(f.route);
             break;
         }
         case JobState::Failed:
@@ -254,6 +271,11 @@ json Api::statusJson(const JobRecord& job) const {
     progress["step"] = step;
     progress["steps"] = steps;
     progress["overall"] = overall;
+    if (sweep) {
+        progress["points_done"] = pointsDone;
+        progress["points_total"] = pointsTotal;
+        links["points"] = self + "/points";
+    }
     doc["progress"] = progress;
     doc["links"] = links;
     return doc;
@@ -325,7 +347,8 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
         return problem(res, 422, e.what(), e.field());
     }
     try {
-        catalog_.resolve(spec.mesh);
+        // A sweep's shape, and a design's (cut), were checked with them.
+        if (!spec.settings.sweep && spec.cut.empty()) catalog_.resolve(spec.mesh);
     } catch (const Error& e) {
         return problem(res, 422, e.what(), "mesh");
     }
@@ -462,6 +485,42 @@ void Api::getResult(const Request& req, Response& res, const std::string& file,
     res.set_content(std::move(*bytes), contentType.c_str());
 }
 
+// A sweep's points finished so far (those of its grid, the search's first round), for a chart that fills in
+// as they finish: from the files the running sweep keeps, or from sweep.json once it has succeeded.
+void Api::getSweepPoints(const Request& req, Response& res) {
+    const std::string id = req.matches[1];
+    const auto job = queue_.job(id);
+    if (!job) return problem(res, 404, "no job with this id");
+    SweepSpec spec;
+    try {
+        const StudySpec study = parseJobSpec(job->request, queue_.cores());
+        if (!study.settings.sweep) return problem(res, 404, "this job is not a sweep");
+        spec = sweepSpec(study.mesh, *study.settings.sweep, study.settings.trace);
+    } catch (const Error& e) {
+        return problem(res, 500, std::string("the stored job no longer reads: ") + e.what());
+    }
+    json points = json::array();
+    if (job->state == JobState::Succeeded) {
+        if (const auto bytes = results_.read(id, "sweep.json")) points = json::parse(*bytes)["points"];
+    } else {
+        const std::string round0 = std::string(kSweepPointPrefix) + "0-";
+        for (const std::string& name : results_.names(id, round0)) {
+            if (const auto bytes = results_.read(id, name)) {
+                json point = json::parse(*bytes, nullptr, false);
+                if (!point.is_discarded()) points.push_back(std::move(point));
+            }
+        }
+    }
+    sendJson(res, 200,
+             {{"id", id},
+              {"state", jobStateName(job->state)},
+              {"shape", spec.shape},
+              {"axes", sweepAxesJson(spec)},
+              {"figures", sweepFigureNames()},
+              {"points_total", spec.pointCount()},
+              {"points", points}});
+}
+
 void Api::install(httplib::Server& server, bool accessLog) {
     using Plain = httplib::Server::Handler;
     using WithReader = httplib::Server::HandlerWithContentReader;
@@ -484,6 +543,8 @@ void Api::install(httplib::Server& server, bool accessLog) {
         {"GET /api/jobs", [this](const Request& req, Response& res) { listJobs(req, res); }},
         {"GET /api/jobs/{id}", [this](const Request& req, Response& res) { getJob(req, res); }},
         {"DELETE /api/jobs/{id}", [this](const Request& req, Response& res) { deleteJob(req, res); }},
+        {"GET /api/jobs/{id}/points",
+         [this](const Request& req, Response& res) { getSweepPoints(req, res); }},
         {"GET /api/meshes", [this](const Request&, Response& res) { sendJson(res, 200, catalog_.list()); }},
     };
     for (const ResultFile& f : kResultFiles)

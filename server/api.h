@@ -40,6 +40,7 @@ class Api {
     void getJob(const httplib::Request& req, httplib::Response& res);
     void cancelJob(const httplib::Request& req, httplib::Response& res);
     void deleteJob(const httplib::Request& req, httplib::Response& res);
+    void getSweepPoints(const httplib::Request& req, httplib::Response& res);
     void getResult(const httplib::Request& req, httplib::Response& res, const std::string& file,
                    const std::string& contentType);
 

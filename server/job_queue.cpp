@@ -259,8 +259,11 @@ void JobQueue::runJob(JobRecord job, RunControl& control) {
             recorded = record(job);
         }
         if (!recorded) return finish(JobState::Failed, kStartNotRecorded);
-        results_.clear(id);  // a job re-run after a crash starts from nothing
-        const StudyResult result = runner_.run(spec, control);
+        // A study re-run after a crash starts from nothing; a sweep resumes from the points it kept.
+        const bool sweep = spec.settings.sweep.has_value();
+        if (!sweep) results_.clear(id);
+        const StudyResult result =
+            runner_.run(spec, control, sweep ? sweepCheckpoint(results_, id) : SweepCheckpoint{});
         try {
             for (const ResultFile& f : kResultFiles)
                 if (std::string bytes = f.bytes(result); !bytes.empty())
@@ -279,17 +282,18 @@ void JobQueue::runJob(JobRecord job, RunControl& control) {
             std::lock_guard lock(mutex_);
             shuttingDown = stopping_;
         }
-        results_.clear(id);
         if (shuttingDown) {
-            job.state = JobState::Queued;
+            job.state = JobState::Queued;  // a sweep keeps its finished points for the restart
             job.startedAt.clear();
             job.threadsUsed = 0;
             std::lock_guard lock(mutex_);
             record(job);
         } else {
+            results_.clear(id);
             finish(JobState::Canceled);
         }
     } catch (const Error& e) {
+        results_.clear(id);  // a sweep's kept points
         finish(JobState::Failed, e.what());
     } catch (const std::bad_alloc&) {
         finish(JobState::Failed, "out of memory: ask for fewer photons or a smaller image");

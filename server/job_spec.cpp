@@ -31,6 +31,14 @@ StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const Ser
     const StudySpec spec = StudySpec::fromJson(body, defaults);
     if (!body.contains("photons")) throw Error("photons", "photons is required");
     if (limits) checkRenderLimits(spec, *limits);
+    if (limits && spec.settings.sweep) {
+        uint64_t points = 1;
+        for (const SweepAxis& axis : spec.settings.sweep->axes) points *= axis.size();
+        if (spec.settings.trace.photons > limits->maxPhotons / points)
+            throw Error("photons", "a sweep traces photons at each of its " + std::to_string(points) +
+                                       " points: photons times points must be at most " +
+                                       std::to_string(limits->maxPhotons) + " on this server");
+    }
     return spec;
 }
 

@@ -93,7 +93,9 @@ std::vector<std::string> splitWords(std::string_view text) {
 }
 
 bool useLauncher(const LaunchSettings& launch, const StudySettings& settings) {
-    const uint64_t photons = settings.trace.photons + (settings.render ? settings.render->mapPhotons : 0);
+    uint64_t photons = settings.trace.photons + (settings.render ? settings.render->mapPhotons : 0);
+    if (settings.sweep)
+        for (const SweepAxis& axis : settings.sweep->axes) photons *= axis.size();  // every point's
     return photons >= launch.minPhotons;
 }
 
@@ -117,7 +119,7 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
     const fs::path jobFile = folder.path() / "job.json";
     {
         std::ofstream out(jobFile);
-        out << toJson(StudySpec{mesh.source, mesh.name, settings}).dump(2);
+        out << toJson(StudySpec{mesh.source, mesh.name, settings, mesh.cut}).dump(2);
         if (!(out << std::flush)) throw Error("launcher: cannot write " + jobFile.string());
     }
 
@@ -140,7 +142,8 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
         throw Error("launcher: '" + command + "' failed with exit code " + std::to_string(exit.exitCode) +
                     ": " + exit.tail);
 
-    if (!fs::exists(folder.path() / "stats.json"))
+    // The file a study writes last.
+    if (!fs::exists(folder.path() / (settings.sweep ? "sweep.json" : "stats.json")))
         throw Error("launcher: the job left no results in " + folder.path().string() +
                     " (is it a directory every node shares?): " + exit.tail);
     StudyResult result;

@@ -3,7 +3,9 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -123,9 +125,48 @@ std::optional<std::string> ResultFiles::read(const std::string& jobId, const std
     return std::move(ss).str();
 }
 
+std::vector<std::string> ResultFiles::names(const std::string& jobId, const std::string& prefix) const {
+    std::vector<std::string> found;
+    std::error_code ec;
+    for (auto it = fs::directory_iterator(jobDir(jobId), ec); !ec && it != fs::directory_iterator();
+         it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.compare(0, prefix.size(), prefix) == 0 && it->path().extension() != ".tmp")
+            found.push_back(name);
+    }
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
 void ResultFiles::clear(const std::string& jobId) {
     std::error_code ec;
     fs::remove_all(jobDir(jobId), ec);
+}
+
+std::string sweepPointFile(size_t round, size_t point) {
+    char name[64];
+    std::snprintf(name, sizeof name, "%s%zu-%06zu.json", kSweepPointPrefix, round, point);
+    return name;
+}
+
+SweepCheckpoint sweepCheckpoint(ResultFiles& files, const std::string& jobId) {
+    return {[&files, jobId](size_t round, size_t point) -> std::optional<nlohmann::json> {
+                const std::optional<std::string> bytes = files.read(jobId, sweepPointFile(round, point));
+                if (!bytes) return std::nullopt;
+                // A file the crash cut short is never there (written atomically); one that does not parse is
+                // traced again.
+                nlohmann::json j = nlohmann::json::parse(*bytes, nullptr, false);
+                return j.is_discarded() ? std::nullopt : std::optional(std::move(j));
+            },
+            [&files, jobId](size_t round, size_t point, const nlohmann::json& j) {
+                // A point that cannot be kept (a full disk) is traced again after a restart; the sweep goes
+                // on.
+                try {
+                    files.write(jobId, sweepPointFile(round, point), j.dump());
+                } catch (const std::exception& e) {
+                    std::fprintf(stderr, "facetlight-server: job %s: %s\n", jobId.c_str(), e.what());
+                }
+            }};
 }
 
 }  // namespace facetlight::server

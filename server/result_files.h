@@ -7,6 +7,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "study/sweep_job.h"
 
 namespace facetlight::server {
 
@@ -18,6 +21,8 @@ class ResultFiles {
 
     void write(const std::string& jobId, const std::string& name, std::string_view bytes);
     std::optional<std::string> read(const std::string& jobId, const std::string& name) const;
+    // The names of the job's files that begin with `prefix`, sorted.
+    std::vector<std::string> names(const std::string& jobId, const std::string& prefix) const;
     void clear(const std::string& jobId);  // every result of the job, and its folder
     // Bytes free for results on the disk that holds them (the most a non-root writer may use).
     uint64_t freeBytes() const;
@@ -32,6 +37,11 @@ class ResultFiles {
 
 // Removes the `.tmp` files a crash or a full disk left anywhere under `dir`.
 void removeTemporaryFiles(const std::filesystem::path& dir);
+// A sweep's finished points, one file each in the job's folder ("point-<round>-<index>.json", the point as
+// sweep.json lists it), written as they finish and read back when an interrupted sweep resumes.
+std::string sweepPointFile(size_t round, size_t point);
+constexpr const char* kSweepPointPrefix = "point-";
+SweepCheckpoint sweepCheckpoint(ResultFiles& files, const std::string& jobId);
 
 // Writes bytes to path.tmp, fsyncs it, renames it over path and fsyncs path's folder (POSIX: the rename is
 // atomic, and durable once the folder is synced). Throws Error.

@@ -2,7 +2,13 @@
 
 namespace facetlight::server {
 
-StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control) {
+StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control,
+                                 const SweepCheckpoint& checkpoint) {
+    if (spec.settings.sweep) {
+        SerialCommunicator serial;
+        return runSweepJob(spec.mesh, spec.settings, control, serial, checkpoint);
+    }
+    if (!spec.cut.empty()) return runStudy(cutStone(spec), spec.settings, control);
     const std::shared_ptr<const Stone> stone = catalog_.resolve(spec.mesh);
     if (spec.name.empty() || spec.name == stone->name) return runStudy(*stone, spec.settings, control);
     Stone named = *stone;  // a copy to rename: the catalog's stone is shared
@@ -10,8 +16,12 @@ StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control) {
     return runStudy(named, spec.settings, control);
 }
 
-StudyResult LauncherRunner::run(const StudySpec& spec, RunControl& control) {
-    if (!useLauncher(launch_, spec.settings)) return inProcess_.run(spec, control);
+StudyResult LauncherRunner::run(const StudySpec& spec, RunControl& control,
+                                const SweepCheckpoint& checkpoint) {
+    if (!useLauncher(launch_, spec.settings)) return inProcess_.run(spec, control, checkpoint);
+    // A sweep's designs, and a design of the cut library, are built by the child.
+    if (spec.settings.sweep || !spec.cut.empty())
+        return runStudyInChild(launch_, {spec.mesh, spec.name, spec.cut}, spec.settings, control);
     catalog_.resolve(spec.mesh);  // a mesh that does not build fails here, as it would in-process
     ChildMesh child = catalog_.locate(spec.mesh);
     if (!spec.name.empty()) child.name = spec.name;

@@ -26,6 +26,12 @@ foreach(ranks 2 3)
     ENVIRONMENT "${FACETLIGHT_MPI_TEST_ENV}" LABELS mpi TIMEOUT 300)
 endforeach()
 
+# A sweep with a search, its points spread over 2 ranks, equals the single-process one.
+add_test(NAME mpi_sweep_2_ranks
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/mpi/compare_sweep.sh $<TARGET_FILE:facetlight> ${MPIEXEC_EXECUTABLE} 2
+    ${CMAKE_CURRENT_SOURCE_DIR}/mpi/sweep_job.json)
+set_tests_properties(mpi_sweep_2_ranks PROPERTIES ENVIRONMENT "${FACETLIGHT_MPI_TEST_ENV}" LABELS mpi TIMEOUT 300)
+
 add_executable(launcher_test ${CMAKE_CURRENT_SOURCE_DIR}/mpi/launcher_test.cpp)
 target_link_libraries(launcher_test PRIVATE facetlight::server GTest::gtest_main facetlight_warnings)
 target_compile_definitions(launcher_test PRIVATE

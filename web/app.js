@@ -9,24 +9,31 @@ import { clearFieldError, submitJob, syncFormControls } from './js/form.js';
 import { jobsView, refreshHealth, refreshJobs } from './js/jobs.js';
 import { describeMesh, loadMeshes, uploadMesh } from './js/meshes.js';
 import { resultView, showResult } from './js/result.js';
+import { initSweepForm, setSweepShapes, showSweep, sweepView } from './js/sweep.js';
 
 function route() {
   const hash = location.hash.replace(/^#/, '') || '/';
   const parts = hash.split('/').filter(Boolean);
   let view = 'home';
   if (parts[0] === 'jobs' && parts[1]) view = 'result';
+  else if (parts[0] === 'sweeps' && parts[1]) view = 'sweep';
   else if (parts[0] === 'compare') view = 'compare';
-  for (const v of ['home', 'result', 'compare']) $(`#view-${v}`).hidden = v !== view;
+  for (const v of ['home', 'result', 'sweep', 'compare']) $(`#view-${v}`).hidden = v !== view;
   for (const a of document.querySelectorAll('[data-nav]')) {
     if (a.dataset.nav === (view === 'compare' ? 'compare' : 'home')) a.setAttribute('aria-current', 'page');
     else a.removeAttribute('aria-current');
   }
   clearTimeout(resultView.timer);
   resultView.id = '';
+  clearTimeout(sweepView.timer);
+  sweepView.id = '';
   if (view === 'result') {
     document.title = 'Result — facetlight';
     $('#result-body').replaceChildren(h('p', { class: 'hint', id: 'result-title' }, 'Loading…'));
     showResult(decodeURIComponent(parts[1]));
+  } else if (view === 'sweep') {
+    document.title = 'Sweep — facetlight';
+    showSweep(decodeURIComponent(parts[1]));
   } else if (view === 'compare') {
     document.title = 'Compare — facetlight';
     const ids = (parts[1] || '').split(',').filter(Boolean).map(decodeURIComponent);
@@ -60,6 +67,7 @@ async function start() {
   });
   window.addEventListener('hashchange', route);
   syncFormControls();
+  initSweepForm();
   route();
   const health = await refreshHealth();
   if (health && health.cores) {
@@ -67,7 +75,8 @@ async function start() {
     threads.value = String(health.cores);
     threads.max = String(health.cores);
   }
-  await loadMeshes();
+  const shipped = await loadMeshes();
+  if (shipped) setSweepShapes(shipped);
   refreshJobs();
 }
 

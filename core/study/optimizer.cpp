@@ -122,14 +122,17 @@ SweepConstraint parseSweepConstraint(const std::string& text) {
 
 GridObjective sweepObjective(const SweepSpec& base, const std::string& figure,
                              const std::vector<SweepConstraint>& constraints, RunControl& control,
-                             std::vector<SweepResult>& rounds) {
+                             std::vector<SweepResult>& rounds, Communicator& comm,
+                             const SweepRoundHooks& hooks) {
     checkSweepFigure(figure);
     return
-        [base, figure, constraints, &control, &rounds](const std::vector<SweepAxis>& axes, uint64_t photons) {
+        [base, figure, constraints, &control, &rounds, &comm, hooks](const std::vector<SweepAxis>& axes,
+                                                                     uint64_t photons) {
             SweepSpec spec = base;
             spec.axes = axes;
             spec.trace.photons = photons;
-            rounds.push_back(runSweep(spec, control));
+            rounds.push_back(
+                runSweep(spec, control, hooks ? hooks(rounds.size(), spec) : SweepPointHooks{}, comm));
             std::vector<DesignEstimate> out;
             for (const SweepPoint& p : rounds.back().points) {
                 DesignEstimate e;

@@ -2,7 +2,23 @@
 
 namespace facetlight {
 
-const std::array<ResultFile, 11> kResultFiles{{
+const std::array<ResultFile, 16> kResultFiles{{
+    {"best.obj", "text/plain", "best.obj", "best_obj", "sweep.maximize",
+     [](const StudyResult& r) { return r.bestObj; },
+     [](StudyResult& r, std::string&& b) { r.bestObj = std::move(b); }},
+    {"best.json", "application/json", "best.json", "best", "sweep.maximize",
+     [](const StudyResult& r) { return r.bestJson; },
+     [](StudyResult& r, std::string&& b) { r.bestJson = std::move(b); }},
+    {"sweep.csv", "text/csv", "sweep.csv", "sweep_csv", "sweep",
+     [](const StudyResult& r) { return r.sweepCsv; },
+     [](StudyResult& r, std::string&& b) { r.sweepCsv = std::move(b); }},
+    {"sweep.png", "image/png", "sweep.png", "sweep_picture", "sweep",
+     [](const StudyResult& r) { return r.sweepPng; },
+     [](StudyResult& r, std::string&& b) { r.sweepPng = std::move(b); }},
+    // Last of a sweep's: its presence says the folder is complete.
+    {"sweep.json", "application/json", "sweep.json", "sweep", "sweep",
+     [](const StudyResult& r) { return r.sweepJson; },
+     [](StudyResult& r, std::string&& b) { r.sweepJson = std::move(b); }},
     {"stats.csv", "text/csv", "stats.csv", "stats_csv", "", [](const StudyResult& r) { return r.statsCsv; },
      [](StudyResult& r, std::string&& b) { r.statsCsv = std::move(b); }},
     {"render.png", "image/png", "render.png", "render", "render",
@@ -35,5 +51,20 @@ const std::array<ResultFile, 11> kResultFiles{{
      [](const StudyResult& r) { return r.stats.is_null() ? std::string() : r.stats.dump(2) + "\n"; },
      [](StudyResult& r, std::string&& b) { r.stats = nlohmann::json::parse(b); }},
 }};
+
+bool hasResultFile(const ResultFile& file, const nlohmann::json& request) {
+    if (file.needs.empty()) return !(request.contains("sweep") && request["sweep"].is_object());
+    const nlohmann::json* at = &request;
+    std::string_view path = file.needs;
+    while (!path.empty()) {
+        const size_t dot = path.find('.');
+        const std::string key(path.substr(0, dot));
+        if (!at->is_object() || !at->contains(key)) return false;
+        at = &(*at)[key];
+        path = dot == std::string_view::npos ? std::string_view() : path.substr(dot + 1);
+    }
+    // "fire": {"enabled": false} asks for no fire heat-map.
+    return (at->is_object() && at->value("enabled", true)) || at->is_string();
+}
 
 }  // namespace facetlight

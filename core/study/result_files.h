@@ -14,14 +14,19 @@ struct ResultFile {
     std::string_view mediaType;                       // what the service sends it as
     std::string_view route;                           // under the service's /api/jobs/{id}/
     std::string_view link;                            // its name among a finished job's links
-    std::string_view needs;                           // linked only when the job's request has this key
-                                                      // as an object ("render", "aset",
-                                                      // "fire_picture"); empty: always
+    std::string_view needs;                           // linked only when the job's request has this
+                                                      // dotted path as an object not switched off
+                                                      // ("enabled": false) or a name ("render",
+                                                      // "sweep.maximize", "fire_picture"); empty: every
+                                                      // job but a sweep
     std::string (*bytes)(const StudyResult&);         // empty: the study made none
     void (*load)(StudyResult&, std::string&& bytes);  // the inverse
 };
 
 // In the order they are written: stats.json last, so that its presence says a folder is complete.
-extern const std::array<ResultFile, 11> kResultFiles;
+extern const std::array<ResultFile, 16> kResultFiles;
+
+// Whether a finished job of this request has the file (`needs` above).
+bool hasResultFile(const ResultFile& file, const nlohmann::json& request);
 
 }  // namespace facetlight

@@ -57,6 +57,24 @@ uint64_t studyUnits(const StudySettings& settings, RunPhase phase) {
     return 0;
 }
 
+StudyResult runSweepJob(const std::string& shape, const StudySettings& settings, RunControl& control,
+                        Communicator& comm, const SweepCheckpoint& checkpoint) {
+    if (!settings.sweep) throw Error("sweep", "the job is not a sweep");
+    const SweepRequest& request = *settings.sweep;
+    const SweepOutputs out =
+        runSweepRequest(sweepSpec(shape, request, settings.trace), request, control, comm, checkpoint);
+    StudyResult result;
+    if (!comm.isRoot()) return result;
+    result.sweepJson = out.json();
+    result.sweepCsv = out.csv();
+    result.sweepPng = out.pictures.front().second;
+    if (!out.best.is_null()) {
+        result.bestJson = out.best.dump(2) + "\n";
+        result.bestObj = out.bestObj;
+    }
+    return result;
+}
+
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunControl& control) {
     SerialCommunicator serial;
     return runStudy(stone, settings, control, serial);

@@ -10,6 +10,7 @@
 #include "render/render_settings.h"
 #include "render/view_settings.h"
 #include "stone/stone.h"
+#include "study/sweep_job.h"
 #include "trace/trace_settings.h"
 #include "util/distributed.h"
 #include "util/run_control.h"
@@ -27,6 +28,8 @@ struct StudySettings {
     // The stone through the render's camera under a small bright light in true spectral colour (needs a
     // render): fire.png.
     std::optional<FirePictureSettings> firePicture;
+    // A sweep of the job's shape (docs/sweeps.md) instead of one trace: runSweepJob, not runStudy.
+    std::optional<SweepRequest> sweep;
 };
 
 struct StudyResult {
@@ -38,6 +41,8 @@ struct StudyResult {
     std::string fireHeatmapPng;          // with a fire trace: each facet's share of the fire
     std::string tiltWebp, tiltChartPng;  // with a tilt series: the animation and light return against tilt
     std::string firePng;                 // with a fire picture
+    // A sweep's files: sweep.json, sweep.csv, its figure's picture; with a search best.json and best.obj.
+    std::string sweepJson, sweepCsv, sweepPng, bestJson, bestObj;
 };
 
 // Builds one Scene for every phase and runs them, each reporting to `control` (RunPhase::Tracing, PhotonMap,
@@ -49,6 +54,10 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
 // ranks return empty results. control.done() and total() count this rank's share of each phase.
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunControl& control,
                      Communicator& comm);
+// A sweep job (settings.sweep) of the cut library's shape `shape` on every rank of `comm`: rank 0's result
+// holds its files (sweepJson, sweepCsv, sweepPng of the first figure; with a search bestJson, bestObj).
+StudyResult runSweepJob(const std::string& shape, const StudySettings& settings, RunControl& control,
+                        Communicator& comm, const SweepCheckpoint& checkpoint = {});
 // The units of a phase of the whole study, over every rank: its photons or pixels (0 for the others).
 uint64_t studyUnits(const StudySettings& settings, RunPhase phase);
 

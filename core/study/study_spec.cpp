@@ -10,7 +10,7 @@ StudySpec StudySpec::fromJson(const nlohmann::json& j, StudySpec spec) {
     spec.mesh = settings::readText(j["mesh"], "mesh");
     if (j.contains("name")) spec.name = settings::readText(j["name"], "name");
     nlohmann::json trace = j;
-    for (const char* key : {"mesh", "name", "render", "aset", "tilt_series", "fire_picture"})
+    for (const char* key : {"mesh", "name", "render", "aset", "tilt_series", "fire_picture", "sweep", "cut"})
         trace.erase(key);
     if (const auto r = j.find("render"); r != j.end()) {
         if (r->is_object()) {
@@ -31,7 +31,30 @@ StudySpec StudySpec::fromJson(const nlohmann::json& j, StudySpec spec) {
             throw Error(view, std::string(view) + " must come with render: set render to true or an object");
     }
     traceSettingsSchema().read(spec.settings.trace, trace);
+    if (const auto c = j.find("cut"); c != j.end() && !c->is_null()) {
+        if (!c->is_object()) throw Error("cut", "cut must be an object of the shape's parameters");
+        spec.cut.clear();
+        for (const auto& [key, value] : c->items())
+            spec.cut[key] = settings::readNumber(value, settings::fieldPath("cut", key), {});
+        if (j.contains("sweep")) throw Error("cut", "a sweep holds parameters with sweep.set, not cut");
+        try {
+            completeCutValues(findCutShape(spec.mesh), spec.cut);
+        } catch (const Error& e) {
+            throw Error("cut", std::string("cut: ") + e.what());
+        }
+    }
+    // A sweep of a shape of the cut library (docs/sweeps.md): every point an ordinary trace of these
+    // settings.
+    if (const auto s = j.find("sweep"); s != j.end() && !s->is_null()) {
+        spec.settings.sweep = sweepRequestSchema().read(*s, "sweep");
+        if (spec.settings.render) throw Error("render", "a sweep makes no render: set render to false");
+        sweepSpec(spec.mesh, *spec.settings.sweep, spec.settings.trace);
+    }
     return spec;
+}
+
+Stone cutStone(const StudySpec& spec) {
+    return Stone::build(makeCut(spec.mesh, spec.cut), spec.name.empty() ? spec.mesh : spec.name);
 }
 
 nlohmann::json toJson(const StudySpec& spec) {
@@ -42,6 +65,8 @@ nlohmann::json toJson(const StudySpec& spec) {
     if (spec.settings.aset) j["aset"] = toJson(*spec.settings.aset);
     if (spec.settings.tiltSeries) j["tilt_series"] = toJson(*spec.settings.tiltSeries);
     if (spec.settings.firePicture) j["fire_picture"] = toJson(*spec.settings.firePicture);
+    if (spec.settings.sweep) j["sweep"] = toJson(*spec.settings.sweep);
+    if (!spec.cut.empty()) j["cut"] = spec.cut;
     return j;
 }
 

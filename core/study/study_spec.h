@@ -15,11 +15,15 @@ struct StudySpec {
     std::string mesh;  // a file, a shipped shape's name, or (in the service) an uploaded mesh's id
     std::string name;  // the stone's name in the results; empty: the one the mesh gives
     StudySettings settings;
+    CutValues cut;  // a cut library shape's parameters other than their defaults (a sweep's point)
 
     // Read through the settings schema onto `defaults` (keys absent keep their values); throws Error naming
     // the field by its dotted path.
     static StudySpec fromJson(const nlohmann::json& j, StudySpec defaults = {});
 };
+
+// The stone a spec with `cut` names: its shape built with those parameters.
+Stone cutStone(const StudySpec& spec);
 
 // Every setting written out, so a stored job runs the same after a restart even if defaults change.
 nlohmann::json toJson(const StudySpec& spec);

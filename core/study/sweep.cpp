@@ -71,6 +71,21 @@ std::string SweepAxis::label(size_t i) const {
     return numeric() ? formatNumber(values[i]) : choices[i];
 }
 
+SweepAxis sweepRange(const std::string& name, double lo, double hi, double step) {
+    const std::string range = formatNumber(lo) + ":" + formatNumber(hi) + ":" + formatNumber(step);
+    if (!(step > 0))
+        throw Error("sweep axis " + name + ": the step must be above 0, got " + formatNumber(step));
+    if (hi < lo) throw Error("sweep axis " + name + ": the range " + range + " is inverted (HI below LO)");
+    const double steps = std::floor((hi - lo) / step + 1e-9);
+    if (steps + 1 > double(kMaxSweepPoints))
+        throw Error("sweep axis " + name + ": " + range + " has more than " +
+                    std::to_string(kMaxSweepPoints) + " values");
+    // lo + i step, rounded to nine decimals so that 37.3 is the number a user typing 37.3 gets.
+    SweepAxis axis{name, {}, {}};
+    for (int i = 0; i <= int(steps); ++i) axis.values.push_back(std::round((lo + i * step) * 1e9) / 1e9);
+    return axis;
+}
+
 SweepAxis parseSweepAxis(const std::string& text) {
     const size_t eq = text.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
@@ -87,18 +102,8 @@ SweepAxis parseSweepAxis(const std::string& text) {
         const std::vector<std::string> parts = splitText(range, ':');
         if (parts.size() != 3)
             throw Error("sweep axis " + axis.name + ": a range is LO:HI:STEP, got '" + range + "'");
-        const double lo = axisNumber(axis.name, parts[0]), hi = axisNumber(axis.name, parts[1]),
-                     step = axisNumber(axis.name, parts[2]);
-        if (!(step > 0))
-            throw Error("sweep axis " + axis.name + ": the step must be above 0, got " + parts[2]);
-        if (hi < lo)
-            throw Error("sweep axis " + axis.name + ": the range " + range + " is inverted (HI below LO)");
-        const double steps = std::floor((hi - lo) / step + 1e-9);
-        if (steps + 1 > double(kMaxSweepPoints))
-            throw Error("sweep axis " + axis.name + ": " + range + " has more than " +
-                        std::to_string(kMaxSweepPoints) + " values");
-        // lo + i step, rounded to nine decimals so that 37.3 is the number a user typing 37.3 gets.
-        for (int i = 0; i <= int(steps); ++i) axis.values.push_back(std::round((lo + i * step) * 1e9) / 1e9);
+        axis = sweepRange(axis.name, axisNumber(axis.name, parts[0]), axisNumber(axis.name, parts[1]),
+                          axisNumber(axis.name, parts[2]));
     } else {
         for (const std::string& token : splitText(range, ','))
             axis.values.push_back(axisNumber(axis.name, token));
@@ -196,24 +201,54 @@ std::vector<SweepPoint> sweepPoints(const SweepSpec& spec) {
     return points;
 }
 
-SweepResult runSweep(const SweepSpec& spec, RunControl& control,
-                     const std::function<void(const SweepPoint&)>& onPoint) {
+SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPointHooks& hooks) {
+    SerialCommunicator serial;
+    return runSweep(spec, control, hooks, serial);
+}
+
+SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPointHooks& hooks,
+                     Communicator& comm) {
     spec.validate();
     const auto start = std::chrono::steady_clock::now();
     SweepResult result{spec, sweepPoints(spec), 0};
     const CutShape& shape = findCutShape(spec.shape);
     const int threads = spec.trace.threads;
+    const size_t count = result.points.size();
+
+    // Points finished before, read on rank 0 and handed to every rank.
+    std::string restoredText;
+    if (comm.isRoot() && hooks.restore) {
+        nlohmann::json restored = nlohmann::json::object();
+        for (size_t k = 0; k < count; ++k)
+            if (std::optional<nlohmann::json> j = hooks.restore(k))
+                restored[std::to_string(k)] = std::move(*j);
+        restoredText = restored.dump();
+    }
+    if (comm.size() > 1) comm.broadcast(restoredText);
+    std::vector<bool> pending(count, true);
+    if (!restoredText.empty()) {
+        const nlohmann::json restored = nlohmann::json::parse(restoredText);
+        for (const auto& [key, j] : restored.items()) {
+            const size_t k = std::stoul(key);
+            restoreSweepPoint(j, result.points.at(k));
+            pending[k] = false;
+        }
+    }
+    // This rank's points: every size-th of those still to trace.
+    std::vector<size_t> mine;
+    for (size_t k = 0; k < count; ++k)
+        if (pending[k] && k % size_t(comm.size()) == size_t(comm.rank())) mine.push_back(k);
 
     // Each distinct design once: points that differ only in trace settings share its stone.
     std::map<CutValues, size_t> designIndex;
     std::vector<const CutValues*> designs;
-    std::vector<size_t> designOf(result.points.size());
-    for (size_t k = 0; k < result.points.size(); ++k) {
+    std::vector<size_t> designOf(count);
+    for (const size_t k : mine) {
         const auto [it, added] = designIndex.emplace(result.points[k].cut, designs.size());
         if (added) designs.push_back(&it->first);
         designOf[k] = it->second;
     }
-    if (control.cancelled()) throw Canceled();
+    if (anyRank(comm, control.cancelled())) throw Canceled();
     std::vector<std::optional<Stone>> stones(designs.size());
     std::vector<std::string> designError(designs.size());
     parallelForBlocks({0, designs.size(), 1, threads}, &control, [&](int, uint64_t first, uint64_t last) {
@@ -226,15 +261,18 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control,
         }
         return uint64_t(0);
     });
-    if (control.cancelled()) throw Canceled();
+    if (anyRank(comm, control.cancelled())) throw Canceled();
 
     // Several points at once; the threads left over trace within each (a trace's bits do not depend on them).
     // Progress counts photons, so that a cancel stops a point within a block of them.
-    control.startPhase(RunPhase::Tracing, result.points.size() * spec.trace.photons);
-    const BlockLoop loop{0, result.points.size(), 1, threads};
+    control.startPhase(RunPhase::Tracing, mine.size() * spec.trace.photons);
+    for (size_t k = 0; k < count; ++k)
+        if (!pending[k]) control.finishItem();
+    const BlockLoop loop{0, mine.size(), 1, threads};
     const int inner = std::max(1, threads / loop.workers());
     const bool finished = parallelForBlocks(loop, &control, [&](int, uint64_t first, uint64_t last) {
-        for (uint64_t k = first; k < last; ++k) {
+        for (uint64_t i = first; i < last; ++i) {
+            const size_t k = mine[i];
             SweepPoint& p = result.points[k];
             const std::optional<Stone>& stone = stones[designOf[k]];
             p.error = designError[designOf[k]];
@@ -254,14 +292,73 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control,
                 }
             }
             if (!p.ok()) control.advance(p.trace.photons);
-            if (onPoint) onPoint(p);
+            if (hooks.onPoint) hooks.onPoint(k, p);  // kept before it counts as done
+            control.finishItem();
         }
         return uint64_t(0);
     });
-    if (!finished || control.cancelled()) throw Canceled();
+    if (anyRank(comm, !finished || control.cancelled())) throw Canceled();
+
+    if (comm.size() > 1) {
+        nlohmann::json traced = nlohmann::json::object();
+        for (const size_t k : mine) traced[std::to_string(k)] = sweepPointJson(spec, result.points[k]);
+        for (const std::string& bytes : comm.allGather(traced.dump())) {
+            const nlohmann::json points = nlohmann::json::parse(bytes);
+            for (const auto& [key, j] : points.items()) {
+                const size_t k = std::stoul(key);
+                if (k % size_t(comm.size()) == size_t(comm.rank())) continue;
+                restoreSweepPoint(j, result.points.at(k));
+                if (comm.isRoot() && hooks.onPoint) hooks.onPoint(k, result.points[k]);
+            }
+        }
+    }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     control.startPhase(RunPhase::Done, 0);
     return result;
+}
+
+nlohmann::json sweepPointJson(const SweepSpec& spec, const SweepPoint& p) {
+    nlohmann::json values = nlohmann::json::object();
+    for (size_t a = 0; a < spec.axes.size(); ++a) {
+        const SweepAxis& axis = spec.axes[a];
+        values[axis.name] =
+            axis.numeric() ? nlohmann::json(axis.values[p.at[a]]) : nlohmann::json(axis.choices[p.at[a]]);
+    }
+    nlohmann::json point = {{"at", p.at}, {"values", values}};
+    if (p.ok()) {
+        point["proportions"] = p.proportions;
+        point["totals"] = p.totals;
+    } else {
+        point["error"] = p.error;
+    }
+    return point;
+}
+
+void restoreSweepPoint(const nlohmann::json& j, SweepPoint& point) {
+    if (!j.is_object() || j.value("at", nlohmann::json()) != nlohmann::json(point.at))
+        throw Error("a stored sweep point does not belong to this grid");
+    if (j.contains("error")) {
+        point.error = j["error"].get<std::string>();
+        if (point.error.empty()) throw Error("a stored sweep point has an empty error");
+        return;
+    }
+    point.error.clear();
+    point.proportions = j.at("proportions");
+    point.totals = j.at("totals");
+}
+
+nlohmann::json sweepAxesJson(const SweepSpec& spec) {
+    nlohmann::json axes = nlohmann::json::array();
+    for (const SweepAxis& a : spec.axes) {
+        nlohmann::json axis = {{"name", a.name}, {"unit", spec.unit(a)}};
+        if (a.numeric()) {
+            axis["values"] = a.values;
+        } else {
+            axis["choices"] = a.choices;
+        }
+        axes.push_back(axis);
+    }
+    return axes;
 }
 
 nlohmann::json sweepToJson(const SweepResult& result) {
@@ -273,37 +370,12 @@ nlohmann::json sweepToJson(const SweepResult& result) {
                                         [&](const SweepAxis& a) { return a.name == parameter.first; });
         if (!varied) fixed[parameter.first] = parameter.second;
     }
-    nlohmann::json axes = nlohmann::json::array();
-    for (const SweepAxis& a : spec.axes) {
-        nlohmann::json axis = {{"name", a.name}, {"unit", spec.unit(a)}};
-        if (a.numeric()) {
-            axis["values"] = a.values;
-        } else {
-            axis["choices"] = a.choices;
-        }
-        axes.push_back(axis);
-    }
     nlohmann::json points = nlohmann::json::array();
-    for (const SweepPoint& p : result.points) {
-        nlohmann::json values = nlohmann::json::object();
-        for (size_t a = 0; a < spec.axes.size(); ++a) {
-            const SweepAxis& axis = spec.axes[a];
-            values[axis.name] =
-                axis.numeric() ? nlohmann::json(axis.values[p.at[a]]) : nlohmann::json(axis.choices[p.at[a]]);
-        }
-        nlohmann::json point = {{"at", p.at}, {"values", values}};
-        if (p.ok()) {
-            point["proportions"] = p.proportions;
-            point["totals"] = p.totals;
-        } else {
-            point["error"] = p.error;
-        }
-        points.push_back(point);
-    }
+    for (const SweepPoint& p : result.points) points.push_back(sweepPointJson(spec, p));
     return {{"shape", spec.shape},
             {"fixed", fixed},
             {"settings", toJson(spec.trace)},
-            {"axes", axes},
+            {"axes", sweepAxesJson(spec)},
             {"figures", sweepFigureNames()},
             {"points", points},
             {"timing",

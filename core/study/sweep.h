@@ -15,6 +15,7 @@
 #include "stats/facet_stats.h"
 #include "stone/stone.h"
 #include "trace/trace_settings.h"
+#include "util/distributed.h"
 #include "util/run_control.h"
 
 namespace facetlight {
@@ -41,6 +42,8 @@ constexpr size_t kMaxSweepAxes = 2;
 // cubic_zirconia". Throws Error for malformed text, an empty or inverted range, a step of 0 or below, or more
 // than kMaxSweepPoints values.
 SweepAxis parseSweepAxis(const std::string& text);
+// lo, lo + step, ... up to hi (both ends included); throws Error as parseSweepAxis does.
+SweepAxis sweepRange(const std::string& name, double lo, double hi, double step);
 
 struct SweepSpec {
     std::string shape;
@@ -86,13 +89,35 @@ struct SweepResult {
     double seconds = 0;
 };
 
+// What a sweep's points take from, and give to, outside: points finished before (an interrupted sweep
+// resumes from them), and each point as it finishes.
+struct SweepPointHooks {
+    // A point's sweepPointJson if it was finished before; asked on rank 0 before any tracing.
+    std::function<std::optional<nlohmann::json>(size_t point)> restore;
+    // Each point traced on this rank as it finishes (from the worker that traced it) and, on rank 0, every
+    // other rank's points once they are gathered. Not called for restored points.
+    std::function<void(size_t point, const SweepPoint&)> onPoint;
+};
+
 // Builds each design once, then traces the points on spec.trace.threads workers (several points at once, the
 // threads left over shared within each point), reporting to `control` in photons over all points
-// (RunPhase::Tracing, then Done). `onPoint`, when given, is called for each point as it finishes, from the
-// worker that traced it. Throws Canceled when control.cancel() stops it, Error on a bad spec.
-SweepResult runSweep(const SweepSpec& spec, RunControl& control,
-                     const std::function<void(const SweepPoint&)>& onPoint = {});
+// (RunPhase::Tracing, then Done) and in points (control.finishItem). Throws Canceled when control.cancel()
+// stops it, Error on a bad spec.
+SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPointHooks& hooks = {});
+// The same on every rank of `comm`: rank r traces the points k with k mod size = r, and every rank returns
+// every point, bit for bit those of a single process (the gathered points travel as their JSON, whose numbers
+// read back exactly). Restored points come from rank 0.
+SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPointHooks& hooks,
+                     Communicator& comm);
 
+// A point as sweep.json lists it: `at`, `values`, then `proportions` and `totals`, or `error`.
+nlohmann::json sweepPointJson(const SweepSpec& spec, const SweepPoint& point);
+// The inverse, into a point of sweepPoints(spec) (its `stats`, which the JSON does not hold, stay empty).
+// Throws Error when the JSON is not a point of this grid.
+void restoreSweepPoint(const nlohmann::json& j, SweepPoint& point);
+
+// sweep.json's `axes`: each axis's name, unit, and values or choices.
+nlohmann::json sweepAxesJson(const SweepSpec& spec);
 // sweep.json (docs/sweeps.md) and sweep.csv (one row a point).
 nlohmann::json sweepToJson(const SweepResult& result);
 std::string sweepCsv(const SweepResult& result);

@@ -27,6 +27,20 @@ class RunControl {
     }
     void advance(uint64_t units) { done_.fetch_add(units, std::memory_order_relaxed); }
 
+    // Runs made of whole items (a sweep's points) in stages (the search's rounds): stage `stage` (from 1) of
+    // `stages` begins with `items` items, none finished.
+    void startStage(int stage, int stages, uint64_t items) {
+        itemsDone_.store(0, std::memory_order_relaxed);
+        itemsTotal_.store(items, std::memory_order_relaxed);
+        stages_.store(stages, std::memory_order_relaxed);
+        stage_.store(stage, std::memory_order_release);
+    }
+    void finishItem() { itemsDone_.fetch_add(1, std::memory_order_relaxed); }
+    uint64_t itemsDone() const { return itemsDone_.load(std::memory_order_relaxed); }
+    uint64_t itemsTotal() const { return itemsTotal_.load(std::memory_order_relaxed); }
+    int stage() const { return stage_.load(std::memory_order_acquire); }  // 0: the run has no stages
+    int stages() const { return stages_.load(std::memory_order_relaxed); }
+
     // Asks the run to stop: workers claim no further block; the phase reports that it was cancelled.
     void cancel() { cancel_.store(true, std::memory_order_relaxed); }
     bool cancelled() const { return cancel_.load(std::memory_order_relaxed); }
@@ -43,6 +57,8 @@ class RunControl {
   private:
     std::atomic<RunPhase> phase_{RunPhase::Queued};
     std::atomic<uint64_t> done_{0}, total_{0};
+    std::atomic<uint64_t> itemsDone_{0}, itemsTotal_{0};
+    std::atomic<int> stage_{0}, stages_{0};
     // Read before every block by every worker: kept off the cache line that `done` is written on.
     alignas(64) std::atomic<bool> cancel_{false};
 };

@@ -135,6 +135,11 @@ async function waitForFinished(id) {
   }, bar, { timeout: JOB_TIMEOUT_MS, polling: 100 });
 }
 
+// An axis of the sweep form: its quantity, from, to and step.
+async function fillSweepAxis(i, values) {
+  for (const [k, key] of ['name', 'from', 'to', 'step'].entries()) await page.fill(`#s-${key}-${i}`, values[k]);
+}
+
 async function picturesLoaded(scope) {
   await page.waitForFunction((sel) => {
     const imgs = [...document.querySelectorAll(`${sel} img`)];
@@ -521,6 +526,63 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.match(await page.textContent('.pic-render figcaption'), /studio light/);
     assert.match(await page.textContent('.pic-fire figcaption'), /one small light 20° from vertical, 4° radius/);
     await shot('09d-fire-picture');
+  });
+
+  test('a sweep: its chart fills in with axes and units, hover shows a point, click traces it for compare', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.fill('#s-step-0', '0');
+    await page.click('#sweep-submit');
+    const stepError = await page.waitForSelector('[id="err-sweep.axes[0].step"]:not([hidden])');
+    assert.match(await stepError.textContent(), /step/);
+    await fillSweepAxis(0, ['pavilion', '39', '41', '1']);
+    await page.fill('#s-photons', '4000');
+    await page.click('#sweep-submit');
+    await page.waitForFunction(() => location.hash.startsWith('#/sweeps/'));
+    const id = await page.evaluate(() => location.hash.split('/')[2]);
+    await page.waitForFunction(() => document.querySelectorAll('#sweep-chart circle.sweep-point').length === 3, null,
+      { timeout: JOB_TIMEOUT_MS, polling: 100 });
+    await page.waitForFunction(() => /^succeeded/.test(document.querySelector('#sweep-progress').textContent), null,
+      { timeout: JOB_TIMEOUT_MS });
+    assert.match(await page.textContent('#sweep-progress'), /3 of 3 points/);
+    const chartText = await page.textContent('#sweep-chart svg');
+    for (const label of ['pavilion (deg)', 'Cosine-weighted return (%)', '±1σ']) assert.ok(chartText.includes(label), label);
+    assert.ok(await page.isVisible('#sweep-chart polygon.sweep-band'), 'the ±1σ band is drawn');
+    assert.ok(await page.isVisible('#sweep-links a[href$="/sweep.csv"]'));
+    await shot('12-sweep-chart');
+    await page.hover('#sweep-chart circle.sweep-point >> nth=1');
+    const tip = await page.textContent('#sweep-tooltip');
+    assert.match(tip, /^pavilion 40: /);
+    assert.match(tip, /cosine-weighted return \d+\.\d+ % ± \d/);
+    await page.click('#sweep-chart circle.sweep-point >> nth=1');
+    await page.waitForFunction(() => location.hash.startsWith('#/compare/'), null, { timeout: JOB_TIMEOUT_MS });
+    const design = await page.evaluate(() => location.hash.split('/')[2]);
+    const job = await (await fetch(`${baseUrl}/api/jobs/${design}`)).json();
+    assert.equal(job.state, 'succeeded');
+    assert.equal(job.settings.cut.pavilion, 40);
+    // The design's trace is the sweep's point, bit for bit.
+    const stats = await (await fetch(`${baseUrl}/api/jobs/${design}/stats`)).json();
+    const sweep = await (await fetch(`${baseUrl}/api/jobs/${id}/sweep.json`)).json();
+    assert.equal(stats.totals.weighted_return, sweep.points[1].totals.weighted_return);
+  });
+
+  test('a sweep over two axes draws a filled map with its best point starred and a colour legend', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await fillSweepAxis(0, ['pavilion', '39', '41', '1']);
+    await page.setChecked('#s-second', true);
+    await fillSweepAxis(1, ['crown', '30', '36', '3']);
+    await page.fill('#s-photons', '2000');
+    await page.click('#sweep-submit');
+    await page.waitForFunction(() => location.hash.startsWith('#/sweeps/'));
+    await page.waitForFunction(() => /^succeeded/.test(document.querySelector('#sweep-progress').textContent), null,
+      { timeout: JOB_TIMEOUT_MS });
+    await page.waitForFunction(() => document.querySelectorAll('#sweep-chart rect.sweep-cell').length === 9);
+    const chartText = await page.textContent('#sweep-chart svg');
+    for (const label of ['pavilion (deg)', 'crown (deg)', '★', '%']) assert.ok(chartText.includes(label), label);
+    const fills = await page.$$eval('#sweep-chart rect.sweep-cell', (cells) => new Set(cells.map((c) => c.getAttribute('fill'))).size);
+    assert.ok(fills > 1, 'the map has more than one colour');
+    await page.hover('#sweep-chart rect.sweep-cell >> nth=4');
+    assert.match(await page.textContent('#sweep-tooltip'), /^pavilion 40, crown 33: /);
+    await shot('13-sweep-map');
   });
 
   test('the home page fits a phone', async () => {

@@ -8,6 +8,8 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <regex>
 #include <set>
 #include <thread>
@@ -124,6 +126,26 @@ class ServiceTest : public ::testing::Test {
 
     static json smallJob() { return {{"mesh", "round_brilliant"}, {"photons", 20000}, {"threads", 2}}; }
     static json longJob() { return {{"mesh", "round_brilliant"}, {"photons", 100'000'000}, {"threads", 1}}; }
+    // A pavilion sweep of the round brilliant: `points` points from 39 deg in steps of 0.5.
+    static json sweepJob(int points, uint64_t photons) {
+        return {{"mesh", "round_brilliant"},
+                {"photons", photons},
+                {"threads", 2},
+                {"sweep",
+                 {{"axes",
+                   {{{"name", "pavilion"}, {"from", 39}, {"to", 39 + 0.5 * (points - 1)}, {"step", 0.5}}}}}}};
+    }
+    json getJson(const std::string& path) {
+        auto r = client_->Get(path);
+        EXPECT_TRUE(r && r->status == 200) << path;
+        return r ? json::parse(r->body) : json();
+    }
+    // sweep.json without its `timing`: what a sweep computes, which must not depend on how it ran.
+    json sweepWithoutTiming(const std::string& id) {
+        json sweep = getJson("/api/jobs/" + id + "/sweep.json");
+        sweep.erase("timing");
+        return sweep;
+    }
 
     fs::path dir_;
     std::unique_ptr<Service> service_;
@@ -639,6 +661,146 @@ TEST_F(ServiceTest, QueuedAndInterruptedJobsSurviveARestart) {
     client_->Post("/api/jobs/" + running + "/cancel");
     EXPECT_EQ(waitFinished(running)["state"], "canceled");
     EXPECT_EQ(waitFinished(queued)["state"], "succeeded");
+}
+
+TEST_F(ServiceTest, SweepRunsToSuccessWithPointsAndResults) {
+    json job = sweepJob(3, 4000);
+    job["sweep"]["set"] = {{"crown", 34}};
+    const std::string id = submitOk(job);
+    const json queued = status(id);
+    EXPECT_EQ(queued["progress"]["points_total"], 3);
+    EXPECT_EQ(queued["settings"]["sweep"]["axes"][0]["values"], json({39, 39.5, 40}));  // stored expanded
+    const json done = waitFinished(id);
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    EXPECT_EQ(done["progress"]["points_done"], 3);
+    EXPECT_EQ(done["progress"]["overall"], 1.0);
+    const json& links = done["links"];
+    for (const char* link : {"sweep", "sweep_csv", "sweep_picture", "points"})
+        EXPECT_TRUE(links.contains(link)) << link;
+    for (const char* link : {"stats", "stats_csv", "best", "best_obj"})
+        EXPECT_FALSE(links.contains(link)) << link;
+
+    const json sweep = getJson(links["sweep"]);
+    EXPECT_EQ(sweep["shape"], "round_brilliant");
+    EXPECT_EQ(sweep["fixed"]["crown"], 34);
+    ASSERT_EQ(sweep["points"].size(), 3u);
+    EXPECT_EQ(sweep["points"][2]["values"]["pavilion"], 40);
+    EXPECT_GT(sweep["points"][2]["totals"]["weighted_return"].get<double>(), 0);
+    auto csv = client_->Get(links["sweep_csv"].get<std::string>());
+    ASSERT_TRUE(csv);
+    EXPECT_EQ(csv->get_header_value("Content-Type"), "text/csv");
+    EXPECT_EQ(std::count(csv->body.begin(), csv->body.end(), '\n'), 4);
+    auto png = client_->Get(links["sweep_picture"].get<std::string>());
+    ASSERT_TRUE(png);
+    EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
+    EXPECT_EQ(png->body.substr(1, 3), "PNG");
+    const json points = getJson(links["points"]);
+    EXPECT_EQ(points["points_total"], 3);
+    EXPECT_EQ(points["axes"][0]["unit"], "deg");
+    EXPECT_EQ(points["points"], sweep["points"]);
+    expectProblem(client_->Get("/api/jobs/" + id + "/stats"), 404);
+    expectProblem(client_->Get("/api/jobs/" + submitOk(smallJob()) + "/points"), 404);
+}
+
+TEST_F(ServiceTest, SweepSearchLinksTheBestDesign) {
+    json job = sweepJob(3, 2000);
+    job["sweep"]["maximize"] = "weighted_return";
+    job["sweep"]["refine_rounds"] = 1;
+    job["sweep"]["constraints"] = {"total_depth<=70"};
+    const json done = waitFinished(submitOk(job));
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    EXPECT_EQ(done["progress"]["steps"], 2);
+    const json best = getJson(done["links"]["best"]);
+    EXPECT_EQ(best["figure"], "weighted_return");
+    EXPECT_EQ(best["rounds"].size(), 2u);
+    EXPECT_EQ(best["best"]["photons"], 8000);
+    auto obj = client_->Get(done["links"]["best_obj"].get<std::string>());
+    ASSERT_TRUE(obj && obj->status == 200);
+    EXPECT_EQ(obj->body.rfind("# facetlight cut round_brilliant", 0), 0u) << obj->body.substr(0, 80);
+}
+
+TEST_F(ServiceTest, SweepCancelsAndForgetsItsPoints) {
+    const std::string id = submitOk(sweepJob(2, 50'000'000));
+    waitState(id, "running");
+    auto c = client_->Post("/api/jobs/" + id + "/cancel");
+    ASSERT_TRUE(c);
+    EXPECT_EQ(c->status, 202);
+    EXPECT_EQ(waitFinished(id)["state"], "canceled");
+    EXPECT_FALSE(fs::exists(dir_ / "data" / "jobs" / id));
+}
+
+// A sweep stopped with the service keeps the points it finished, resumes from them after the restart (they
+// are not traced again) and ends with the bits of a sweep that ran without a break.
+TEST_F(ServiceTest, SweepResumesAfterARestartWithTheSameBits) {
+    const json job = sweepJob(8, 300'000);
+    const std::string id = submitOk(job);
+    json s;
+    do {
+        s = status(id);
+        ASSERT_NE(s["state"], "succeeded") << "the sweep finished before the test could stop it";
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    } while (s["progress"].value("points_done", 0) < 1);
+    EXPECT_EQ(s["progress"]["points_total"], 8);
+    EXPECT_GE(getJson("/api/jobs/" + id + "/points")["points"].size(), 1u);  // the chart fills in
+    stopService();
+    std::map<fs::path, fs::file_time_type> kept;
+    for (const auto& e : fs::directory_iterator(dir_ / "data" / "jobs" / id))
+        if (e.path().filename().string().rfind("point-0-", 0) == 0) kept[e.path()] = e.last_write_time();
+    ASSERT_FALSE(kept.empty());
+    ASSERT_LT(kept.size(), 8u);
+
+    start();
+    const json done = waitFinished(id);
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    for (const auto& [path, time] : kept)
+        EXPECT_EQ(fs::last_write_time(path), time) << path;  // not traced again
+    const json resumed = sweepWithoutTiming(id);
+    const json whole = waitFinished(submitOk(job));
+    EXPECT_EQ(resumed.dump(), sweepWithoutTiming(whole["id"]).dump());
+}
+
+TEST_F(ServiceTest, BadSweepsAreRefusedNamingTheField) {
+    const auto refused = [&](const std::function<void(json&)>& change, const std::string& field) {
+        json job = sweepJob(3, 1000);
+        change(job);
+        expectProblem(submit(job), 422, field);
+    };
+    refused([](json& j) { j["sweep"].erase("axes"); }, "sweep.axes");
+    refused([](json& j) { j["sweep"]["axes"] = json::array(); }, "sweep.axes");
+    refused([](json& j) { j["sweep"]["axes"][0]["to"] = 30; }, "sweep.axes[0].to");
+    refused([](json& j) { j["sweep"]["axes"][0]["step"] = 0; }, "sweep.axes[0].step");
+    refused([](json& j) { j["sweep"]["axes"][0].erase("step"); }, "sweep.axes[0].step");
+    refused([](json& j) { j["sweep"]["axes"][0]["values"] = {40}; }, "sweep.axes[0]");
+    refused([](json& j) { j["sweep"]["axes"][0]["name"] = "sparkle"; }, "sweep.axes[0]");
+    refused([](json& j) { j["sweep"]["axes"][0]["from"] = "39"; }, "sweep.axes[0].from");
+    refused([](json& j) { j["sweep"]["axes"][1] = j["sweep"]["axes"][0]; }, "sweep.axes");
+    refused(
+        [](json& j) {
+            j["sweep"]["axes"][0]["to"] = 1e6;
+            j["sweep"]["axes"][0]["step"] = 1e-3;
+        },
+        "sweep.axes[0]");
+    refused([](json& j) { j["sweep"]["figure"] = "sparkle"; }, "sweep.figure");
+    refused([](json& j) { j["sweep"]["constraints"] = {"total_depth<=62"}; }, "sweep.constraints");
+    refused(
+        [](json& j) {
+            j["sweep"]["maximize"] = "leakage";
+            j["sweep"]["constraints"] = {"depth<=62"};
+        },
+        "sweep.constraints[0]");
+    refused([](json& j) { j["sweep"]["set"] = {{"table", 500}}; }, "sweep.set");
+    refused([](json& j) { j["sweep"]["bogus"] = 1; }, "sweep.bogus");
+    refused([](json& j) { j["sweep"]["refine_rounds"] = 9; }, "sweep.refine_rounds");
+    refused([](json& j) { j["mesh"] = "no_such_cut"; }, "mesh");
+    refused([](json& j) { j["render"] = true; }, "render");
+    refused([](json& j) { j["photons"] = 50'000'000; }, "photons");
+    refused(
+        [](json& j) {
+            j["sweep"]["axes"] = {{{"name", "material"}, {"choices", {"diamond", "cubic_zirconia"}}}};
+            j["sweep"]["maximize"] = "weighted_return";
+        },
+        "sweep.maximize");
+    expectProblem(client_->Get("/api/jobs/0123456789abcdef0123456789abcdef/points"), 404);
 }
 
 }  // namespace

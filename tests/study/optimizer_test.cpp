@@ -91,12 +91,13 @@ TEST(Optimizer, SearchesASweepWithinADepthLimit) {
     spec.trace.threads = 2;
     RunControl control;
     std::vector<SweepResult> rounds;
+    SerialCommunicator serial;
     const std::vector<SweepConstraint> limits{parseSweepConstraint("total_depth<=60")};
     OptimizeSettings settings;
     settings.refineRounds = 1;
     const OptimizeResult r =
         maximize({parseSweepAxis("pavilion=38:44:1")}, spec.trace.photons,
-                 sweepObjective(spec, "weighted_return", limits, control, rounds), settings);
+                 sweepObjective(spec, "weighted_return", limits, control, rounds, serial), settings);
     ASSERT_EQ(rounds.size(), 2u);
     EXPECT_EQ(rounds[1].spec.trace.photons, 16000u);
     for (const SweepPoint& p : rounds[1].points)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <mutex>
 
 #include "intersect/scene.h"
 #include "study/study.h"
@@ -75,12 +76,15 @@ TEST(Sweep, PointEqualsSingleTrace) {
     spec.fixed = {{"crown", 33}};
     RunControl control;
     std::atomic<int> finished{0};
-    const SweepResult result = runSweep(spec, control, [&](const SweepPoint&) {
+    SweepPointHooks hooks;
+    hooks.onPoint = [&](size_t, const SweepPoint&) {
         ++finished;
         EXPECT_EQ(control.total(), 4 * spec.trace.photons);  // progress in photons over all points
-    });
+    };
+    const SweepResult result = runSweep(spec, control, hooks);
     ASSERT_EQ(result.points.size(), 4u);
     EXPECT_EQ(finished, 4);
+    EXPECT_EQ(control.itemsDone(), 4u);
     EXPECT_EQ(control.phase(), RunPhase::Done);
     const SweepPoint& p = result.points[3];
     ASSERT_TRUE(p.ok()) << p.error;
@@ -159,11 +163,40 @@ TEST(Sweep, CancelStopsIt) {
     // Asked while it runs: no point after the one that asked is finished.
     RunControl running;
     int finished = 0;
-    EXPECT_THROW(runSweep(pavilionSweep("36:46:1", 1000, 1), running,
-                          [&](const SweepPoint&) {
-                              ++finished;
-                              running.cancel();
-                          }),
-                 Canceled);
+    SweepPointHooks hooks;
+    hooks.onPoint = [&](size_t, const SweepPoint&) {
+        ++finished;
+        running.cancel();
+    };
+    EXPECT_THROW(runSweep(pavilionSweep("36:46:1", 1000, 1), running, hooks), Canceled);
     EXPECT_EQ(finished, 1);
+}
+
+// A sweep resumed from some of its points (as the service keeps them) traces only the others and ends with
+// the same sweep.json points as one that ran whole.
+TEST(Sweep, ResumedFromKeptPointsGivesTheSameBits) {
+    const SweepSpec spec = pavilionSweep("38:42:1", 5000, 2);
+    RunControl whole;
+    std::vector<nlohmann::json> kept(spec.pointCount());
+    SweepPointHooks keep;
+    keep.onPoint = [&](size_t k, const SweepPoint& p) { kept[k] = sweepPointJson(spec, p); };
+    const nlohmann::json expected = sweepToJson(runSweep(spec, whole, keep))["points"];
+
+    RunControl resumed;
+    std::vector<size_t> traced;
+    std::mutex mutex;
+    SweepPointHooks hooks;
+    hooks.restore = [&](size_t k) { return k % 2 == 0 ? std::optional(kept[k]) : std::nullopt; };
+    hooks.onPoint = [&](size_t k, const SweepPoint&) {
+        std::lock_guard lock(mutex);
+        traced.push_back(k);
+    };
+    const SweepResult result = runSweep(spec, resumed, hooks);
+    std::sort(traced.begin(), traced.end());
+    EXPECT_EQ(traced, (std::vector<size_t>{1, 3}));
+    EXPECT_EQ(resumed.itemsDone(), 5u);
+    EXPECT_EQ(sweepToJson(result)["points"].dump(), expected.dump());
+
+    SweepPoint other = sweepPoints(spec)[1];
+    EXPECT_THROW(restoreSweepPoint(kept[0], other), Error);  // a point of another place in the grid
 }

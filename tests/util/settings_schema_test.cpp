@@ -11,6 +11,7 @@
 #include "render/render_settings.h"
 #include "render/view_settings.h"
 #include "study/study_spec.h"
+#include "study/sweep_job.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -277,7 +278,7 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     const json api = json::parse(in);
     const json& job = api["components"]["schemas"]["JobRequest"];
     const json& properties = job["properties"];
-    std::set<std::string> keys = {"mesh", "name", "render"};
+    std::set<std::string> keys = {"mesh", "name", "render", "sweep", "cut"};
     for (const FieldInfo& f : traceSettingsSchema().fields()) {
         keys.insert(f.key);
         ASSERT_TRUE(properties.contains(f.key)) << f.key;
@@ -301,6 +302,21 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     keys.insert("fire_picture");
     expectOpenApiAgrees(properties["fire_picture"], fire, "fire_picture");
     EXPECT_EQ(documented, keys);
+}
+
+// A sweep's object (core/study/sweep_job.h) has the keys its table reads, no more.
+TEST(SettingsSchema, OpenApiSweepAgreesWithItsTable) {
+    std::ifstream in(FACETLIGHT_SOURCE_DIR "/server/openapi.json");
+    const json api = json::parse(in);
+    const json& sweep = api["components"]["schemas"]["SweepRequest"];
+    EXPECT_EQ(api["components"]["schemas"]["JobRequest"]["properties"]["sweep"]["$ref"],
+              "#/components/schemas/SweepRequest");
+    EXPECT_EQ(sweep.value("additionalProperties", true), false);
+    std::set<std::string> documented, read;
+    for (const auto& [key, value] : sweep["properties"].items()) documented.insert(key);
+    for (const FieldInfo& f : sweepRequestSchema().fields()) read.insert(f.key);
+    EXPECT_EQ(documented, read);
+    EXPECT_EQ(sweep["properties"]["figure"]["enum"], json(sweepFigureNames()));
 }
 
 }  // namespace

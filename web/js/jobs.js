@@ -29,11 +29,15 @@ export async function refreshJobs() {
 function jobItem(job) {
   const name = displayMeshName(job.mesh);
   const finished = job.state === 'succeeded';
-  const title = finished
-    ? h('a', { href: `#/jobs/${job.id}`, class: 'job-name' }, name)
-    : h('span', { class: 'job-name' }, name);
+  // A sweep's chart fills in while it runs.
+  const sweep = Boolean(job.settings && job.settings.sweep);
+  const href = sweep ? `#/sweeps/${job.id}` : `#/jobs/${job.id}`;
+  const openable = finished || (sweep && job.state === 'running');
+  const title = openable
+    ? h('a', { href, class: 'job-name' }, sweep ? `Sweep of ${name}` : name)
+    : h('span', { class: 'job-name' }, sweep ? `Sweep of ${name}` : name);
   const actions = h('div', { class: 'job-actions' });
-  if (finished) actions.append(h('a', { class: 'button secondary small', href: `#/jobs/${job.id}`, 'data-action': 'open' }, 'Open result'));
+  if (openable) actions.append(h('a', { class: 'button secondary small', href, 'data-action': 'open' }, sweep ? 'Open sweep' : 'Open result'));
   if (job.state === 'queued' || job.state === 'running') {
     actions.append(h('button', {
       type: 'button', class: 'button secondary small', 'data-action': 'cancel',

@@ -1,4 +1,5 @@
-// The shapes a job may use: shipped and uploaded meshes, their descriptions and uploads.
+// The shapes a job may use: shipped and uploaded meshes, their descriptions and uploads. loadMeshes returns the
+// shipped ones.
 import { api } from './api.js';
 import { $, h } from './dom.js';
 import { clearFieldError, showFieldError } from './form.js';
@@ -43,6 +44,7 @@ export async function loadMeshes(select) {
   const preferred = [previous, 'round_brilliant'].find((m) => m && meshes.has(m));
   if (preferred) el.value = preferred;
   describeMesh();
+  return list.shipped || [];
 }
 
 export function describeMesh() {

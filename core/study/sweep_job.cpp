@@ -1,0 +1,281 @@
+#include "study/sweep_job.h"
+
+#include "cuts/cut_library.h"
+#include "io/obj_writer.h"
+#include "pictures/image.h"
+#include "study/optimizer.h"
+#include "study/study.h"
+#include "study/sweep_pictures.h"
+#include "util/error.h"
+
+namespace facetlight {
+namespace {
+
+using nlohmann::json;
+using settings::FieldInfo;
+using settings::FieldType;
+
+std::string itemPath(const std::string& path, size_t i) {
+    return path + "[" + std::to_string(i) + "]";
+}
+
+const std::vector<FieldInfo>& axisFields() {
+    static const std::vector<FieldInfo> fields{
+        settings::describe("name", FieldType::Text),     settings::describe("from", FieldType::Number),
+        settings::describe("to", FieldType::Number),     settings::describe("step", FieldType::Number),
+        settings::describe("values", FieldType::Object), settings::describe("choices", FieldType::Object)};
+    return fields;
+}
+
+const json& requiredArray(const json& j, const std::string& path, size_t lo, size_t hi) {
+    if (!j.is_array() || j.size() < lo || j.size() > hi)
+        throw Error(
+            path, path + " must be a list of " + std::to_string(lo) + " to " + std::to_string(hi) + " items");
+    return j;
+}
+
+// {"name", "from", "to", "step"}, {"name", "values": [numbers]} or {"name", "choices": [names]}.
+SweepAxis readAxis(const json& j, const std::string& path) {
+    settings::checkObject(j, path, axisFields());
+    if (!j.contains("name")) throw Error(path + ".name", path + ".name is required");
+    const std::string name = settings::readText(j["name"], path + ".name");
+    const bool range = j.contains("from") || j.contains("to") || j.contains("step");
+    if (int(range) + int(j.contains("values")) + int(j.contains("choices")) != 1)
+        throw Error(path, path + " takes either from, to and step, or values, or choices");
+    SweepAxis axis{name, {}, {}};
+    if (range) {
+        double bound[3];
+        const char* keys[3] = {"from", "to", "step"};
+        for (int i = 0; i < 3; ++i) {
+            const std::string at = path + "." + keys[i];
+            if (!j.contains(keys[i])) throw Error(at, at + " is required with a range");
+            bound[i] = settings::readNumber(j[keys[i]], at, {});
+        }
+        if (!(bound[2] > 0)) throw Error(path + ".step", path + ".step must be above 0");
+        if (bound[1] < bound[0]) throw Error(path + ".to", path + ".to must not be below " + path + ".from");
+        try {
+            return sweepRange(name, bound[0], bound[1], bound[2]);
+        } catch (const Error& e) {
+            throw Error(path, e.what());
+        }
+    }
+    const bool names = j.contains("choices");
+    const std::string listPath = path + (names ? ".choices" : ".values");
+    const json& list = requiredArray(j[names ? "choices" : "values"], listPath, 1, kMaxSweepPoints);
+    for (size_t i = 0; i < list.size(); ++i) {
+        if (names) {
+            axis.choices.push_back(settings::readText(list[i], itemPath(listPath, i)));
+        } else {
+            axis.values.push_back(settings::readNumber(list[i], itemPath(listPath, i), {}));
+        }
+    }
+    return axis;
+}
+
+json axisJson(const SweepAxis& a) {
+    json j = {{"name", a.name}};
+    if (a.numeric()) {
+        j["values"] = a.values;
+    } else {
+        j["choices"] = a.choices;
+    }
+    return j;
+}
+
+settings::Field<SweepRequest> axesField() {
+    return {settings::describe("axes", FieldType::Object, {"", "the varied quantities, one or two"}),
+            [](SweepRequest& r, const json& j, const std::string& path) {
+                r.axes.clear();
+                for (size_t i = 0; i < requiredArray(j, path, 1, kMaxSweepAxes).size(); ++i)
+                    r.axes.push_back(readAxis(j[i], itemPath(path, i)));
+            },
+            [](const SweepRequest& r) {
+                json a = json::array();
+                for (const SweepAxis& axis : r.axes) a.push_back(axisJson(axis));
+                return a;
+            }};
+}
+
+settings::Field<SweepRequest> setField() {
+    return {
+        settings::describe("set", FieldType::Object, {"", "parameters held at other than their defaults"}),
+        [](SweepRequest& r, const json& j, const std::string& path) {
+            if (!j.is_object()) throw Error(path, path + " must be an object of parameter values");
+            r.set.clear();
+            for (const auto& [name, value] : j.items())
+                r.set[name] = settings::readNumber(value, settings::fieldPath(path, name), {});
+        },
+        [](const SweepRequest& r) { return json(r.set); }};
+}
+
+settings::Field<SweepRequest> figureField() {
+    FieldInfo info = settings::describe("figure", FieldType::Choice, {"", "the figure drawn"});
+    info.choices = sweepFigureNames();
+    return {info,
+            [](SweepRequest& r, const json& j, const std::string& path) {
+                r.figures = {settings::readChoice(j, path, sweepFigureNames())};
+            },
+            [](const SweepRequest& r) { return json(r.figures.front()); }};
+}
+
+settings::Field<SweepRequest> maximizeField() {
+    FieldInfo info =
+        settings::describe("maximize", FieldType::Choice, {"", "the figure whose best design is searched"});
+    info.choices = sweepFigureNames();
+    return {info,
+            [](SweepRequest& r, const json& j, const std::string& path) {
+                r.maximize = j.is_null() ? std::string() : settings::readChoice(j, path, sweepFigureNames());
+            },
+            [](const SweepRequest& r) { return r.maximize.empty() ? json(nullptr) : json(r.maximize); }};
+}
+
+settings::Field<SweepRequest> constraintsField() {
+    return {settings::describe("constraints", FieldType::Object, {"", "NAME<=VALUE or NAME>=VALUE"}),
+            [](SweepRequest& r, const json& j, const std::string& path) {
+                r.constraints.clear();
+                for (size_t i = 0; i < requiredArray(j, path, 0, 16).size(); ++i) {
+                    const std::string at = itemPath(path, i);
+                    const std::string text = settings::readText(j[i], at);
+                    try {
+                        parseSweepConstraint(text);
+                    } catch (const Error& e) {
+                        throw Error(at, e.what());
+                    }
+                    r.constraints.push_back(text);
+                }
+            },
+            [](const SweepRequest& r) { return json(r.constraints); }};
+}
+
+json designJson(const std::vector<SweepAxis>& axes, const RatedDesign& d, double z) {
+    json values = json::object();
+    for (size_t a = 0; a < axes.size(); ++a) values[axes[a].name] = d.values[a];
+    return {{"values", values},
+            {"value", d.estimate.value},
+            {"stderr", d.estimate.sigma},
+            {"interval", {d.estimate.value - z * d.estimate.sigma, d.estimate.value + z * d.estimate.sigma}}};
+}
+
+}  // namespace
+
+const settings::Schema<SweepRequest>& sweepRequestSchema() {
+    static const settings::Schema<SweepRequest> schema(
+        {axesField(), setField(), figureField(), maximizeField(), constraintsField(),
+         settings::count("refine_rounds", &SweepRequest::refineRounds, 0, 6,
+                         {"--refine-rounds", "with maximize: finer grids after the sweep"})},
+        [](const SweepRequest& r, const std::string& path) {
+            if (r.axes.empty()) {
+                const std::string at = settings::fieldPath(path, "axes");
+                throw Error(at, at + " is required: one or two varied quantities");
+            }
+            if (r.maximize.empty() && !r.constraints.empty()) {
+                const std::string at = settings::fieldPath(path, "constraints");
+                throw Error(at, at + " applies to a search: set maximize too");
+            }
+        });
+    return schema;
+}
+
+SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const TraceSettings& trace) {
+    SweepSpec spec{shape, request.set, request.axes, trace};
+    const CutShape* cut = nullptr;
+    try {
+        cut = &findCutShape(shape);
+    } catch (const Error& e) {
+        throw Error("mesh", e.what());
+    }
+    try {
+        completeCutValues(*cut, request.set);
+    } catch (const Error& e) {
+        throw Error("sweep.set", e.what());
+    }
+    for (size_t i = 0; i < request.axes.size(); ++i) {
+        SweepSpec one = spec;
+        one.axes = {request.axes[i]};
+        try {
+            one.validate();
+        } catch (const Error& e) {
+            throw Error(itemPath("sweep.axes", i), e.what());
+        }
+        if (!request.maximize.empty() && !request.axes[i].numeric())
+            throw Error("sweep.maximize",
+                        "the best design is searched over numbers; " + request.axes[i].name + " takes names");
+    }
+    try {
+        spec.validate();
+    } catch (const Error& e) {
+        throw Error("sweep.axes", e.what());
+    }
+    for (const std::string& f : request.figures) checkSweepFigure(f);
+    return spec;
+}
+
+SweepOutputs runSweepRequest(const SweepSpec& spec, const SweepRequest& request, RunControl& control,
+                             Communicator& comm, const SweepCheckpoint& checkpoint) {
+    const int rounds = request.rounds();
+    const bool keep = comm.isRoot() && checkpoint.store;
+    const SweepRoundHooks hooks = [&](size_t round, const SweepSpec& s) {
+        control.startStage(int(round) + 1, rounds, s.pointCount());
+        SweepPointHooks h;
+        if (checkpoint.restore)
+            h.restore = [&checkpoint, round](size_t k) { return checkpoint.restore(round, k); };
+        if (keep)
+            h.onPoint = [&checkpoint, round, s](size_t k, const SweepPoint& p) {
+                checkpoint.store(round, k, sweepPointJson(s, p));
+            };
+        return h;
+    };
+    SweepOutputs out;
+    std::optional<OptimizeResult> best;
+    OptimizeSettings settings;
+    settings.refineRounds = request.refineRounds;
+    std::vector<SweepResult> results;
+    if (request.maximize.empty()) {
+        out.sweep = runSweep(spec, control, hooks(0, spec), comm);
+    } else {
+        std::vector<SweepConstraint> constraints;
+        for (const std::string& text : request.constraints) constraints.push_back(parseSweepConstraint(text));
+        best = maximize(spec.axes, spec.trace.photons,
+                        sweepObjective(spec, request.maximize, constraints, control, results, comm, hooks),
+                        settings);
+        out.sweep = results.front();
+    }
+    if (!comm.isRoot()) return out;
+    size_t failed = 0;
+    for (const SweepPoint& p : out.sweep.points) failed += !p.ok();
+    if (failed == out.sweep.points.size())
+        throw Error("no point of the sweep could be traced: " + out.sweep.points[0].error);
+    for (const auto& [name, image] : sweepPictures(out.sweep, request.figures))
+        out.pictures.emplace_back(name, encodePng(image));
+    if (!best) return out;
+
+    SweepSpec bestSpec = spec;
+    for (size_t a = 0; a < spec.axes.size(); ++a) bestSpec.axes[a].values = {best->best.values[a]};
+    const CutShape& shape = findCutShape(spec.shape);
+    const CutValues cut = sweepPoints(bestSpec)[0].cut;
+    const std::string command = "facetlight cut " + cutCommandLine(shape, cut);
+    out.bestObj = objText(shape.build(cut), command);
+
+    json ties = json::array();
+    for (const RatedDesign& t : best->ties) ties.push_back(designJson(best->lastAxes, t, settings.z));
+    json roundsJson = json::array();
+    for (const SweepResult& r : results) {
+        json axes = json::object();
+        for (const SweepAxis& a : r.spec.axes) axes[a.name] = a.values;
+        roundsJson.push_back({{"photons", r.spec.trace.photons}, {"axes", axes}, {"seconds", r.seconds}});
+    }
+    json bestJson = designJson(best->lastAxes, best->best, settings.z);
+    bestJson["photons"] = best->photons;
+    bestJson["cut"] = cut;
+    bestJson["command"] = command;
+    out.best = {{"figure", request.maximize},
+                {"confidence", 0.95},
+                {"constraints", request.constraints},
+                {"best", bestJson},
+                {"ties", ties},
+                {"rounds", roundsJson},
+                {"evaluations", best->evaluations}};
+    return out;
+}
+
+}  // namespace facetlight

@@ -1,0 +1,299 @@
+// Sweeps (docs/sweeps.md): the form that submits one, and its chart, which fills in as the points finish. One
+// varied quantity: the figure against it with a ±1σ band; two: a filled map with the best point marked.
+import { api, jobUrl } from './api.js';
+import { FIGURES, POLL_ACTIVE_MS } from './constants.js';
+import { $, h, svg } from './dom.js';
+import { fmtNumber, fmtPctErr, humanize, shortId } from './format.js';
+import { clearFieldError, showFieldError } from './form.js';
+import { refreshJobs } from './jobs.js';
+
+// `compared`: the jobs of designs opened from sweeps, for the compare view.
+export const sweepView = { id: '', timer: 0, job: null, shape: '', compared: [] };
+
+const W = 640;
+const H = 400;
+const M = { left: 70, right: 170, top: 20, bottom: 56 };
+
+function figureInfo(key) { return FIGURES.find((f) => f.key === key) || { key, label: humanize(key) }; }
+
+// The defaults of each axis: a pavilion range, and a crown range for the map.
+const AXIS_DEFAULTS = [{ name: 'pavilion', from: 38, to: 43, step: 0.5 }, { name: 'crown', from: 30, to: 38, step: 2 }];
+
+// An axis's fieldset: its quantity and range, each input with its label and the id the server's field errors
+// (sweep.axes[i].step) are shown under.
+function axisFieldset(i) {
+  const path = `sweep.axes[${i}]`;
+  const defaults = AXIS_DEFAULTS[i];
+  const input = (key, attrs) => h('div', { class: 'field' },
+    h('label', { for: `s-${key}-${i}` }, key === 'name' ? 'Quantity' : key[0].toUpperCase() + key.slice(1)),
+    h('input', { id: `s-${key}-${i}`, name: `${key}-${i}`, value: defaults[key], 'aria-describedby': `err-${path}.${key}`, ...attrs }));
+  const legend = i === 0 ? 'First axis'
+    : h('label', {}, h('input', { type: 'checkbox', id: 's-second', name: 'second' }), ' Second axis');
+  return h('fieldset', { id: `s-axis-${i}` }, h('legend', {}, legend),
+    h('div', { class: 'field-row' }, input('name', { type: 'text', list: 'sweep-quantities' }),
+      ...['from', 'to', 'step'].map((key) => input(key, { type: 'number', step: 'any' }))),
+    ['', '.name', '.from', '.to', '.step'].map((key) => h('p', { class: 'field-error', id: `err-${path}${key}`, role: 'alert', hidden: true })));
+}
+
+export function initSweepForm() {
+  const form = $('#sweep-form');
+  $('#sweep-axes').replaceChildren(axisFieldset(0), axisFieldset(1));
+  $('#s-figure').replaceChildren(...FIGURES.map((f) => h('option', { value: f.key, selected: f.key === 'weighted_return' }, f.label)));
+  const second = $('#s-second');
+  const sync = () => { for (const el of $('#s-axis-1').querySelectorAll('.field input')) el.disabled = !second.checked; };
+  second.addEventListener('change', sync);
+  sync();
+  form.addEventListener('submit', submitSweep);
+}
+
+// The shapes of the cut library among the shipped meshes: a sweep builds its designs from their parameters.
+export function setSweepShapes(shipped) {
+  const names = shipped.filter((m) => !m.error).map((m) => m.mesh);
+  if (!names.length) return;
+  const el = $('#s-shape');
+  const previous = el.value;
+  el.replaceChildren(...names.map((n) => h('option', { value: n }, humanize(n))));
+  el.value = names.includes(previous) ? previous : names[0];
+}
+
+function axisFromForm(form, i) {
+  const num = (name) => (form.elements[`${name}-${i}`].value.trim() === '' ? undefined : Number(form.elements[`${name}-${i}`].value));
+  return { name: form.elements[`name-${i}`].value.trim(), from: num('from'), to: num('to'), step: num('step') };
+}
+
+function clearSweepErrors() {
+  for (const err of $('#sweep-form').querySelectorAll('.field-error')) clearFieldError(err.id.slice(4));
+  $('#sweep-error').hidden = true;
+}
+
+async function submitSweep(ev) {
+  ev.preventDefault();
+  const form = ev.currentTarget;
+  clearSweepErrors();
+  const axes = [axisFromForm(form, 0)];
+  if (form.elements.second.checked) axes.push(axisFromForm(form, 1));
+  const sweep = { axes, figure: form.elements.figure.value };
+  if (form.elements.maximize.checked) sweep.maximize = form.elements.figure.value;
+  const job = { mesh: form.elements.shape.value, photons: Number(form.elements.photons.value), sweep };
+  const threads = Number($('#f-threads').value);
+  if (threads > 0) job.threads = threads;
+  const status = $('#sweep-status');
+  status.textContent = 'Submitting…';
+  try {
+    const created = await api('/api/jobs', {
+      method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'application/json' }, body: JSON.stringify(job),
+    });
+    status.textContent = `Sweep ${shortId(created.id)} queued.`;
+    refreshJobs();
+    location.hash = `#/sweeps/${created.id}`;
+  } catch (e) {
+    status.textContent = '';
+    const field = e.field === 'mesh' ? 'sweep-mesh' : e.field === 'photons' ? 'sweep-photons' : e.field;
+    if (!field || !showFieldError(field, e.message)) {
+      const err = $('#sweep-error');
+      err.textContent = e.message;
+      err.hidden = false;
+    }
+  }
+}
+
+export async function showSweep(id) {
+  sweepView.id = id;
+  clearTimeout(sweepView.timer);
+  $('#sweep-chart').replaceChildren(h('p', { class: 'hint' }, 'Waiting for the first points…'));
+  $('#sweep-links').replaceChildren();
+  await pollSweep(id);
+}
+
+async function pollSweep(id) {
+  if (sweepView.id !== id) return;
+  let job;
+  let points;
+  try {
+    [job, points] = await Promise.all([api(jobUrl(id)), api(jobUrl(id, '/points'))]);
+  } catch (e) {
+    $('#sweep-progress').textContent = e.message;
+    return;
+  }
+  if (sweepView.id !== id) return;
+  sweepView.job = job;
+  sweepView.shape = points.shape;
+  const figure = job.settings.sweep.figure;
+  $('#sweep-view-title').textContent = `Sweep of the ${humanize(points.shape)}: ${figureInfo(figure).label.toLowerCase()}`;
+  const p = job.progress;
+  const round = p.steps > 1 ? ` · round ${p.step} of ${p.steps}` : '';
+  $('#sweep-progress').textContent = `${job.state} · ${points.points.length} of ${points.points_total} points${round} · ${Math.round(p.overall * 100)} %`
+    + (job.error ? ` · ${job.error}` : '');
+  drawSweep(points, figure);
+  if (job.state === 'succeeded') {
+    $('#sweep-links').replaceChildren(...Object.entries(job.links)
+      .filter(([k]) => ['sweep', 'sweep_csv', 'sweep_picture', 'best', 'best_obj'].includes(k))
+      .map(([k, href]) => h('a', { class: 'button secondary small', href }, k.replace('_', ' '))));
+  }
+  if (job.state === 'queued' || job.state === 'running') sweepView.timer = setTimeout(() => pollSweep(id), POLL_ACTIVE_MS);
+}
+
+function label(axis) { return axis.unit ? `${humanize(axis.name)} (${axis.unit})` : humanize(axis.name); }
+function axisValues(axis) { return axis.values || axis.choices.map((_, i) => i); }
+function axisText(axis, i) { return axis.values ? fmtNumber(axis.values[i], 4) : humanize(axis.choices[i]); }
+function scale(lo, hi, a, b) { return (v) => (hi === lo ? (a + b) / 2 : a + ((v - lo) / (hi - lo)) * (b - a)); }
+
+function ticks(lo, hi, n = 5) {
+  if (hi === lo) return [lo];
+  const raw = (hi - lo) / n;
+  const mag = 10 ** Math.floor(Math.log10(raw));
+  const step = [1, 2, 5, 10].map((m) => m * mag).find((s) => s >= raw);
+  const out = [];
+  for (let v = Math.ceil(lo / step) * step; v <= hi + step * 1e-9; v += step) out.push(Number(v.toPrecision(12)));
+  return out;
+}
+
+// Axes, ticks and their labels around the plot area.
+function frame(x, xs, xAxis, yTicks, y, yLabel) {
+  const g = svg('g', { class: 'chart-axes' });
+  const bottom = H - M.bottom;
+  g.append(svg('line', { x1: M.left, y1: bottom, x2: W - M.right, y2: bottom }), svg('line', { x1: M.left, y1: M.top, x2: M.left, y2: bottom }));
+  xs.forEach((v, i) => g.append(svg('text', { x: x(v), y: bottom + 16, 'text-anchor': 'middle' }, xAxis.values ? fmtNumber(v, 3) : axisText(xAxis, i))));
+  for (const t of yTicks) {
+    g.append(svg('line', { x1: M.left - 4, y1: y(t), x2: M.left, y2: y(t) }),
+      svg('text', { x: M.left - 6, y: y(t) + 4, 'text-anchor': 'end' }, yLabel.format(t)));
+  }
+  g.append(svg('text', { x: (M.left + W - M.right) / 2, y: H - 14, 'text-anchor': 'middle', class: 'axis-title' }, label(xAxis)),
+    svg('text', { x: 16, y: (M.top + bottom) / 2, 'text-anchor': 'middle', transform: `rotate(-90 16 ${(M.top + bottom) / 2})`, class: 'axis-title' }, yLabel.title));
+  return g;
+}
+
+// The point's values in the axes' order, then every figure with its standard error.
+function pointText(pt, axes) {
+  const values = axes.map((a) => {
+    const v = pt.values[a.name];
+    return `${humanize(a.name)} ${typeof v === 'number' ? fmtNumber(v, 4) : humanize(v)}`;
+  }).join(', ');
+  if (pt.error) return `${values}: cannot be made (${pt.error})`;
+  const figs = FIGURES.map((f) => `${f.label.toLowerCase()} ${fmtPctErr(pt.totals[f.key], pt.totals[`${f.key}_stderr`])}`);
+  const depth = pt.proportions && pt.proportions.total_depth_pct;
+  return `${values}: ${figs.join(' · ')}${Number.isFinite(depth) ? ` · total depth ${fmtNumber(depth, 1)} %` : ''}`;
+}
+
+// The design of a point as a job of its own: the sweep's settings, its shape with the point's parameters.
+function designJob(job, shape, point) {
+  const { sweep, ...settings } = job.settings;
+  const design = { ...settings, mesh: shape, render: false, light: { ...settings.light }, cut: { ...sweep.set } };
+  for (const [name, value] of Object.entries(point.values)) {
+    if (name === 'tilt') design.light.tilt_deg = value;
+    else if (name === 'head_shadow') design.light.head_shadow_deg = value;
+    else if (name === 'light') design.light.model = value;
+    else if (name === 'material') design.material = value;
+    else design.cut[name] = value;
+  }
+  return design;
+}
+
+// Traces the point's design as a normal job and, once it has finished, shows it in the compare view.
+async function openDesign(point) {
+  const tooltip = $('#sweep-tooltip');
+  try {
+    const created = await api('/api/jobs', {
+      method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'application/json' },
+      body: JSON.stringify(designJob(sweepView.job, sweepView.shape, point)),
+    });
+    tooltip.textContent = `Tracing that design as job ${shortId(created.id)}…`;
+    refreshJobs();
+    let state = created.state;
+    while (state === 'queued' || state === 'running') {
+      await new Promise((resolve) => { setTimeout(resolve, POLL_ACTIVE_MS); });
+      state = (await api(jobUrl(created.id))).state;
+    }
+    if (state !== 'succeeded') throw new Error(`the design's job ${shortId(created.id)} ${state}`);
+    sweepView.compared.push(created.id);
+    location.hash = `#/compare/${sweepView.compared.join(',')}`;
+  } catch (e) {
+    tooltip.textContent = e.message;
+  }
+}
+
+function hoverable(el, point, axes) {
+  const text = pointText(point, axes);
+  el.setAttribute('tabindex', '0');
+  el.setAttribute('aria-label', text);
+  const show = () => { $('#sweep-tooltip').textContent = text; };
+  el.addEventListener('mouseenter', show);
+  el.addEventListener('focus', show);
+  if (!point.error) {
+    el.addEventListener('click', () => openDesign(point));
+    el.addEventListener('keydown', (ev) => { if (ev.key === 'Enter') openDesign(point); });
+  }
+  el.append(svg('title', {}, text));
+  return el;
+}
+
+function drawSweep(data, figure) {
+  const ok = data.points.filter((p) => !p.error);
+  const chart = $('#sweep-chart');
+  if (!data.points.length) return;
+  const root = svg('svg', { viewBox: `0 0 ${W} ${H}`, class: 'sweep-svg', role: 'img',
+    'aria-label': `${figureInfo(figure).label} over ${data.axes.map((a) => humanize(a.name)).join(' and ')}` });
+  const values = ok.map((p) => p.totals[figure]);
+  const yTitle = `${figureInfo(figure).label} (%)`;
+  const pct = (v) => fmtNumber(v * 100, 2);
+  if (data.axes.length === 1) {
+    const axis = data.axes[0];
+    const xs = axisValues(axis);
+    const x = scale(Math.min(...xs), Math.max(...xs), M.left + 10, W - M.right - 10);
+    const lo = Math.min(...ok.map((p) => p.totals[figure] - p.totals[`${figure}_stderr`]), ...values);
+    const hi = Math.max(...ok.map((p) => p.totals[figure] + p.totals[`${figure}_stderr`]), ...values);
+    const y = scale(lo, hi, H - M.bottom - 10, M.top + 10);
+    const xOf = (p) => x(xs[p.at[0]]);
+    const sorted = [...ok].sort((a, b) => a.at[0] - b.at[0]);
+    const band = [...sorted.map((p) => `${xOf(p)},${y(p.totals[figure] + p.totals[`${figure}_stderr`])}`),
+      ...sorted.reverse().map((p) => `${xOf(p)},${y(p.totals[figure] - p.totals[`${figure}_stderr`])}`)].join(' ');
+    sorted.reverse();
+    root.append(frame(x, xs, axis, ticks(lo, hi), y, { title: yTitle, format: pct }),
+      svg('polygon', { points: band, class: 'sweep-band' }),
+      svg('polyline', { points: sorted.map((p) => `${xOf(p)},${y(p.totals[figure])}`).join(' '), class: 'sweep-line' }));
+    for (const p of sorted) {
+      root.append(hoverable(svg('circle', { cx: xOf(p), cy: y(p.totals[figure]), r: 5, class: 'sweep-point', 'data-at': p.at.join(',') }), p, data.axes));
+    }
+    const lx = W - M.right + 10;
+    root.append(svg('g', { class: 'chart-legend' },
+      svg('line', { x1: lx, y1: M.top + 10, x2: lx + 20, y2: M.top + 10, class: 'sweep-line' }),
+      svg('text', { x: lx + 24, y: M.top + 14 }, figureInfo(figure).label.toLowerCase()),
+      svg('rect', { x: lx, y: M.top + 24, width: 20, height: 10, class: 'sweep-band' }),
+      svg('text', { x: lx + 24, y: M.top + 33 }, '±1σ')));
+  } else {
+    const [ax, ay] = [data.axes[1], data.axes[0]];  // the first axis varies slowest: rows
+    const nx = axisValues(ax).length;
+    const ny = axisValues(ay).length;
+    const cw = (W - M.left - M.right) / nx;
+    const ch = (H - M.top - M.bottom) / ny;
+    const lo = Math.min(...values);
+    const hi = Math.max(...values);
+    const colour = (v) => `hsl(${240 - 240 * (hi === lo ? 0.5 : (v - lo) / (hi - lo))} 75% 50%)`;
+    const xc = (i) => M.left + (i + 0.5) * cw;
+    const yc = (j) => H - M.bottom - (j + 0.5) * ch;
+    root.append(frame((v) => xc(axisValues(ax).indexOf(v)), axisValues(ax), ax, [], () => 0, { title: label(ay), format: String }));
+    axisValues(ay).forEach((v, j) => root.append(svg('text', { x: M.left - 6, y: yc(j) + 4, 'text-anchor': 'end', class: 'chart-axes' }, axisText(ay, j))));
+    for (const p of data.points) {
+      const [j, i] = p.at;
+      const rect = svg('rect', { x: xc(i) - cw / 2, y: yc(j) - ch / 2, width: cw, height: ch, class: p.error ? 'sweep-cell failed' : 'sweep-cell',
+        fill: p.error ? '#ccc' : colour(p.totals[figure]), 'data-at': p.at.join(',') });
+      root.append(hoverable(rect, p, data.axes));
+    }
+    const best = ok.reduce((b, p) => (!b || p.totals[figure] > b.totals[figure] ? p : b), null);
+    if (best) {
+      root.append(svg('text', { x: xc(best.at[1]), y: yc(best.at[0]) + 6, 'text-anchor': 'middle', class: 'sweep-best' }, '★'));
+    }
+    const lx = W - M.right + 20;
+    const steps = 8;
+    for (let k = 0; k < steps; ++k) {
+      const v = lo + ((hi - lo) * (k + 0.5)) / steps;
+      root.append(svg('rect', { x: lx, y: H - M.bottom - (k + 1) * ((H - M.top - M.bottom) / steps), width: 16, height: (H - M.top - M.bottom) / steps, fill: colour(v) }));
+    }
+    root.append(svg('g', { class: 'chart-legend' },
+      svg('text', { x: lx + 20, y: H - M.bottom }, `${pct(lo)} %`),
+      svg('text', { x: lx + 20, y: M.top + 10 }, `${pct(hi)} %`),
+      svg('text', { x: lx, y: H - M.bottom + 30 }, `${figureInfo(figure).label}`),
+      svg('text', { x: lx, y: H - M.bottom + 44 }, '★ highest')));
+  }
+  chart.replaceChildren(root);
+}
