@@ -245,10 +245,7 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
 TEST_F(ServiceTest, FireIsMeasuredLinkedAndServed) {
     json job = smallJob();
     job["fire"] = {{"enabled", true}, {"pupil_mm", 2}};
-    auto r = submit(job);
-    ASSERT_TRUE(r);
-    ASSERT_EQ(r->status, 202) << r->body;
-    const std::string id = json::parse(r->body)["id"];
+    const std::string id = submitOk(job);
     const json done = waitFinished(id);
     ASSERT_EQ(done["state"], "succeeded") << done.dump();
     const std::string self = "/api/jobs/" + id;
@@ -263,9 +260,7 @@ TEST_F(ServiceTest, FireIsMeasuredLinkedAndServed) {
 
     json off = smallJob();
     off["fire"] = {{"enabled", false}};
-    auto offRun = submit(off);
-    ASSERT_TRUE(offRun && offRun->status == 202);
-    const json offDone = waitFinished(json::parse(offRun->body)["id"]);
+    const json offDone = waitFinished(submitOk(off));
     ASSERT_EQ(offDone["state"], "succeeded");
     EXPECT_FALSE(offDone["links"].contains("heatmap_fire"));
 
@@ -280,10 +275,7 @@ TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
     job["aset"] = {{"samples", 2}};
     job["tilt_series"] = {{"max_deg", 2}, {"axis_deg", 90}};
     job["fire_picture"] = {{"wavelengths", 2}};
-    auto r = submit(job);
-    ASSERT_TRUE(r);
-    ASSERT_EQ(r->status, 202) << r->body;
-    const std::string id = json::parse(r->body)["id"];
+    const std::string id = submitOk(job);
     const json done = waitFinished(id);
     ASSERT_EQ(done["state"], "succeeded") << done.dump();
     const std::string self = "/api/jobs/" + id;
