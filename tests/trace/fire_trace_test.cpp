@@ -1,5 +1,6 @@
 // The fire trace: a prism's red-blue separation against the deviation formulas, zero fire without
-// dispersion, and the same bits for any thread count or block split.
+// dispersion, the same bits for any thread count or block split, and the packet walk's bits those of the
+// one-photon walk on every SIMD target.
 #include "trace/fire_trace.h"
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "io/mesh_io.h"
 #include "optics/material.h"
 #include "support/fixtures.h"
+#include "support/simd_targets.h"
 #include "trace/photon_tracer.h"
 
 using namespace facetlight;
@@ -173,4 +175,47 @@ TEST(FireTrace, LeavesThePlainTallyAsItWas) {
     const TraceResult with = trace(Scene(stone, brilliantTrace()));
     EXPECT_FALSE(without.fire);
     EXPECT_EQ(without.stats, with.stats);
+}
+
+// The bands walked a packet at a time (one (photon, band) per SIMD lane) give every tally of the reference
+// walk, each photon's bands one at a time (PhotonWalker::walkBands), on every SIMD target: light that the
+// packet walk starts lane-wise (one collimated beam) and photon by photon (the others), a stone whose exit
+// search skips the girdle, one without, and one traced by Embree (which takes the reference walk).
+TEST(FireTrace, PacketWalkReproducesTheOneByOneWalk) {
+    struct Case {
+        const char* what;
+        const Stone& stone;
+        TraceSettings settings;
+    };
+    const Stone wedge = prism();
+    std::vector<Case> cases{{"prism", wedge, prismTrace()}};
+    auto brilliant = [&](const char* what, auto&& change) {
+        TraceSettings s = brilliantTrace();
+        s.photons = kPhotonBlock + 300;
+        change(s);
+        cases.push_back({what, roundBrilliant(), s});
+    };
+    brilliant("collimated", [](TraceSettings&) {});
+    brilliant("collimated, tilted", [](TraceSettings& s) { s.light.tiltDeg = 20; });
+    brilliant("hemisphere", [](TraceSettings& s) { s.light.model = LightModelKind::Hemisphere; });
+    brilliant("no dispersion, 3 bounces at most", [](TraceSettings& s) {
+        s.dispersion = false;
+        s.maxBounces = 3;
+    });
+    brilliant("embree", [](TraceSettings& s) { s.intersector = IntersectorKind::Embree; });
+    cases.front().settings.photons = kPhotonBlock + 300;
+    test::forEachSimdTarget([&] {
+        for (const Case& c : cases) {
+            SCOPED_TRACE(c.what);
+            const Scene scene(c.stone, c.settings);
+            const uint64_t photons = c.settings.photons;
+            FacetStats stats;
+            FireStats packets, reference(c.stone.facets.size());
+            traceBlocks(scene, 0, blockCount(photons), 1, stats, nullptr, &packets);
+            traceFirePhotonByPhoton(scene, 0, photons, reference);
+            EXPECT_TRUE(packets == reference);
+            EXPECT_EQ(packets.tallies(), reference.tallies());  // names the tallies that differ, if any
+            EXPECT_GT(reference.pairs, 100u);
+        }
+    });
 }
