@@ -149,25 +149,27 @@ using BandExit = PhotonWalker::BandExit;
 struct BeamStart {
     StepResult hit;    // the entry point, facet and cos(incidence) (cosT: not known before the index)
     LaneBits photons;  // the lanes that hold a photon
-    FloatMask hits;    // those that enter
-    Floats n;          // the index of refraction at each lane's wavelength
+    LaneBits hits;     // those that enter
 };
 // Photons [first, first + count) of the beam, their streams into state[], which advance by the draws of
-// the light ray and of the wavelength when dispersive.
-HWY_INLINE void startBeam(const Packets& s, uint64_t first, size_t count, uint64_t* state, BeamStart& b) {
+// the light ray and of the wavelength when dispersive; with `n`, the index of refraction at each lane's
+// wavelength into *n.
+HWY_INLINE void startBeam(const Packets& s, uint64_t first, size_t count, uint64_t* state, BeamStart& b,
+                          Floats* n) {
     const FloatMask lanes = hn::FirstN(FloatTag(), count);
     seedOf(s.seed, first, state);
     Floats ox, oy, oz;
     sampleBeam(s.light.disc(), state, ox, oy, oz);
-    b.n = Floats(s.fixedIndex);
+    if (n) *n = Floats(s.fixedIndex);
     if (s.dispersive) {
         const Floats wavelength = Floats(380.0f) + Floats(400.0f) * uniformOf(state, lanes);
-        b.n = viaDoubles(wavelength, [&](Doubles w) HWY_ATTR { return s.material.indexOf(w); });
+        if (n) *n = viaDoubles(wavelength, [&](Doubles w) HWY_ATTR { return s.material.indexOf(w); });
     }
     Floats t;
     Facets facet;
+    const FloatMask hits = hn::And(lanes, EnterBeamPacket(*s.beam, ox, oy, oz, t, facet));
     b.photons = bitsOf(lanes);
-    b.hits = hn::And(lanes, EnterBeamPacket(*s.beam, ox, oy, oz, t, facet));
+    b.hits = bitsOf(hits);
     const Vec3f d(s.light.direction());
     const Floats dx(d.x), dy(d.y), dz(d.z);
     const Normals normal = gatherNormals(s.normal, facet);
@@ -184,8 +186,9 @@ HWY_INLINE void enterBeam(const Packets& s, const BeamStart& b, Floats n, uint64
     const Vec3f d(s.light.direction());
     const Floats eta = Floats(1.0f) / n;
     const FresnelTerms<Floats> fr = fresnelTerms(Floats::load(b.hit.cosI), eta);
-    const LaneBits hitBits = bitsOf(b.hits);
-    const LaneBits reflects = bitsOf(hn::And(b.hits, uniformOf(state, b.hits) < fr.reflectance));
+    const LaneBits hitBits = b.hits;
+    const FloatMask hits = maskOf(hitBits);
+    const LaneBits reflects = bitsOf(hn::And(hits, uniformOf(state, hits) < fr.reflectance));
     alignas(64) float index[kMaxLanes], etas[kMaxLanes], cosT[kMaxLanes];
     n.store(index), eta.store(etas), fr.cosT.store(cosT);
     forEachLane(b.photons & ~hitBits, [&](int k) { visit.lane(firstId + k * idStep).missed(); });
@@ -218,8 +221,9 @@ void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end,
         return;
     }
     BeamStart b;
-    startBeam(s, first, count, started.rng, b);
-    enterBeam(s, b, b.n, started.rng, tally, uint32_t(first - begin), 1, started);
+    Floats n;
+    startBeam(s, first, count, started.rng, b, &n);
+    enterBeam(s, b, n, started.rng, tally, uint32_t(first - begin), 1, started);
 }
 
 // PhotonWalker::step() for every live lane of the packet; the lanes whose photon is done are no longer live.
@@ -328,7 +332,7 @@ void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_
             first = next;
             next = std::min<uint64_t>(first + laneCount(), end);
             band = 0;
-            if (s.beam) startBeam(s, first, next - first, drawn, beam);
+            if (s.beam) startBeam(s, first, next - first, drawn, beam, nullptr);
         }
         const uint32_t firstId = uint32_t((first - begin) * count + band);
         if (s.beam) {
