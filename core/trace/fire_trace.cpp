@@ -45,7 +45,7 @@ class FireTally {
         st_.separationSquareSum += (sep * sep) >> 20;
         // The exit angle of the pair: its bisector's angle to the vertical (below 90 degrees: both go up).
         const double cosUp = std::clamp(dot(normalize(r + b), up_), -1.0, 1.0);
-        const int exitBin = std::min(kFireExitBins - 1, int(degrees(std::acos(cosUp)) / kFireExitBinDeg));
+        const int exitBin = exitBins_(cosUp);
         const int sepBin = std::min(kFireSeparationBins - 1, int(separationDeg / kFireSeparationBinDeg));
         ++st_.histogram[exitBin][sepBin];
         if (sep <= pupil_) return;
@@ -70,6 +70,7 @@ class FireTally {
     const Vec3 up_;
     const double cosHeadCone_;  // 2: no cone
     const uint64_t pupil_;      // the pupil's angle, fixed point
+    const FireExitBins exitBins_;
 };
 
 // The index of refraction of each band.

@@ -14,6 +14,7 @@
 #include "support/fixtures.h"
 #include "support/simd_targets.h"
 #include "trace/photon_tracer.h"
+#include "util/random.h"
 
 using namespace facetlight;
 using nlohmann::json;
@@ -218,4 +219,26 @@ TEST(FireTrace, PacketWalkReproducesTheOneByOneWalk) {
             EXPECT_GT(reference.pairs, 100u);
         }
     });
+}
+
+// The histogram's exit bins found without acos are the formula's for every cosine: random ones, and those a
+// few ulps around each bin's edge, where rounding decides.
+TEST(FireTrace, ExitBinsAreTheFormulas) {
+    const FireExitBins bins;
+    Rng rng(3, 4);
+    for (int i = 0; i < 200000; ++i) {
+        const double c = 2 * rng.uniformDouble() - 1;
+        ASSERT_EQ(bins(c), FireExitBins::formula(c)) << c;
+    }
+    for (int k = 0; k <= kFireExitBins + 1; ++k) {
+        const double edge = std::cos(radians(k * kFireExitBinDeg));
+        double below = edge, above = edge;
+        for (int ulp = 0; ulp < 64; ++ulp) {
+            ASSERT_EQ(bins(below), FireExitBins::formula(below)) << k << " " << below;
+            below = std::nextafter(below, -1.0), above = std::nextafter(above, 1.0);  // cosines: [-1, 1]
+            ASSERT_EQ(bins(above), FireExitBins::formula(above)) << k << " " << above;
+        }
+    }
+    EXPECT_EQ(bins(1.0), 0);
+    EXPECT_EQ(bins(-1.0), kFireExitBins - 1);
 }
