@@ -27,7 +27,7 @@ class FireTally {
     // Tallies one photon, band k of which went as bands[k].
     void add(std::span<const BandExit, kFireBands> bands) {
         ++st_.photons;
-        if (bands[0].outcome == PhotonOutcome::Missed) return;  // whatever its wavelength
+        if (bands[0].outcome == PhotonOutcome::Missed) return;  // a miss does not depend on the index
         ++st_.hit;
         std::array<bool, kFireBands> up;
         for (int k = 0; k < kFireBands; ++k) st_.crownReturn[k] += up[k] = upward(bands[k]);

@@ -223,7 +223,7 @@ class PhotonWalker {
     // Photons [begin, end) of a convex stone a packet at a time, one per SIMD lane, on the CPU's best
     // target. Each photon takes exactly the steps walk() takes, so the tally has the same bits.
     static void packets(const Scene& s, uint64_t begin, uint64_t end, Tally& t);
-    // The packet walk of bands(), on a convex stone.
+    // The packet walk of blockBands(), on a convex stone.
     static void bandPackets(const Scene& s, uint64_t begin, uint64_t end, std::span<const float> bands,
                             std::span<BandExit> exits);
 
