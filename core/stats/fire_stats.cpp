@@ -29,6 +29,10 @@ double ratio(uint64_t count, uint64_t of) {
 
 }  // namespace
 
+FireExitBins::FireExitBins() {
+    for (size_t k = 0; k < edges_.size(); ++k) edges_[k] = std::cos(radians(double(k + 1) * kFireExitBinDeg));
+}
+
 void FireStats::merge(const FireStats& o) {
     if (o.colouredByFacet.size() != colouredByFacet.size())
         throw Error("cannot merge fire statistics of different stones");

@@ -2,13 +2,16 @@
 // What a fire trace counts (trace/fire_trace.h), kept in integers (separations and weights in fixed point) so
 // that adding per-thread or per-rank tallies in any order gives the same bits; and its report, the `fire`
 // member of stats.json (docs/stats-schema.md; the figures are defined in docs/physics.md).
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "geometry/geometry.h"
 #include "stone/stone.h"
 #include "trace/trace_settings.h"
 
@@ -27,6 +30,32 @@ constexpr int kFireSeparationBins = 60;
 constexpr double kFireSeparationBinDeg = 0.1;
 // Fixed point of the separations: 2^20 per degree (1e10 photons of 1 degree still fit in 64 bits).
 constexpr double kSeparationScale = 1048576.0;
+
+// The histogram's exit-angle bin of a pair whose bisector makes cos(angle to vertical) = cosUp with the
+// vertical: int(degrees(acos(cosUp)) / kFireExitBinDeg), the last bin also holding everything wider. Found
+// by comparing cosUp with the bins' edges, without acos, except within a hair of an edge, where the
+// formula's own rounding decides: the formula's bin for every cosUp.
+class FireExitBins {
+  public:
+    FireExitBins();
+    int operator()(double cosUp) const {
+        int bin = 0;
+        bool nearEdge = false;
+        for (const double edge : edges_) {
+            bin += cosUp < edge;
+            nearEdge |= std::abs(cosUp - edge) < kHair;
+        }
+        return nearEdge ? formula(cosUp) : bin;
+    }
+    static int formula(double cosUp) {
+        return std::min(kFireExitBins - 1, int(degrees(std::acos(cosUp)) / kFireExitBinDeg));
+    }
+
+  private:
+    // Far above the formula's rounding, a few ulps of the angle, times the steepest slope of cos at an edge.
+    static constexpr double kHair = 1e-9;
+    std::array<double, kFireExitBins - 1> edges_;  // cos(k kFireExitBinDeg), k = 1, 2, ...
+};
 
 struct alignas(64) FireStats {
     explicit FireStats(size_t facetCount = 0) : colouredByFacet(facetCount) {}

@@ -2,18 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <vector>
 
 #include "trace/detail/photon_walker.h"
 
 namespace facetlight {
 namespace {
 
-// The facets a band met, in order, hashed: two bands took the same path when their hashes agree.
-uint64_t pathStep(uint64_t path, uint32_t facet) {
-    return mix64(path ^ (uint64_t(facet) + 1));
-}
+using BandExit = PhotonWalker::BandExit;
 
-// A PhotonWalker visitor: where each band of one photon left the stone, then the photon's fire tallies.
+// The fire tallies of photons whose bands have been walked.
 class FireTally {
   public:
     FireTally(const Scene& s, FireStats& stats)
@@ -25,35 +24,16 @@ class FireTally {
                            : 2.0),
           pupil_(uint64_t(s.settings().fire.pupilAngleDeg() * kSeparationScale + 0.5)) {}
 
-    void band(size_t k) {
-        band_ = k;
-        out_[k] = {};
-        path_ = 0;
-    }
-    void missed() { missed_ = true; }
-    void reflectedAtEntry(uint32_t, const Vec3f&, const Vec3f&) {}
-    void entered(uint32_t facet) { path_ = pathStep(0, facet); }
-    void internalReflection(uint32_t facet) { path_ = pathStep(path_, facet); }
-    void exited(uint32_t facet, const Vec3f&, const Vec3f& dir, uint32_t) {
-        const Region r = s_.stone().facets[facet].region;
-        const bool up = (r == Region::Table || r == Region::Crown) && dot(dir, Vec3f(up_)) > 0;
-        out_[band_] = {up, pathStep(path_, facet), facet, dir};
-    }
-    void trapped(uint32_t) {}
-    void lost(uint32_t) {}
-
-    // Tallies the photon whose bands were just walked.
-    void finish() {
+    // Tallies one photon, band k of which went as bands[k].
+    void add(std::span<const BandExit, kFireBands> bands) {
         ++st_.photons;
-        if (missed_) {
-            missed_ = false;
-            return;
-        }
+        if (bands[0].outcome == PhotonOutcome::Missed) return;  // a miss does not depend on the index
         ++st_.hit;
-        for (int k = 0; k < kFireBands; ++k) st_.crownReturn[k] += out_[k].up;
-        const Exit &red = out_[kFireRed], &blue = out_[kFireBlue];
-        if (!red.up && !blue.up) return;
-        if (!(red.up && blue.up && red.path == blue.path)) {
+        std::array<bool, kFireBands> up;
+        for (int k = 0; k < kFireBands; ++k) st_.crownReturn[k] += up[k] = upward(bands[k]);
+        const BandExit &red = bands[kFireRed], &blue = bands[kFireBlue];
+        if (!up[kFireRed] && !up[kFireBlue]) return;
+        if (!(up[kFireRed] && up[kFireBlue] && red.path == blue.path)) {
             ++st_.split;
             return;
         }
@@ -65,7 +45,7 @@ class FireTally {
         st_.separationSquareSum += (sep * sep) >> 20;
         // The exit angle of the pair: its bisector's angle to the vertical (below 90 degrees: both go up).
         const double cosUp = std::clamp(dot(normalize(r + b), up_), -1.0, 1.0);
-        const int exitBin = std::min(kFireExitBins - 1, int(degrees(std::acos(cosUp)) / kFireExitBinDeg));
+        const int exitBin = exitBins_(cosUp);
         const int sepBin = std::min(kFireSeparationBins - 1, int(separationDeg / kFireSeparationBinDeg));
         ++st_.histogram[exitBin][sepBin];
         if (sep <= pupil_) return;
@@ -78,33 +58,47 @@ class FireTally {
     }
 
   private:
-    struct Exit {
-        bool up = false;  // through table or crown into the upper hemisphere
-        uint64_t path = 0;
-        uint32_t facet = 0;
-        Vec3f dir;
-    };
+    // Out through table or crown into the upper hemisphere.
+    bool upward(const BandExit& b) const {
+        if (b.outcome != PhotonOutcome::Exited) return false;
+        const Region r = s_.stone().facets[b.facet].region;
+        return (r == Region::Table || r == Region::Crown) && dot(b.dir, Vec3f(up_)) > 0;
+    }
+
     const Scene& s_;
     FireStats& st_;
     const Vec3 up_;
     const double cosHeadCone_;  // 2: no cone
     const uint64_t pupil_;      // the pupil's angle, fixed point
-    size_t band_ = 0;
-    uint64_t path_ = 0;
-    bool missed_ = false;
-    std::array<Exit, kFireBands> out_{};
+    const FireExitBins exitBins_;
 };
+
+// The index of refraction of each band.
+std::array<float, kFireBands> bandIndices(const Scene& scene) {
+    std::array<float, kFireBands> bands;
+    for (int k = 0; k < kFireBands; ++k)
+        bands[k] = float(scene.index(scene.dispersive() ? kFireWavelengthsNm[k] : Material::kSodiumD));
+    return bands;
+}
 
 }  // namespace
 
 void traceFire(const Scene& scene, uint64_t begin, uint64_t end, FireStats& stats) {
-    std::array<float, kFireBands> bands;
-    for (int k = 0; k < kFireBands; ++k)
-        bands[k] = float(scene.index(scene.dispersive() ? kFireWavelengthsNm[k] : Material::kSodiumD));
+    thread_local std::vector<BandExit> exits;  // the block's, sized once per thread
+    exits.resize((end - begin) * kFireBands);
+    PhotonWalker::blockBands(scene, begin, end, bandIndices(scene), exits);
     FireTally tally(scene, stats);
+    for (size_t i = 0; i < end - begin; ++i)
+        tally.add(std::span<const BandExit, kFireBands>(&exits[i * kFireBands], kFireBands));
+}
+
+void traceFirePhotonByPhoton(const Scene& scene, uint64_t begin, uint64_t end, FireStats& stats) {
+    const std::array<float, kFireBands> bands = bandIndices(scene);
+    FireTally tally(scene, stats);
+    std::array<BandExit, kFireBands> exits;
     for (uint64_t i = begin; i < end; ++i) {
-        PhotonWalker::walkBands(scene, i, bands, tally);
-        tally.finish();
+        PhotonWalker::walkBands(scene, i, bands, exits);
+        tally.add(exits);
     }
 }
 

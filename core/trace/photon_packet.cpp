@@ -53,20 +53,22 @@ struct alignas(64) Packet {
     float n[kMaxLanes]{};
     uint64_t rng[kMaxLanes]{};
     uint32_t bounces[kMaxLanes]{};
+    uint32_t id[kMaxLanes]{};  // what the visitor knows the lane's photon by (Visitor::lane)
     LaneBits live = 0;
 
-    void put(int k, const Vec3f& p, const Vec3f& d, float index, uint64_t rngState) {
+    void put(int k, const Vec3f& p, const Vec3f& d, float index, uint64_t rngState, uint32_t photonId) {
         px[k] = p.x, py[k] = p.y, pz[k] = p.z;
         dx[k] = d.x, dy[k] = d.y, dz[k] = d.z;
         n[k] = index;
         rng[k] = rngState;
         bounces[k] = 0;
+        id[k] = photonId;
         live |= LaneBits(1) << k;
     }
     // Lane k takes the photon in lane j of another packet.
     void take(int k, const Packet& from, int j) {
         put(k, {from.px[j], from.py[j], from.pz[j]}, {from.dx[j], from.dy[j], from.dz[j]}, from.n[j],
-            from.rng[j]);
+            from.rng[j], from.id[j]);
     }
 };
 
@@ -140,59 +142,93 @@ HWY_INLINE void sampleBeam(const LightModel::Disc& disc, uint64_t* state, Floats
 
 using Packets = PhotonWalker::PacketScene;
 using Tally = PhotonWalker::Tally;
+using BandExit = PhotonWalker::BandExit;
 
-// PhotonWalker::start() for photons [first, min(first + lanes, end)): tallies those that miss or reflect off
-// the stone and makes those that get in live lanes of `started`, which has none live before.
-void startPacket(const Packets& s, uint64_t first, uint64_t end, Tally& tally, Packet& started) {
+// The photons of a packet where they meet the stone: PhotonWalker::start() for one collimated beam,
+// lane-wise, up to the reflect-or-refract draw at entry.
+struct BeamStart {
+    StepResult hit;    // the entry point, facet and cos(incidence) (cosT: not known before the index)
+    LaneBits photons;  // the lanes that hold a photon
+    LaneBits hits;     // those that enter
+};
+// Photons [first, first + count) of the beam, their streams into state[], which advance by the draws of
+// the light ray and of the wavelength when dispersive; with `n`, the index of refraction at each lane's
+// wavelength into *n.
+HWY_INLINE void startBeam(const Packets& s, uint64_t first, size_t count, uint64_t* state, BeamStart& b,
+                          Floats* n) {
+    const FloatMask lanes = hn::FirstN(FloatTag(), count);
+    seedOf(s.seed, first, state);
+    Floats ox, oy, oz;
+    sampleBeam(s.light.disc(), state, ox, oy, oz);
+    if (n) *n = Floats(s.fixedIndex);
+    if (s.dispersive) {
+        const Floats wavelength = Floats(380.0f) + Floats(400.0f) * uniformOf(state, lanes);
+        if (n) *n = viaDoubles(wavelength, [&](Doubles w) HWY_ATTR { return s.material.indexOf(w); });
+    }
+    Floats t;
+    Facets facet;
+    const FloatMask hits = hn::And(lanes, EnterBeamPacket(*s.beam, ox, oy, oz, t, facet));
+    b.photons = bitsOf(lanes);
+    b.hits = bitsOf(hits);
+    const Vec3f d(s.light.direction());
+    const Floats dx(d.x), dy(d.y), dz(d.z);
+    const Normals normal = gatherNormals(s.normal, facet);
+    const Floats cosI = clampUnit(-dot3(dx, dy, dz, normal.x, normal.y, normal.z));
+    b.hit.store(ox + dx * t, oy + dy * t, oz + dz * t, cosI, cosI, facet);
+}
+
+// The rest of start() for the photons of `b` at index n, drawing from state[]: the photons that reflect off
+// the stone, and those that get in as live lanes of `started` (which has none live before), the photon in
+// lane k known to the visitor as firstId + k * idStep.
+template <class Visitor>
+HWY_INLINE void enterBeam(const Packets& s, const BeamStart& b, Floats n, uint64_t* state, Visitor& visit,
+                          uint32_t firstId, uint32_t idStep, Packet& started) {
+    const Vec3f d(s.light.direction());
+    const Floats eta = Floats(1.0f) / n;
+    const FresnelTerms<Floats> fr = fresnelTerms(Floats::load(b.hit.cosI), eta);
+    const LaneBits hitBits = b.hits;
+    const FloatMask hits = maskOf(hitBits);
+    const LaneBits reflects = bitsOf(hn::And(hits, uniformOf(state, hits) < fr.reflectance));
+    alignas(64) float index[kMaxLanes], etas[kMaxLanes], cosT[kMaxLanes];
+    n.store(index), eta.store(etas), fr.cosT.store(cosT);
+    forEachLane(b.photons & ~hitBits, [&](int k) { visit.lane(firstId + k * idStep).missed(); });
+    forEachLane(reflects, [&](int k) {
+        const uint32_t f = b.hit.facet[k];
+        visit.lane(firstId + k * idStep)
+            .reflectedAtEntry(f, b.hit.p(k), PhotonWalker::reflectOff(d, s.normal[f], b.hit.cosI[k]));
+    });
+    forEachLane(hitBits & ~reflects, [&](int k) {
+        const uint32_t f = b.hit.facet[k];
+        visit.lane(firstId + k * idStep).entered(f);
+        started.put(k, b.hit.p(k), PhotonWalker::refractIn(d, s.normal[f], etas[k], b.hit.cosI[k], cosT[k]),
+                    index[k], state[k], firstId + k * idStep);
+    });
+}
+
+// PhotonWalker::start() for photons [first, min(first + lanes, end)) of the block from `begin`: tallies
+// those that miss or reflect off the stone and makes those that get in live lanes of `started`, which has
+// none live before.
+void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end, Tally& tally,
+                 Packet& started) {
     const size_t count = std::min<uint64_t>(laneCount(), end - first);
     if (!s.beam) {
         int k = 0;
         for (uint64_t i = first; i < first + count; ++i) {
             PhotonWalker::Photon ph;
             if (PhotonWalker::start(s.scene, s.convex, i, tally, ph))
-                started.put(k++, ph.p, ph.d, ph.n, ph.rng.state());
+                started.put(k++, ph.p, ph.d, ph.n, ph.rng.state(), uint32_t(i - begin));
         }
         return;
     }
-    // One collimated beam: start() lane-wise.
-    const FloatMask lanes = hn::FirstN(FloatTag(), count);
-    seedOf(s.seed, first, started.rng);
-    Floats ox, oy, oz;
-    sampleBeam(s.light.disc(), started.rng, ox, oy, oz);
-    Floats n(s.fixedIndex);
-    if (s.dispersive) {
-        const Floats wavelength = Floats(380.0f) + Floats(400.0f) * uniformOf(started.rng, lanes);
-        n = viaDoubles(wavelength, [&](Doubles w) HWY_ATTR { return s.material.indexOf(w); });
-    }
-    Floats t;
-    Facets facet;
-    const FloatMask hits = hn::And(lanes, EnterBeamPacket(*s.beam, ox, oy, oz, t, facet));
-    const Vec3f d(s.light.direction());
-    const Floats dx(d.x), dy(d.y), dz(d.z);
-    const Normals normal = gatherNormals(s.normal, facet);
-    const Floats cosI = clampUnit(-dot3(dx, dy, dz, normal.x, normal.y, normal.z)), eta = Floats(1.0f) / n;
-    const FresnelTerms<Floats> fr = fresnelTerms(cosI, eta);
-    const LaneBits hitBits = bitsOf(hits);
-    const LaneBits reflects = bitsOf(hn::And(hits, uniformOf(started.rng, hits) < fr.reflectance));
-
-    StepResult hit;
-    hit.store(ox + dx * t, oy + dy * t, oz + dz * t, cosI, fr.cosT, facet);
-    alignas(64) float index[kMaxLanes], etas[kMaxLanes];
-    n.store(index), eta.store(etas);
-    forEachLane(reflects, [&](int k) {
-        const uint32_t f = hit.facet[k];
-        tally.reflectedAtEntry(f, hit.p(k), PhotonWalker::reflectOff(d, s.normal[f], hit.cosI[k]));
-    });
-    forEachLane(hitBits & ~reflects, [&](int k) {
-        const uint32_t f = hit.facet[k];
-        tally.entered(f);
-        started.put(k, hit.p(k), PhotonWalker::refractIn(d, s.normal[f], etas[k], hit.cosI[k], hit.cosT[k]),
-                    index[k], started.rng[k]);
-    });
+    BeamStart b;
+    Floats n;
+    startBeam(s, first, count, started.rng, b, &n);
+    enterBeam(s, b, n, started.rng, tally, uint32_t(first - begin), 1, started);
 }
 
 // PhotonWalker::step() for every live lane of the packet; the lanes whose photon is done are no longer live.
-void stepPacket(const Packets& s, Packet& lanes, Tally& tally) {
+template <class Visitor>
+void stepPacket(const Packets& s, Packet& lanes, Visitor& visit) {
     const Floats ox = Floats::load(lanes.px), oy = Floats::load(lanes.py), oz = Floats::load(lanes.pz);
     const Floats dx = Floats::load(lanes.dx), dy = Floats::load(lanes.dy), dz = Floats::load(lanes.dz);
     Floats t;
@@ -210,13 +246,14 @@ void stepPacket(const Packets& s, Packet& lanes, Tally& tally) {
 
     StepResult hit;
     hit.store(px, py, pz, cosI, fr.cosT, facet);
-    forEachLane(live & ~bitsOf(inside), [&](int k) { tally.lost(lanes.bounces[k]); });
+    forEachLane(live & ~bitsOf(inside), [&](int k) { visit.lane(lanes.id[k]).lost(lanes.bounces[k]); });
     forEachLane(exits, [&](int k) {
         const uint32_t f = hit.facet[k];
         const Vec3f d{lanes.dx[k], lanes.dy[k], lanes.dz[k]};
-        tally.exited(f, hit.p(k),
-                     PhotonWalker::refractOut(d, s.normal[f], lanes.n[k], hit.cosI[k], hit.cosT[k]),
-                     lanes.bounces[k]);
+        visit.lane(lanes.id[k])
+            .exited(f, hit.p(k),
+                    PhotonWalker::refractOut(d, s.normal[f], lanes.n[k], hit.cosI[k], hit.cosT[k]),
+                    lanes.bounces[k]);
     });
 
     // The reflected photons go on from the hit point; each counts a bounce.
@@ -226,29 +263,25 @@ void stepPacket(const Packets& s, Packet& lanes, Tally& tally) {
     px.store(lanes.px), py.store(lanes.py), pz.store(lanes.pz);
     LaneBits trapped = 0;
     forEachLane(reflects, [&](int k) {
-        tally.internalReflection(hit.facet[k]);
+        auto& v = visit.lane(lanes.id[k]);
+        v.internalReflection(hit.facet[k]);
         if (++lanes.bounces[k] < s.maxBounces) return;
-        tally.trapped(lanes.bounces[k]);
+        v.trapped(lanes.bounces[k]);
         trapped |= LaneBits(1) << k;
     });
     lanes.live = reflects & ~trapped;
 }
 
-}  // namespace
-
-// Photons [begin, end) of a convex stone, a packet at a time. Each photon takes exactly the steps walk()
-// takes, so the tally has the same bits.
-void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
-                 PhotonWalker::Tally& tally) {
+// Steps lanes until start(started) has no more photons to put into `started` (which has none live when it is
+// called) and every lane is done. A lane whose photon is done takes the next started photon.
+template <class Visitor, class Start>
+void walkLanes(const Packets& s, Visitor& visit, Start&& start) {
     const LaneBits all = laneCount() == 64 ? ~LaneBits(0) : (LaneBits(1) << laneCount()) - 1;
     Packet lanes, started;  // started: photons inside the stone, waiting for a lane
-    uint64_t next = begin;
-    for (;;) {
+    for (bool more = true;;) {
         for (LaneBits empty = all & ~lanes.live; empty;) {
             if (!started.live) {
-                if (next >= end) break;
-                startPacket(s, next, end, tally, started);
-                next += laneCount();
+                if (!more || !(more = start(started))) break;
                 continue;
             }
             lanes.take(std::countr_zero(empty), started, std::countr_zero(started.live));
@@ -256,14 +289,79 @@ void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t en
             empty &= empty - 1;
         }
         if (!lanes.live) return;
-        stepPacket(s, lanes, tally);
+        stepPacket(s, lanes, visit);
     }
+}
+
+// The visitor of a band walk's lanes: lane id is exits[id].
+struct BandExits {
+    std::span<BandExit> exits;
+    BandExit& lane(uint32_t id) { return exits[id]; }
+};
+
+}  // namespace
+
+// Photons [begin, end) of a convex stone, a packet at a time. Each photon takes exactly the steps walk()
+// takes, so the tally has the same bits.
+void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                 PhotonWalker::Tally& tally) {
+    uint64_t next = begin;
+    walkLanes(s, tally, [&](Packet& started) {
+        if (next >= end) return false;
+        startPacket(s, begin, next, end, tally, started);
+        next += laneCount();
+        return true;
+    });
+}
+
+// The bands of photons [begin, end), one (photon, band) per lane: a packet of photons is started once (the
+// light ray and the entry do not depend on the index of refraction) and enters at each band's index in turn,
+// each band from its own copy of the photon's stream. Each band takes exactly the steps walkBands() takes.
+void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                     std::span<const float> bands, std::span<PhotonWalker::BandExit> exits) {
+    BandExits visit{exits};
+    const uint32_t count = uint32_t(bands.size());
+    uint64_t first = begin;  // the packet of photons being started
+    size_t band = count;     // the band it enters at next
+    BeamStart beam;
+    alignas(64) uint64_t drawn[kMaxLanes];  // the photons' streams after the light ray and the wavelength
+    uint64_t next = begin;                  // the first photon not started
+    walkLanes(s, visit, [&](Packet& started) {
+        if (band == count) {  // every band of the packet has entered: the next packet of photons
+            if (next >= end) return false;
+            first = next;
+            next = std::min<uint64_t>(first + laneCount(), end);
+            band = 0;
+            if (s.beam) startBeam(s, first, next - first, drawn, beam, nullptr);
+        }
+        const uint32_t firstId = uint32_t((first - begin) * count + band);
+        if (s.beam) {
+            std::copy_n(drawn, laneCount(), started.rng);
+            enterBeam(s, beam, Floats(bands[band]), started.rng, visit, firstId, count, started);
+        } else {
+            int k = 0;
+            for (uint64_t i = first; i < next; ++i) {
+                const uint32_t id = firstId + uint32_t(i - first) * count;
+                PhotonWalker::Photon ph;
+                if (PhotonWalker::startBand(s.scene, s.convex, i, bands[band], visit.lane(id), ph))
+                    started.put(k++, ph.p, ph.d, ph.n, ph.rng.state(), id);
+            }
+        }
+        ++band;
+        return true;
+    });
 }
 #else
 // Highway's one-lane fallback (x86 CPUs without SSE4): one photon at a time.
 void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
                  PhotonWalker::Tally& tally) {
     for (uint64_t i = begin; i < end; ++i) PhotonWalker::walk(s.scene, s.convex, i, tally);
+}
+void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                     std::span<const float> bands, std::span<PhotonWalker::BandExit> exits) {
+    for (uint64_t i = begin; i < end; ++i)
+        PhotonWalker::walkBands(s.scene, s.convex, i, bands,
+                                exits.subspan((i - begin) * bands.size(), bands.size()));
 }
 #endif
 
@@ -275,12 +373,20 @@ HWY_AFTER_NAMESPACE();
 namespace facetlight {
 
 HWY_EXPORT(walkPackets);
+HWY_EXPORT(walkBandPackets);
+
+PhotonWalker::PacketScene PhotonWalker::packetScene(const Scene& s) {
+    return {s,         *s.convex_,    s.beam_.get(),  s.light_,         s.material_,
+            s.normal_, s.fixedIndex_, s.dispersive(), s.settings_.seed, uint32_t(s.settings_.maxBounces)};
+}
 
 void PhotonWalker::packets(const Scene& s, uint64_t begin, uint64_t end, Tally& tally) {
-    const PacketScene scene{
-        s,         *s.convex_,    s.beam_.get(),      s.light_,         s.material_,
-        s.normal_, s.fixedIndex_, s.dispersive(), s.settings_.seed, uint32_t(s.settings_.maxBounces)};
-    HWY_DYNAMIC_DISPATCH(walkPackets)(scene, begin, end, tally);
+    HWY_DYNAMIC_DISPATCH(walkPackets)(packetScene(s), begin, end, tally);
+}
+
+void PhotonWalker::bandPackets(const Scene& s, uint64_t begin, uint64_t end, std::span<const float> bands,
+                               std::span<BandExit> exits) {
+    HWY_DYNAMIC_DISPATCH(walkBandPackets)(packetScene(s), begin, end, bands, exits);
 }
 
 }  // namespace facetlight

@@ -1,5 +1,6 @@
 // The fire trace: a prism's red-blue separation against the deviation formulas, zero fire without
-// dispersion, and the same bits for any thread count or block split.
+// dispersion, the same bits for any thread count or block split, and the packet walk's bits those of the
+// one-photon walk on every SIMD target.
 #include "trace/fire_trace.h"
 
 #include <cmath>
@@ -11,7 +12,9 @@
 #include "io/mesh_io.h"
 #include "optics/material.h"
 #include "support/fixtures.h"
+#include "support/simd_targets.h"
 #include "trace/photon_tracer.h"
+#include "util/random.h"
 
 using namespace facetlight;
 using nlohmann::json;
@@ -173,4 +176,69 @@ TEST(FireTrace, LeavesThePlainTallyAsItWas) {
     const TraceResult with = trace(Scene(stone, brilliantTrace()));
     EXPECT_FALSE(without.fire);
     EXPECT_EQ(without.stats, with.stats);
+}
+
+// The bands walked a packet at a time (one (photon, band) per SIMD lane) give every tally of the reference
+// walk, each photon's bands one at a time (PhotonWalker::walkBands), on every SIMD target: light that the
+// packet walk starts lane-wise (one collimated beam) and photon by photon (the others), a stone whose exit
+// search skips the girdle, one without, and one traced by Embree (which takes the reference walk).
+TEST(FireTrace, PacketWalkReproducesTheOneByOneWalk) {
+    struct Case {
+        const char* what;
+        const Stone& stone;
+        TraceSettings settings;
+    };
+    const Stone wedge = prism();
+    std::vector<Case> cases{{"prism", wedge, prismTrace()}};
+    auto brilliant = [&](const char* what, auto&& change) {
+        TraceSettings s = brilliantTrace();
+        s.photons = kPhotonBlock + 300;
+        change(s);
+        cases.push_back({what, roundBrilliant(), s});
+    };
+    brilliant("collimated", [](TraceSettings&) {});
+    brilliant("collimated, tilted", [](TraceSettings& s) { s.light.tiltDeg = 20; });
+    brilliant("hemisphere", [](TraceSettings& s) { s.light.model = LightModelKind::Hemisphere; });
+    brilliant("no dispersion, 3 bounces at most", [](TraceSettings& s) {
+        s.dispersion = false;
+        s.maxBounces = 3;
+    });
+    brilliant("embree", [](TraceSettings& s) { s.intersector = IntersectorKind::Embree; });
+    cases.front().settings.photons = kPhotonBlock + 300;
+    test::forEachSimdTarget([&] {
+        for (const Case& c : cases) {
+            SCOPED_TRACE(c.what);
+            const Scene scene(c.stone, c.settings);
+            const uint64_t photons = c.settings.photons;
+            FacetStats stats;
+            FireStats packets, reference(c.stone.facets.size());
+            traceBlocks(scene, 0, blockCount(photons), 1, stats, nullptr, &packets);
+            traceFirePhotonByPhoton(scene, 0, photons, reference);
+            EXPECT_TRUE(packets == reference);
+            EXPECT_EQ(packets.tallies(), reference.tallies());  // names the tallies that differ, if any
+            EXPECT_GT(reference.pairs, 100u);
+        }
+    });
+}
+
+// The histogram's exit bins found without acos are the formula's for every cosine: random ones, and those a
+// few ulps around each bin's edge, where rounding decides.
+TEST(FireTrace, ExitBinsAreTheFormulas) {
+    const FireExitBins bins;
+    Rng rng(3, 4);
+    for (int i = 0; i < 200000; ++i) {
+        const double c = 2 * rng.uniformDouble() - 1;
+        ASSERT_EQ(bins(c), FireExitBins::formula(c)) << c;
+    }
+    for (int k = 0; k <= kFireExitBins + 1; ++k) {
+        const double edge = std::cos(radians(k * kFireExitBinDeg));
+        double below = edge, above = edge;
+        for (int ulp = 0; ulp < 64; ++ulp) {
+            ASSERT_EQ(bins(below), FireExitBins::formula(below)) << k << " " << below;
+            below = std::nextafter(below, -1.0), above = std::nextafter(above, 1.0);  // cosines: [-1, 1]
+            ASSERT_EQ(bins(above), FireExitBins::formula(above)) << k << " " << above;
+        }
+    }
+    EXPECT_EQ(bins(1.0), 0);
+    EXPECT_EQ(bins(-1.0), kFireExitBins - 1);
 }

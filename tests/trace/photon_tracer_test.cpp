@@ -11,21 +11,19 @@
 #include <utility>
 #include <vector>
 
-#include "hwy/highway.h"
-#include "hwy/targets.h"
-
 #include "geometry/halfspace.h"
 #include "intersect/convex_intersector.h"
 #include "io/mesh_io.h"
 #include "optics/fresnel.h"
 #include "optics/material.h"
 #include "stone/stone.h"
+#include "support/simd_targets.h"
 #include "util/error.h"
 #include "util/random.h"
-#include "util/simd_target.h"
 
 using namespace facetlight;
 using nlohmann::json;
+using test::forEachSimdTarget;
 
 namespace {
 
@@ -264,21 +262,6 @@ FacetStats tallyOfPaths(const Scene& scene) {
     // Each internal reflection is a bounce of the photon that made it.
     stats.facets[0].internalReflections = bounces;
     return stats;
-}
-
-// Runs f() once for each SIMD target compiled in that this machine supports (AVX-512, AVX2, SSE4 and the
-// one-lane fallback on an AVX-512 machine), with the dispatch forced to that target.
-template <class F>
-void forEachSimdTarget(F&& f) {
-    const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
-    ASSERT_FALSE(targets.empty());  // a FACETLIGHT_NATIVE build compiles only the building machine's target
-    for (const int64_t target : targets) {
-        SCOPED_TRACE(hwy::TargetName(target));
-        hwy::SetSupportedTargetsForTest(target);
-        ASSERT_EQ(simdTargets().size(), 1u);
-        f();
-    }
-    hwy::SetSupportedTargetsForTest(0);
 }
 
 void expectTracePhotonReproducesTheTally(const Stone& stone) {

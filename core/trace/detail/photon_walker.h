@@ -129,33 +129,82 @@ class PhotonWalker {
         }
     }
 
-    // Photon `index` at each index of refraction of `bands` in turn, with the same random choices: the light
-    // ray is drawn once and every band enters and steps from the same stream (the fire trace's walk; a band's
-    // draws part from another's only where their choices differ). visit.band(k) precedes band k.
-    template <class Visitor>
-    static void walkBands(const Scene& s, uint64_t index, std::span<const float> bands, Visitor& visit) {
+    // Where one band of a photon went (the fire trace, trace/fire_trace.cpp): a visitor of its walk.
+    struct BandExit {
+        Vec3f dir;                                      // out of the stone, when Exited
+        uint64_t path = 0;                              // the facets it met in order, hashed
+        uint32_t facet = 0;                             // the exit's, when Exited
+        PhotonOutcome outcome = PhotonOutcome::Missed;  // Trapped for lost photons too
+
+        // Adds the facet met next to a path: two bands took the same path when their hashes agree.
+        static uint64_t pathStep(uint64_t path, uint32_t facet) {
+            return mix64(path ^ (uint64_t(facet) + 1));
+        }
+        void missed() { outcome = PhotonOutcome::Missed; }
+        void reflectedAtEntry(uint32_t, const Vec3f&, const Vec3f&) {
+            outcome = PhotonOutcome::ReflectedAtEntry;
+        }
+        void entered(uint32_t f) {
+            outcome = PhotonOutcome::Trapped;
+            path = pathStep(0, f);
+        }
+        void internalReflection(uint32_t f) { path = pathStep(path, f); }
+        void exited(uint32_t f, const Vec3f&, const Vec3f& d, uint32_t) {
+            outcome = PhotonOutcome::Exited;
+            path = pathStep(path, f);
+            facet = f;
+            dir = d;
+        }
+        void trapped(uint32_t) {}
+        void lost(uint32_t) {}
+    };
+
+    // start() for one band of photon `index`, at index of refraction n: the light ray and every later draw
+    // are the plain photon's (the wavelength draw skipped), so a band's draws part from another's only where
+    // their choices differ.
+    template <class Intersector, class Visitor>
+    static bool startBand(const Scene& s, const Intersector& isect, uint64_t index, float n, Visitor& visit,
+                          Photon& ph) {
+        ph.rng = Rng(s.settings_.seed, index);
+        ph.bounces = 0;
+        const LightRay ray = s.light_.sample(ph.rng);
+        if (s.dispersive()) ph.rng.uniform();  // start()'s wavelength
+        ph.n = n;
+        return enter(s, isect, ray, visit, ph);
+    }
+
+    // Photon `index` at each index of refraction of `bands` in turn, one band at a time, into out[k] (the
+    // fire trace's reference walk; bandPackets() takes the same steps).
+    static void walkBands(const Scene& s, uint64_t index, std::span<const float> bands,
+                          std::span<BandExit> out) {
         if (s.convex_) {
-            walkBands(s, *s.convex_, index, bands, visit);
+            walkBands(s, *s.convex_, index, bands, out);
         } else {
-            walkBands(s, *s.embree_, index, bands, visit);
+            walkBands(s, *s.embree_, index, bands, out);
         }
     }
-    template <class Intersector, class Visitor>
+    template <class Intersector>
     static void walkBands(const Scene& s, const Intersector& isect, uint64_t index,
-                          std::span<const float> bands, Visitor& visit) {
-        Rng rng(s.settings_.seed, index);
-        const LightRay ray = s.light_.sample(rng);
-        if (s.dispersive()) rng.uniform();  // start()'s wavelength: the later draws are the plain trace's
+                          std::span<const float> bands, std::span<BandExit> out) {
         for (size_t k = 0; k < bands.size(); ++k) {
-            visit.band(k);
             Photon ph;
-            ph.rng = rng;
-            ph.n = bands[k];
-            if (enter(s, isect, ray, visit, ph)) {
-                while (step(s, isect, visit, ph)) {
+            if (startBand(s, isect, index, bands[k], out[k], ph)) {
+                while (step(s, isect, out[k], ph)) {
                 }
             }
         }
+    }
+    // The bands of photons [begin, end): band k of photon i into exits[(i - begin) * bands.size() + k], as
+    // walkBands() gives it. A convex stone's bands are walked a packet at a time, one (photon, band) per
+    // lane.
+    static void blockBands(const Scene& s, uint64_t begin, uint64_t end, std::span<const float> bands,
+                           std::span<BandExit> exits) {
+        if (s.convex_) {
+            bandPackets(s, begin, end, bands, exits);
+            return;
+        }
+        for (uint64_t i = begin; i < end; ++i)
+            walkBands(s, *s.embree_, i, bands, exits.subspan((i - begin) * bands.size(), bands.size()));
     }
 
     // What the packet walk (photon_packet.cpp, compiled once per SIMD target) reads of the scene.
@@ -174,6 +223,9 @@ class PhotonWalker {
     // Photons [begin, end) of a convex stone a packet at a time, one per SIMD lane, on the CPU's best
     // target. Each photon takes exactly the steps walk() takes, so the tally has the same bits.
     static void packets(const Scene& s, uint64_t begin, uint64_t end, Tally& t);
+    // The packet walk of blockBands(), on a convex stone.
+    static void bandPackets(const Scene& s, uint64_t begin, uint64_t end, std::span<const float> bands,
+                            std::span<BandExit> exits);
 
     // Photons [begin, end) into one thread's tally.
     static void tally(const Scene& s, uint64_t begin, uint64_t end, FacetStats& stats) {
@@ -204,6 +256,8 @@ class PhotonWalker {
             const Region r = s.facetRegion_[facet];
             return r == Region::Table || r == Region::Crown;
         }
+        // The packet walk's visitor of the photon in a lane: the one tally for all.
+        Tally& lane(uint32_t) { return *this; }
         void wavelength(float) {}
         void missed() {}
         void reflectedAtEntry(uint32_t facet, const Vec3f&, const Vec3f& dir) {
@@ -243,6 +297,7 @@ class PhotonWalker {
     static_assert(kWeightScale == double(1ULL << 30), "weightSquareSum's shift assumes a 2^30 scale");
 
   private:
+    static PacketScene packetScene(const Scene& s);
 
     struct Recorder {
         PhotonPath& out;
