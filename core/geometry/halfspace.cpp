@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <utility>
 
 #include "util/error.h"
@@ -45,59 +44,82 @@ void sortAroundNormal(std::vector<uint32_t>& loop, const std::vector<Vec3>& vert
     for (size_t i = 0; i < loop.size(); ++i) loop[i] = keyed[i].second;
 }
 
-void clip(Polyhedron& solid, const NamedPlane& cut, double eps) {
-    const size_t n = solid.vertices.size();
-    std::vector<double> d(n);
-    bool anyOut = false, anyIn = false;
-    for (size_t i = 0; i < n; ++i) {
-        d[i] = cut.plane.signedDistance(solid.vertices[i]);
-        anyOut |= d[i] > eps;
-        anyIn |= d[i] < -eps;
-    }
-    if (!anyIn) throw Error("the facets enclose no volume (facet '" + cut.name + "' cuts the whole stone away)");
-    if (!anyOut) return;  // the plane misses the solid or only touches it
+// Clips a solid by one plane after another. The scratch arrays live as long as the clipper, and a face the
+// plane does not cross is kept as it is: a design of many facets clips in time close to linear in its faces.
+class Clipper {
+  public:
+    explicit Clipper(double eps) : eps_(eps) {}
 
-    std::map<std::pair<uint32_t, uint32_t>, uint32_t> splitEdges;
-    auto splitVertex = [&](uint32_t a, uint32_t b) {
-        const auto key = std::minmax(a, b);
-        auto it = splitEdges.find(key);
-        if (it != splitEdges.end()) return it->second;
-        const double t = d[key.first] / (d[key.first] - d[key.second]);
+    void clip(Polyhedron& solid, const NamedPlane& cut) {
+        const size_t n = solid.vertices.size();
+        d_.resize(n);
+        bool anyOut = false, anyIn = false;
+        for (size_t i = 0; i < n; ++i) {
+            d_[i] = cut.plane.signedDistance(solid.vertices[i]);
+            anyOut |= d_[i] > eps_;
+            anyIn |= d_[i] < -eps_;
+        }
+        if (!anyIn) throw Error("the facets enclose no volume (facet '" + cut.name + "' cuts the whole stone away)");
+        if (!anyOut) return;  // the plane misses the solid or only touches it
+
+        splitEdges_.clear();
+        onCap_.assign(n, false);
+        auto isOut = [&](uint32_t v) { return v < n && d_[v] > eps_; };
+        auto isIn = [&](uint32_t v) { return v < n && d_[v] < -eps_; };
+        size_t kept = 0;
+        for (auto& face : solid.faces) {
+            const bool crossed = std::any_of(face.vertices.begin(), face.vertices.end(), isOut);
+            if (crossed) {
+                PolygonMesh::Polygon out{{}, face.name};
+                const size_t m = face.vertices.size();
+                for (size_t i = 0; i < m; ++i) {
+                    const uint32_t a = face.vertices[i], b = face.vertices[(i + 1) % m];
+                    if (!isOut(a)) out.vertices.push_back(a);
+                    if ((isIn(a) && isOut(b)) || (isOut(a) && isIn(b)))
+                        out.vertices.push_back(splitVertex(solid, a, b));
+                }
+                if (out.vertices.size() < 3) continue;
+                face = std::move(out);
+            }
+            for (uint32_t v : face.vertices)
+                if (v < n && !isIn(v)) onCap_[v] = true;
+            if (&solid.faces[kept] != &face) solid.faces[kept] = std::move(face);
+            ++kept;
+        }
+        solid.faces.resize(kept);
+
+        // The cap's corners: the old vertices on the plane, then the new ones in the order of the edges they
+        // split (sortAroundNormal breaks ties by this order).
+        std::vector<uint32_t> cap;
+        for (size_t v = 0; v < n; ++v)
+            if (onCap_[v]) cap.push_back(uint32_t(v));
+        std::sort(splitEdges_.begin(), splitEdges_.end());
+        for (const auto& [edge, v] : splitEdges_) cap.push_back(v);
+        if (cap.size() >= 3) {
+            sortAroundNormal(cap, solid.vertices, cut.plane.normal);
+            solid.faces.push_back({std::move(cap), cut.name});
+        }
+    }
+
+  private:
+    // The vertex where the plane splits edge ab, made once for both faces along the edge.
+    uint32_t splitVertex(Polyhedron& solid, uint32_t a, uint32_t b) {
+        const std::pair<uint32_t, uint32_t> key = std::minmax(a, b);
+        for (const auto& [edge, v] : splitEdges_)
+            if (edge == key) return v;
+        const double t = d_[key.first] / (d_[key.first] - d_[key.second]);
         const Vec3 p = solid.vertices[key.first] + (solid.vertices[key.second] - solid.vertices[key.first]) * t;
         solid.vertices.push_back(p);
         const uint32_t id = uint32_t(solid.vertices.size() - 1);
-        splitEdges.emplace(key, id);
+        splitEdges_.push_back({key, id});
         return id;
-    };
-    auto isOut = [&](uint32_t v) { return v < n && d[v] > eps; };
-    auto isIn = [&](uint32_t v) { return v < n && d[v] < -eps; };
-
-    std::vector<PolygonMesh::Polygon> kept;
-    std::vector<bool> onCap(n, false);
-    for (const auto& face : solid.faces) {
-        PolygonMesh::Polygon out{{}, face.name};
-        const size_t m = face.vertices.size();
-        for (size_t i = 0; i < m; ++i) {
-            const uint32_t a = face.vertices[i], b = face.vertices[(i + 1) % m];
-            if (!isOut(a)) out.vertices.push_back(a);
-            if ((isIn(a) && isOut(b)) || (isOut(a) && isIn(b))) out.vertices.push_back(splitVertex(a, b));
-        }
-        if (out.vertices.size() < 3) continue;
-        for (uint32_t v : out.vertices)
-            if (v < n && !isIn(v)) onCap[v] = true;
-        kept.push_back(std::move(out));
     }
 
-    std::vector<uint32_t> cap;
-    for (size_t v = 0; v < n; ++v)
-        if (onCap[v]) cap.push_back(uint32_t(v));
-    for (const auto& [edge, v] : splitEdges) cap.push_back(v);
-    if (cap.size() >= 3) {
-        sortAroundNormal(cap, solid.vertices, cut.plane.normal);
-        kept.push_back({std::move(cap), cut.name});
-    }
-    solid.faces = std::move(kept);
-}
+    double eps_;
+    std::vector<double> d_;
+    std::vector<bool> onCap_;
+    std::vector<std::pair<std::pair<uint32_t, uint32_t>, uint32_t>> splitEdges_;
+};
 
 }  // namespace
 
@@ -120,9 +142,10 @@ PolygonMesh intersectHalfSpaces(const std::vector<NamedPlane>& planes) {
     const double half = 1e4 * reach;
     const double eps = 1e-10 * half;
     Polyhedron solid = makeBox(half);
+    Clipper clipper(eps);
     for (const auto& p : planes) {
         NamedPlane unit{{normalize(p.plane.normal), p.plane.offset / length(p.plane.normal)}, p.name};
-        clip(solid, unit, eps);
+        clipper.clip(solid, unit);
     }
     for (const auto& face : solid.faces)
         if (face.name == kBoxFace)
