@@ -197,7 +197,8 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
 
   test('the page loads with its form, labels and the shapes the API lists', async () => {
     await page.waitForFunction(() => document.querySelector('#server-status').textContent.startsWith('Service ready'));
-    await page.waitForSelector('#f-mesh option', { state: 'attached' });
+    // The select holds a "Loading shapes…" placeholder (no value) until the list arrives.
+    await page.waitForSelector('#f-mesh option:not([value=""])', { state: 'attached' });
     const listed = await (await fetch(`${baseUrl}/api/meshes`)).json();
     const usable = [...listed.shipped, ...listed.uploaded].filter((m) => !m.error).length;
     const options = await page.$$eval('#f-mesh option:not([disabled])', (os) => os.filter((o) => o.value).length);
