@@ -40,6 +40,15 @@ std::vector<SweepAxis> coarseGrid() {
     return {parseSweepAxis("pavilion=37:45:0.5"), parseSweepAxis("crown=25:40:1")};
 }
 
+// The round brilliant's sweep with `photons` a point on 2 threads, its axes for the search to set.
+SweepSpec roundBrilliantSweep(uint64_t photons) {
+    SweepSpec spec;
+    spec.shape = "round_brilliant";
+    spec.trace.photons = photons;
+    spec.trace.threads = 2;
+    return spec;
+}
+
 }  // namespace
 
 TEST(Optimizer, FindsTheTopOfANoisySmoothFunction) {
@@ -85,10 +94,7 @@ TEST(Optimizer, RefusesNamesAndImpossibleConstraints) {
 // The real objective: a pavilion search under light straight down keeps to the depth limit, and its rounds
 // are ordinary sweeps with more photons each.
 TEST(Optimizer, SearchesASweepWithinADepthLimit) {
-    SweepSpec spec;
-    spec.shape = "round_brilliant";
-    spec.trace.photons = 4000;
-    spec.trace.threads = 2;
+    const SweepSpec spec = roundBrilliantSweep(4000);
     RunControl control;
     std::vector<SweepResult> rounds;
     SerialCommunicator serial;
@@ -110,10 +116,7 @@ TEST(Optimizer, SearchesASweepWithinADepthLimit) {
 
 // A fire figure is searched like any other, within a limit on another figure, once fire is traced.
 TEST(Optimizer, SearchesAFireFigure) {
-    SweepSpec spec;
-    spec.shape = "round_brilliant";
-    spec.trace.photons = 3000;
-    spec.trace.threads = 2;
+    SweepSpec spec = roundBrilliantSweep(3000);
     RunControl control;
     std::vector<SweepResult> rounds;
     SerialCommunicator serial;

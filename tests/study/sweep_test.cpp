@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <functional>
 #include <mutex>
 
 #include "intersect/scene.h"
@@ -23,6 +24,23 @@ SweepSpec pavilionSweep(const std::string& range, uint64_t photons, int threads)
     spec.trace.photons = photons;
     spec.trace.threads = threads;
     return spec;
+}
+
+// Runs the sweep resumed from the kept points `restored` picks; returns it and the points it traced, in order.
+std::pair<SweepResult, std::vector<size_t>> resumeSweep(const SweepSpec& spec, RunControl& control,
+                                                        const std::vector<nlohmann::json>& kept,
+                                                        const std::function<bool(size_t)>& restored) {
+    std::vector<size_t> traced;
+    std::mutex mutex;
+    SweepPointHooks hooks;
+    hooks.restore = [&](size_t k) { return restored(k) ? std::optional(kept[k]) : std::nullopt; };
+    hooks.onPoint = [&](size_t k, const SweepPoint&) {
+        std::lock_guard lock(mutex);
+        traced.push_back(k);
+    };
+    SweepResult result = runSweep(spec, control, hooks);
+    std::sort(traced.begin(), traced.end());
+    return {std::move(result), traced};
 }
 
 nlohmann::json withoutTiming(const SweepResult& result) {
@@ -184,16 +202,7 @@ TEST(Sweep, ResumedFromKeptPointsGivesTheSameBits) {
     const nlohmann::json expected = sweepToJson(runSweep(spec, whole, keep))["points"];
 
     RunControl resumed;
-    std::vector<size_t> traced;
-    std::mutex mutex;
-    SweepPointHooks hooks;
-    hooks.restore = [&](size_t k) { return k % 2 == 0 ? std::optional(kept[k]) : std::nullopt; };
-    hooks.onPoint = [&](size_t k, const SweepPoint&) {
-        std::lock_guard lock(mutex);
-        traced.push_back(k);
-    };
-    const SweepResult result = runSweep(spec, resumed, hooks);
-    std::sort(traced.begin(), traced.end());
+    const auto [result, traced] = resumeSweep(spec, resumed, kept, [](size_t k) { return k % 2 == 0; });
     EXPECT_EQ(traced, (std::vector<size_t>{1, 3}));
     EXPECT_EQ(resumed.itemsDone(), 5u);
     EXPECT_EQ(sweepToJson(result)["points"].dump(), expected.dump());
@@ -241,16 +250,7 @@ TEST(Sweep, FireFiguresAtEveryPointAndResumed) {
 
     kept[0].erase("fire");  // kept by a build without fire figures
     RunControl resumed;
-    std::vector<size_t> traced;
-    std::mutex mutex;
-    SweepPointHooks hooks;
-    hooks.restore = [&](size_t k) { return k != 1 ? std::optional(kept[k]) : std::nullopt; };
-    hooks.onPoint = [&](size_t k, const SweepPoint&) {
-        std::lock_guard lock(mutex);
-        traced.push_back(k);
-    };
-    const SweepResult again = runSweep(spec, resumed, hooks);
-    std::sort(traced.begin(), traced.end());
+    const auto [again, traced] = resumeSweep(spec, resumed, kept, [](size_t k) { return k != 1; });
     EXPECT_EQ(traced, (std::vector<size_t>{0, 1}));
     EXPECT_EQ(sweepToJson(again)["points"].dump(), j["points"].dump());
     EXPECT_EQ(sweepCsv(again), csv);
