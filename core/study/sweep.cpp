@@ -197,7 +197,8 @@ const std::vector<std::string>& sweepFireFigureNames() {
 
 std::vector<std::string> sweepFigureNames(const TraceSettings& trace) {
     std::vector<std::string> names = sweepPlainFigureNames();
-    if (trace.fire.enabled) names.insert(names.end(), sweepFireFigureNames().begin(), sweepFireFigureNames().end());
+    if (trace.fire.enabled)
+        names.insert(names.end(), sweepFireFigureNames().begin(), sweepFireFigureNames().end());
     return names;
 }
 
@@ -210,8 +211,9 @@ void checkSweepFigure(const std::string& name, const TraceSettings& trace) {
     }
     const auto& fire = sweepFireFigureNames();
     if (!trace.fire.enabled && std::find(fire.begin(), fire.end(), name) != fire.end())
-        throw Error("the figure " + name +
-                    " is measured by a fire trace, which is off: turn it on (--fire, or a job's fire.enabled)");
+        throw Error(
+            "the figure " + name +
+            " is measured by a fire trace, which is off: turn it on (--fire, or a job's fire.enabled)");
 }
 
 std::string sweepFigureUnit(const std::string& name) {
@@ -267,7 +269,8 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPoin
         for (const auto& [key, j] : restored.items()) {
             const size_t k = std::stoul(key);
             // A point kept by a build that reported no fire figures is traced again.
-            if (result.points.at(k).trace.fire.enabled && j.contains("totals") && !j.contains("fire")) continue;
+            if (result.points.at(k).trace.fire.enabled && j.contains("totals") && !j.contains("fire"))
+                continue;
             restoreSweepPoint(j, result.points.at(k));
             pending[k] = false;
         }

@@ -85,7 +85,9 @@ struct SweepPoint {
 
     bool ok() const { return error.empty(); }
     double figure(const std::string& name) const { return figures(name).at(name).get<double>(); }
-    double stderrOf(const std::string& name) const { return figures(name).at(name + "_stderr").get<double>(); }
+    double stderrOf(const std::string& name) const {
+        return figures(name).at(name + "_stderr").get<double>();
+    }
     // The member holding `name`: `totals`, or `fire` for a fire figure.
     const nlohmann::json& figures(const std::string& name) const {
         return totals.contains(name) ? totals : fire;
@@ -122,8 +124,8 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPoin
 SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPointHooks& hooks,
                      Communicator& comm);
 
-// A point as sweep.json lists it: `at`, `values`, then `proportions`, `totals` and, with fire enabled, `fire`;
-// or `error`.
+// A point as sweep.json lists it: `at`, `values`, then `proportions`, `totals` and, with fire enabled,
+// `fire`; or `error`.
 nlohmann::json sweepPointJson(const SweepSpec& spec, const SweepPoint& point);
 // The inverse, into a point of sweepPoints(spec) (its `stats`, which the JSON does not hold, stay empty).
 // Throws Error when the JSON is not a point of this grid.

@@ -210,7 +210,8 @@ SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const
     return spec;
 }
 
-void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace, const SweepFigureFields& fields) {
+void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace,
+                       const SweepFigureFields& fields) {
     const auto check = [&](const std::string& name, const std::string& field) {
         try {
             checkSweepFigure(name, trace);

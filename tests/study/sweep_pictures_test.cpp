@@ -92,9 +92,11 @@ TEST(SweepPictures, FireFiguresAreDrawnWhenFireIsTraced) {
         RunControl control;
         return runSweep(spec, control);
     };
-    const auto maps = sweepPictures(fireSweep({"pavilion=39,41", "crown=32,35"}), {"coloured_return_weighted"});
+    const auto maps =
+        sweepPictures(fireSweep({"pavilion=39,41", "crown=32,35"}), {"coloured_return_weighted"});
     ASSERT_EQ(maps.size(), 1u);
     EXPECT_EQ(maps[0].first, "map_coloured_return_weighted.png");
     expectPlotWithAxes(maps[0].second, 8);
-    expectPlotWithAxes(sweepCurves(fireSweep({"pavilion=39:42:1"}), {"weighted_return", "mean_separation_deg"}), 8);
+    expectPlotWithAxes(
+        sweepCurves(fireSweep({"pavilion=39:42:1"}), {"weighted_return", "mean_separation_deg"}), 8);
 }

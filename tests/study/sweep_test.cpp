@@ -26,7 +26,8 @@ SweepSpec pavilionSweep(const std::string& range, uint64_t photons, int threads)
     return spec;
 }
 
-// Runs the sweep resumed from the kept points `restored` picks; returns it and the points it traced, in order.
+// Runs the sweep resumed from the kept points `restored` picks; returns it and the points it traced, in
+// order.
 std::pair<SweepResult, std::vector<size_t>> resumeSweep(const SweepSpec& spec, RunControl& control,
                                                         const std::vector<nlohmann::json>& kept,
                                                         const std::function<bool(size_t)>& restored) {
