@@ -52,11 +52,11 @@ void runSweepCommand(const SweepOptions& o) {
     request.set = fixedValues(o.set);
     request.figures = o.figures;
     request.maximize = o.maximize;
-    if (!o.maximize.empty()) checkSweepFigure(o.maximize);
-    for (const std::string& text : o.constraints) parseSweepConstraint(text);
     request.constraints = o.constraints;
     request.refineRounds = o.refineRounds;
-    const SweepSpec spec = sweepSpec(o.shape, request, toTraceSettings(o.trace));
+    const TraceSettings trace = toTraceSettings(o.trace);
+    checkSweepFigures(request, trace, {"--figure", "--maximize", "--constraint", false});
+    const SweepSpec spec = sweepSpec(o.shape, request, trace);
     const fs::path out(o.out);
     std::error_code ec;
     fs::create_directories(out, ec);

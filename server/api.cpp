@@ -516,7 +516,7 @@ void Api::getSweepPoints(const Request& req, Response& res) {
               {"state", jobStateName(job->state)},
               {"shape", spec.shape},
               {"axes", sweepAxesJson(spec)},
-              {"figures", sweepFigureNames()},
+              {"figures", sweepFigureNames(spec.trace)},
               {"points_total", spec.pointCount()},
               {"points", points}});
 }

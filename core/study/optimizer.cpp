@@ -89,7 +89,8 @@ OptimizeResult maximize(const std::vector<SweepAxis>& coarse, uint64_t photons,
 
 bool SweepConstraint::holds(const SweepPoint& point) const {
     if (!point.ok()) return false;
-    const nlohmann::json& source = point.proportions.contains(quantity) ? point.proportions : point.totals;
+    const nlohmann::json& source =
+        point.proportions.contains(quantity) ? point.proportions : point.figures(quantity);
     if (!source.contains(quantity) || !source[quantity].is_number()) return false;
     const double v = source[quantity].get<double>();
     return atMost ? v <= limit : v >= limit;
@@ -124,7 +125,7 @@ GridObjective sweepObjective(const SweepSpec& base, const std::string& figure,
                              const std::vector<SweepConstraint>& constraints, RunControl& control,
                              std::vector<SweepResult>& rounds, Communicator& comm,
                              const SweepRoundHooks& hooks) {
-    checkSweepFigure(figure);
+    checkSweepFigure(figure, base.trace);
     return
         [base, figure, constraints, &control, &rounds, &comm, hooks](const std::vector<SweepAxis>& axes,
                                                                      uint64_t photons) {

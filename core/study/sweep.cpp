@@ -10,6 +10,7 @@
 
 #include "cuts/facet_design.h"
 #include "intersect/scene.h"
+#include "stats/fire_stats.h"
 #include "study/study.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
@@ -166,7 +167,10 @@ void SweepSpec::validate() const {
                     std::to_string(kMaxSweepPoints) + " are allowed");
 }
 
-const std::vector<std::string>& sweepFigureNames() {
+namespace {
+
+// The figures of the statistics' `totals`.
+const std::vector<std::string>& sweepPlainFigureNames() {
     static const std::vector<std::string> names{"crown_return",    "crown_return_with_reflection",
                                                 "weighted_return", "cone_return_30",
                                                 "cone_return_45",  "cone_return_60",
@@ -174,12 +178,46 @@ const std::vector<std::string>& sweepFigureNames() {
     return names;
 }
 
-void checkSweepFigure(const std::string& name) {
+}  // namespace
+
+const std::vector<std::string>& sweepFigureNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> all = sweepPlainFigureNames();
+        all.insert(all.end(), sweepFireFigureNames().begin(), sweepFireFigureNames().end());
+        return all;
+    }();
+    return names;
+}
+
+const std::vector<std::string>& sweepFireFigureNames() {
+    static const std::vector<std::string> names{"mean_separation_deg", "coloured_share",
+                                                "coloured_return_weighted", "pair_share", "split_share"};
+    return names;
+}
+
+std::vector<std::string> sweepFigureNames(const TraceSettings& trace) {
+    std::vector<std::string> names = sweepPlainFigureNames();
+    if (trace.fire.enabled)
+        names.insert(names.end(), sweepFireFigureNames().begin(), sweepFireFigureNames().end());
+    return names;
+}
+
+void checkSweepFigure(const std::string& name, const TraceSettings& trace) {
     const auto& names = sweepFigureNames();
-    if (std::find(names.begin(), names.end(), name) != names.end()) return;
-    std::string list;
-    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-    throw Error("unknown figure '" + name + "'; the figures are: " + list);
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+        std::string list;
+        for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+        throw Error("unknown figure '" + name + "'; the figures are: " + list);
+    }
+    const auto& fire = sweepFireFigureNames();
+    if (!trace.fire.enabled && std::find(fire.begin(), fire.end(), name) != fire.end())
+        throw Error(
+            "the figure " + name +
+            " is measured by a fire trace, which is off: turn it on (--fire, or a job's fire.enabled)");
+}
+
+std::string sweepFigureUnit(const std::string& name) {
+    return name == "mean_separation_deg" ? "deg" : "";
 }
 
 std::vector<SweepPoint> sweepPoints(const SweepSpec& spec) {
@@ -230,6 +268,9 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPoin
         const nlohmann::json restored = nlohmann::json::parse(restoredText);
         for (const auto& [key, j] : restored.items()) {
             const size_t k = std::stoul(key);
+            // A point kept by a build that reported no fire figures is traced again.
+            if (result.points.at(k).trace.fire.enabled && j.contains("totals") && !j.contains("fire"))
+                continue;
             restoreSweepPoint(j, result.points.at(k));
             pending[k] = false;
         }
@@ -286,6 +327,12 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPoin
                     nlohmann::json stats = statsToJson(traced.stats, *stone, p.trace, traced.timing);
                     p.totals = std::move(stats["totals"]);
                     p.proportions = std::move(stats["mesh"]["proportions"]);
+                    if (traced.fire) {
+                        const nlohmann::json fire = fireToJson(*traced.fire, *stone, p.trace);
+                        p.fire = nlohmann::json::object();
+                        for (const std::string& f : sweepFireFigureNames())
+                            for (const std::string& key : {f, f + "_stderr"}) p.fire[key] = fire.at(key);
+                    }
                     p.stats = std::move(traced.stats);
                 } catch (const Error& e) {
                     p.error = e.what();
@@ -328,6 +375,7 @@ nlohmann::json sweepPointJson(const SweepSpec& spec, const SweepPoint& p) {
     if (p.ok()) {
         point["proportions"] = p.proportions;
         point["totals"] = p.totals;
+        if (p.trace.fire.enabled) point["fire"] = p.fire;
     } else {
         point["error"] = p.error;
     }
@@ -342,9 +390,12 @@ void restoreSweepPoint(const nlohmann::json& j, SweepPoint& point) {
         if (point.error.empty()) throw Error("a stored sweep point has an empty error");
         return;
     }
+    if (point.trace.fire.enabled && !j.contains("fire"))
+        throw Error("a stored sweep point has no fire figures, and the sweep traces fire");
     point.error.clear();
     point.proportions = j.at("proportions");
     point.totals = j.at("totals");
+    if (point.trace.fire.enabled) point.fire = j.at("fire");
 }
 
 nlohmann::json sweepAxesJson(const SweepSpec& spec) {
@@ -376,7 +427,7 @@ nlohmann::json sweepToJson(const SweepResult& result) {
             {"fixed", fixed},
             {"settings", toJson(spec.trace)},
             {"axes", sweepAxesJson(spec)},
-            {"figures", sweepFigureNames()},
+            {"figures", sweepFigureNames(spec.trace)},
             {"points", points},
             {"timing",
              {{"seconds", result.seconds},
@@ -392,7 +443,8 @@ std::string sweepCsv(const SweepResult& result) {
     for (const SweepAxis& a : spec.axes) out << a.name << ',';
     for (const std::string& d : depths) out << d << ',';
     out << "hit";
-    for (const std::string& f : sweepFigureNames()) out << ',' << f << ',' << f << "_stderr";
+    const std::vector<std::string> figures = sweepFigureNames(spec.trace);
+    for (const std::string& f : figures) out << ',' << f << ',' << f << "_stderr";
     out << ",error\n";
     for (const SweepPoint& p : result.points) {
         for (size_t a = 0; a < spec.axes.size(); ++a) out << spec.axes[a].label(p.at[a]) << ',';
@@ -401,7 +453,7 @@ std::string sweepCsv(const SweepResult& result) {
             out << ',';
         }
         if (p.ok()) out << p.totals["hit"].get<uint64_t>();
-        for (const std::string& f : sweepFigureNames()) {
+        for (const std::string& f : figures) {
             if (p.ok()) {
                 out << ',' << p.figure(f) << ',' << p.stderrOf(f);
             } else {

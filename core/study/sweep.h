@@ -59,11 +59,18 @@ struct SweepSpec {
     std::string unit(const SweepAxis& axis) const;
 };
 
-// The figures of merit a sweep reports for every point (keys of the statistics' `totals`, each with a
-// `_stderr`).
+// The figures of merit a sweep can report for a point, each with a `_stderr`: keys of the statistics'
+// `totals`, then the fire figures (keys of the statistics' `fire`), which only a sweep that traces fire
+// reports.
 const std::vector<std::string>& sweepFigureNames();
-// Throws Error listing the figures when `name` is not one.
-void checkSweepFigure(const std::string& name);
+const std::vector<std::string>& sweepFireFigureNames();
+// The figures a sweep with these trace settings reports: the fire figures only when fire is enabled.
+std::vector<std::string> sweepFigureNames(const TraceSettings& trace);
+// Throws Error listing the figures when `name` is not one, or saying how to turn fire on when it is a fire
+// figure and `trace` does not enable fire.
+void checkSweepFigure(const std::string& name, const TraceSettings& trace);
+// A figure's unit: "deg" for an angle, "" for a share of the photons hitting the stone.
+std::string sweepFigureUnit(const std::string& name);
 
 // One point of the grid: its position on each axis, the design and settings traced there, and what came out.
 struct SweepPoint {
@@ -74,10 +81,17 @@ struct SweepPoint {
     FacetStats stats;
     nlohmann::json proportions;  // the stone's trade proportions, as the statistics' `mesh.proportions`
     nlohmann::json totals;       // the statistics' `totals`: counts, figures and their standard errors
+    nlohmann::json fire;  // with fire enabled, the fire figures of the statistics' `fire` and their errors
 
     bool ok() const { return error.empty(); }
-    double figure(const std::string& name) const { return totals.at(name).get<double>(); }
-    double stderrOf(const std::string& name) const { return totals.at(name + "_stderr").get<double>(); }
+    double figure(const std::string& name) const { return figures(name).at(name).get<double>(); }
+    double stderrOf(const std::string& name) const {
+        return figures(name).at(name + "_stderr").get<double>();
+    }
+    // The member holding `name`: `totals`, or `fire` for a fire figure.
+    const nlohmann::json& figures(const std::string& name) const {
+        return totals.contains(name) ? totals : fire;
+    }
 };
 
 // Every point of the grid with its design and settings, none traced: the first axis varies slowest.
@@ -110,7 +124,8 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPoin
 SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPointHooks& hooks,
                      Communicator& comm);
 
-// A point as sweep.json lists it: `at`, `values`, then `proportions` and `totals`, or `error`.
+// A point as sweep.json lists it: `at`, `values`, then `proportions`, `totals` and, with fire enabled,
+// `fire`; or `error`.
 nlohmann::json sweepPointJson(const SweepSpec& spec, const SweepPoint& point);
 // The inverse, into a point of sweepPoints(spec) (its `stats`, which the JSON does not hold, stay empty).
 // Throws Error when the JSON is not a point of this grid.

@@ -206,8 +206,26 @@ SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const
     } catch (const Error& e) {
         throw Error("sweep.axes", e.what());
     }
-    for (const std::string& f : request.figures) checkSweepFigure(f);
+    checkSweepFigures(request, trace);
     return spec;
+}
+
+void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace,
+                       const SweepFigureFields& fields) {
+    const auto check = [&](const std::string& name, const std::string& field) {
+        try {
+            checkSweepFigure(name, trace);
+        } catch (const Error& e) {
+            throw Error(field, field + ": " + e.what());
+        }
+    };
+    for (const std::string& f : request.figures) check(f, fields.figure);
+    if (!request.maximize.empty()) check(request.maximize, fields.maximize);
+    for (size_t i = 0; i < request.constraints.size(); ++i) {
+        const std::string quantity = parseSweepConstraint(request.constraints[i]).quantity;
+        if (!quantity.ends_with("_pct"))
+            check(quantity, fields.indexed ? itemPath(fields.constraints, i) : fields.constraints);
+    }
 }
 
 SweepOutputs runSweepRequest(const SweepSpec& spec, const SweepRequest& request, RunControl& control,

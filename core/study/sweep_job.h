@@ -40,6 +40,16 @@ inline nlohmann::json toJson(const SweepRequest& r) {
 // naming the field ("mesh" for a shape the cut library lacks, "sweep.axes[1]", "sweep.set", ...).
 SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const TraceSettings& trace);
 
+// What a request's figures are called in its errors: the job's fields, or the CLI's options.
+struct SweepFigureFields {
+    std::string figure = "sweep.figure", maximize = "sweep.maximize", constraints = "sweep.constraints";
+    bool indexed = true;  // constraints[i]
+};
+// Throws Error naming the field when a figure the request draws, maximizes or constrains is not one, or is a
+// fire figure and `trace` does not enable fire.
+void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace,
+                       const SweepFigureFields& fields = {});
+
 // Where an interrupted sweep's finished points are kept (the service: files in the job's folder): `restore`
 // gives a point of a round (sweepPointJson) if it was finished before, `store` keeps one as it finishes
 // (called from the worker threads, for distinct points at once).

@@ -28,7 +28,7 @@ std::vector<size_t> variedAxes(const SweepSpec& spec) {
 }
 
 PlotSeries figureSeries(const SweepResult& result, const std::string& figure) {
-    checkSweepFigure(figure);
+    checkSweepFigure(figure, result.spec.trace);
     PlotSeries s{spaced(figure), {}, {}, {}};
     for (const SweepPoint& p : result.points) {
         s.valid.push_back(p.ok());
@@ -47,7 +47,7 @@ std::string settingsLine(const SweepResult& result) {
 }  // namespace
 
 std::optional<size_t> highestPoint(const SweepResult& result, const std::string& figure) {
-    checkSweepFigure(figure);
+    checkSweepFigure(figure, result.spec.trace);
     std::optional<size_t> best;
     for (size_t k = 0; k < result.points.size(); ++k) {
         const SweepPoint& p = result.points[k];
@@ -62,8 +62,13 @@ Image sweepCurves(const SweepResult& result, const std::vector<std::string>& fig
     const SweepAxis& axis = result.spec.axes[varied.empty() ? 0 : varied[0]];
     std::vector<PlotSeries> series;
     for (const std::string& f : figures) series.push_back(figureSeries(result, f));
-    return seriesPlot(plotAxis(result.spec, axis), series, "share of the photons hitting the stone",
-                      settingsLine(result));
+    // One y axis: the mean separation's degrees share it with the shares (both below 1 or so), named apart.
+    size_t angles = 0;
+    for (const std::string& f : figures) angles += sweepFigureUnit(f) == "deg";
+    const std::string yLabel = angles == 0                ? "share of the photons hitting the stone"
+                               : angles == figures.size() ? "degrees"
+                                                          : "share of the hits; mean separation in degrees";
+    return seriesPlot(plotAxis(result.spec, axis), series, yLabel, settingsLine(result));
 }
 
 Image sweepMap(const SweepResult& result, const std::string& figure) {
@@ -94,7 +99,7 @@ Image sweepMap(const SweepResult& result, const std::string& figure) {
 
 std::vector<std::pair<std::string, Image>> sweepPictures(const SweepResult& result,
                                                          const std::vector<std::string>& figures) {
-    for (const std::string& f : figures) checkSweepFigure(f);
+    for (const std::string& f : figures) checkSweepFigure(f, result.spec.trace);
     std::vector<std::pair<std::string, Image>> out;
     if (variedAxes(result.spec).size() < 2) {
         out.emplace_back("curves.png", sweepCurves(result, figures));

@@ -566,23 +566,27 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(stats.totals.weighted_return, sweep.points[1].totals.weighted_return);
   });
 
-  test('a sweep over two axes draws a filled map with its best point starred and a colour legend', async () => {
+  test('a sweep over two axes draws a filled map of a fire figure with its best point starred and a colour legend', async () => {
     await page.goto(`${baseUrl}/#/`);
     await fillSweepAxis(0, ['pavilion', '39', '41', '1']);
     await page.setChecked('#s-second', true);
     await fillSweepAxis(1, ['crown', '30', '36', '3']);
     await page.fill('#s-photons', '2000');
+    await page.selectOption('#s-figure', 'coloured_share');
+    assert.ok(await page.isChecked('#s-fire'), 'a fire figure turns the fire trace on');
     await page.click('#sweep-submit');
     await page.waitForFunction(() => location.hash.startsWith('#/sweeps/'));
     await page.waitForFunction(() => /^succeeded/.test(document.querySelector('#sweep-progress').textContent), null,
       { timeout: JOB_TIMEOUT_MS });
     await page.waitForFunction(() => document.querySelectorAll('#sweep-chart rect.sweep-cell').length === 9);
     const chartText = await page.textContent('#sweep-chart svg');
-    for (const label of ['pavilion (deg)', 'crown (deg)', '★', '%']) assert.ok(chartText.includes(label), label);
+    for (const label of ['pavilion (deg)', 'crown (deg)', '★', '%', 'Seen as colour']) assert.ok(chartText.includes(label), label);
     const fills = await page.$$eval('#sweep-chart rect.sweep-cell', (cells) => new Set(cells.map((c) => c.getAttribute('fill'))).size);
     assert.ok(fills > 1, 'the map has more than one colour');
     await page.hover('#sweep-chart rect.sweep-cell >> nth=4');
-    assert.match(await page.textContent('#sweep-tooltip'), /^pavilion 40, crown 33: /);
+    const tip = await page.textContent('#sweep-tooltip');
+    assert.match(tip, /^pavilion 40, crown 33: /);
+    assert.match(tip, /mean red–blue separation \d+\.\d+° ± \d/);
     await shot('13-sweep-map');
   });
 

@@ -18,6 +18,14 @@ grep -q '"interval"' "$dir/best/best.json"
 grep -q '^# facetlight cut round_brilliant' "$dir/best/best.obj"
 test -s "$dir/best/curves.png"
 
+# With --fire every point carries its fire figures, and the search takes one.
+"$tool" sweep round_brilliant --vary pavilion=40,41 --fire --photons 2000 --threads 2 --figure coloured_share \
+  --maximize coloured_return_weighted --refine-rounds 0 --out "$dir/fire" >/dev/null
+head -1 "$dir/fire/sweep.csv" | grep -q ',coloured_return_weighted,coloured_return_weighted_stderr,'
+grep -q '"mean_separation_deg_stderr"' "$dir/fire/sweep.json"
+grep -q '"figure": "coloured_return_weighted"' "$dir/fire/best.json"
+test -s "$dir/fire/curves.png"
+
 fails() {  # fails EXPECTED-MESSAGE ARGS...: the tool must exit non-zero and say EXPECTED-MESSAGE
   local expected=$1
   shift
@@ -36,4 +44,7 @@ fails "say what to vary" round_brilliant
 fails "has no parameter" round_brilliant --vary pavilion=40,41 --set tabel=55
 fails "no quantity 'depth'" round_brilliant --vary pavilion=40,41 --maximize weighted_return --constraint depth\<=62
 fails "unknown figure" round_brilliant --vary pavilion=40,41 --maximize sparkle
+fails "maximize: the figure coloured_share is measured by a fire trace" round_brilliant --vary pavilion=40,41 \
+  --maximize coloured_share
+fails "figure: .*turn it on (--fire" round_brilliant --vary pavilion=40,41 --figure mean_separation_deg
 echo "cli sweep: ok"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# A sweep (with a search) run under mpirun with R ranks, its points spread over them, must equal the
-# single-process run bit for bit, apart from `timing` and the rounds' seconds:
+# A sweep with fire (and a search for the most) run under mpirun with R ranks, its points spread over them,
+# must equal the single-process run bit for bit, apart from `timing` and the rounds' seconds:
 # compare_sweep.sh FACETLIGHT MPIEXEC RANKS JOB_JSON
 set -euo pipefail
 exe="$1" mpiexec="$2" ranks="$3" job="$4"
@@ -21,6 +21,7 @@ def no_seconds(d):
     for r in d["rounds"]: r.pop("seconds")
 sweep = json.load(open(f"{one}/sweep.json"))
 assert len(sweep["points"]) == 8 and all("totals" in p for p in sweep["points"]), "every point traced"
+assert all(p["fire"]["coloured_return_weighted"] > 0 for p in sweep["points"]), "every point's fire figures"
 assert load(one, "sweep.json", no_timing) == load(many, "sweep.json", no_timing), "sweep.json differs"
 assert load(one, "best.json", no_seconds) == load(many, "best.json", no_seconds), "best.json differs"
 PY

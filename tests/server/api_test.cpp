@@ -18,6 +18,7 @@
 #include <httplib.h>
 
 #include "service.h"
+#include "study/sweep.h"
 #include "util/simd_target.h"
 
 namespace facetlight::server {
@@ -721,10 +722,37 @@ TEST_F(ServiceTest, SweepCancelsAndForgetsItsPoints) {
     EXPECT_FALSE(fs::exists(dir_ / "data" / "jobs" / id));
 }
 
+// With fire on, every point of sweep.json, of the points the chart polls and of sweep.csv carries the fire
+// figures, and the search takes one.
+TEST_F(ServiceTest, SweepWithFireReportsFireAtEveryPoint) {
+    json job = sweepJob(3, 3000);
+    job["fire"] = {{"enabled", true}};
+    job["sweep"]["figure"] = "coloured_return_weighted";
+    job["sweep"]["maximize"] = "coloured_share";
+    job["sweep"]["refine_rounds"] = 0;
+    const json done = waitFinished(submitOk(job));
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    const json sweep = getJson(done["links"]["sweep"]);
+    const json points = getJson(done["links"]["points"]);
+    EXPECT_EQ(points["figures"], sweep["figures"]);
+    EXPECT_EQ(points["points"], sweep["points"]);
+    EXPECT_EQ(sweep["figures"], json(sweepFigureNames()));
+    for (const json& p : sweep["points"]) {
+        EXPECT_GT(p["fire"]["coloured_share"].get<double>(), 0) << p.dump();
+        EXPECT_GT(p["fire"]["mean_separation_deg_stderr"].get<double>(), 0) << p.dump();
+    }
+    auto csv = client_->Get(done["links"]["sweep_csv"].get<std::string>());
+    ASSERT_TRUE(csv);
+    EXPECT_NE(csv->body.find(",mean_separation_deg,mean_separation_deg_stderr,"), std::string::npos);
+    EXPECT_EQ(getJson(done["links"]["best"])["figure"], "coloured_share");
+}
+
 // A sweep stopped with the service keeps the points it finished, resumes from them after the restart (they
-// are not traced again) and ends with the bits of a sweep that ran without a break.
+// are not traced again) and ends with the bits of a sweep that ran without a break; with fire on, its fire
+// figures too.
 TEST_F(ServiceTest, SweepResumesAfterARestartWithTheSameBits) {
-    const json job = sweepJob(8, 300'000);
+    json job = sweepJob(8, 100'000);
+    job["fire"] = {{"enabled", true}};
     const std::string id = submitOk(job);
     json s;
     do {
@@ -747,6 +775,7 @@ TEST_F(ServiceTest, SweepResumesAfterARestartWithTheSameBits) {
     for (const auto& [path, time] : kept)
         EXPECT_EQ(fs::last_write_time(path), time) << path;  // not traced again
     const json resumed = sweepWithoutTiming(id);
+    EXPECT_TRUE(resumed["points"][7]["fire"].contains("coloured_share"));
     const json whole = waitFinished(submitOk(job));
     EXPECT_EQ(resumed.dump(), sweepWithoutTiming(whole["id"]).dump());
 }
@@ -773,6 +802,14 @@ TEST_F(ServiceTest, BadSweepsAreRefusedNamingTheField) {
         },
         "sweep.axes[0]");
     refused([](json& j) { j["sweep"]["figure"] = "sparkle"; }, "sweep.figure");
+    refused([](json& j) { j["sweep"]["figure"] = "coloured_share"; }, "sweep.figure");  // fire is off
+    refused([](json& j) { j["sweep"]["maximize"] = "mean_separation_deg"; }, "sweep.maximize");
+    refused(
+        [](json& j) {
+            j["sweep"]["maximize"] = "leakage";
+            j["sweep"]["constraints"] = {"total_depth<=62", "coloured_share>=0.1"};
+        },
+        "sweep.constraints[1]");
     refused([](json& j) { j["sweep"]["constraints"] = {"total_depth<=62"}; }, "sweep.constraints");
     refused(
         [](json& j) {

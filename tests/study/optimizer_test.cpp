@@ -40,6 +40,15 @@ std::vector<SweepAxis> coarseGrid() {
     return {parseSweepAxis("pavilion=37:45:0.5"), parseSweepAxis("crown=25:40:1")};
 }
 
+// The round brilliant's sweep with `photons` a point on 2 threads, its axes for the search to set.
+SweepSpec roundBrilliantSweep(uint64_t photons) {
+    SweepSpec spec;
+    spec.shape = "round_brilliant";
+    spec.trace.photons = photons;
+    spec.trace.threads = 2;
+    return spec;
+}
+
 }  // namespace
 
 TEST(Optimizer, FindsTheTopOfANoisySmoothFunction) {
@@ -85,10 +94,7 @@ TEST(Optimizer, RefusesNamesAndImpossibleConstraints) {
 // The real objective: a pavilion search under light straight down keeps to the depth limit, and its rounds
 // are ordinary sweeps with more photons each.
 TEST(Optimizer, SearchesASweepWithinADepthLimit) {
-    SweepSpec spec;
-    spec.shape = "round_brilliant";
-    spec.trace.photons = 4000;
-    spec.trace.threads = 2;
+    const SweepSpec spec = roundBrilliantSweep(4000);
     RunControl control;
     std::vector<SweepResult> rounds;
     SerialCommunicator serial;
@@ -106,4 +112,28 @@ TEST(Optimizer, SearchesASweepWithinADepthLimit) {
         }
     EXPECT_GE(r.best.values[0], 38);
     EXPECT_LE(r.best.values[0], 41);  // deeper pavilions break the limit at this crown and girdle
+}
+
+// A fire figure is searched like any other, within a limit on another figure, once fire is traced.
+TEST(Optimizer, SearchesAFireFigure) {
+    SweepSpec spec = roundBrilliantSweep(3000);
+    RunControl control;
+    std::vector<SweepResult> rounds;
+    SerialCommunicator serial;
+    const std::vector<SweepConstraint> limits{parseSweepConstraint("weighted_return>=0.55")};
+    EXPECT_THROW(sweepObjective(spec, "coloured_share", limits, control, rounds, serial), Error);  // fire off
+    spec.trace.fire.enabled = true;
+    OptimizeSettings settings;
+    settings.refineRounds = 0;
+    const OptimizeResult r =
+        maximize({parseSweepAxis("pavilion=38:43:1")}, spec.trace.photons,
+                 sweepObjective(spec, "coloured_share", limits, control, rounds, serial), settings);
+    ASSERT_EQ(rounds.size(), 1u);
+    const std::vector<SweepPoint>& points = rounds[0].points;
+    double highest = 0;
+    for (const SweepPoint& p : points)
+        if (p.figure("weighted_return") >= 0.55) highest = std::max(highest, p.figure("coloured_share"));
+    EXPECT_EQ(r.best.estimate.value, highest);
+    EXPECT_GT(highest, 0);
+    EXPECT_LT(points.back().figure("weighted_return"), 0.55);  // the deepest breaks the limit
 }

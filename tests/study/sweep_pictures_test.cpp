@@ -77,4 +77,26 @@ TEST(SweepPictures, CurvesCarryEachFigureAndAxes) {
     EXPECT_EQ(pictures[0].first, "curves.png");
     expectPlotWithAxes(pictures[0].second, 8);
     EXPECT_THROW(sweepPictures(result, {"sparkle"}), Error);
+    EXPECT_THROW(sweepPictures(result, {"coloured_share"}), Error);  // no fire traced
+}
+
+// A fire figure is drawn like any other: a map, and curves with their bands beside a share.
+TEST(SweepPictures, FireFiguresAreDrawnWhenFireIsTraced) {
+    const auto fireSweep = [](std::vector<std::string> axes) {
+        SweepSpec spec;
+        spec.shape = "round_brilliant";
+        for (const std::string& a : axes) spec.axes.push_back(parseSweepAxis(a));
+        spec.trace.photons = 2000;
+        spec.trace.threads = 2;
+        spec.trace.fire.enabled = true;
+        RunControl control;
+        return runSweep(spec, control);
+    };
+    const auto maps =
+        sweepPictures(fireSweep({"pavilion=39,41", "crown=32,35"}), {"coloured_return_weighted"});
+    ASSERT_EQ(maps.size(), 1u);
+    EXPECT_EQ(maps[0].first, "map_coloured_return_weighted.png");
+    expectPlotWithAxes(maps[0].second, 8);
+    expectPlotWithAxes(
+        sweepCurves(fireSweep({"pavilion=39:42:1"}), {"weighted_return", "mean_separation_deg"}), 8);
 }

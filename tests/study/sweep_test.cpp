@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <functional>
 #include <mutex>
 
 #include "intersect/scene.h"
+#include "stats/fire_stats.h"
 #include "study/study.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
@@ -22,6 +24,24 @@ SweepSpec pavilionSweep(const std::string& range, uint64_t photons, int threads)
     spec.trace.photons = photons;
     spec.trace.threads = threads;
     return spec;
+}
+
+// Runs the sweep resumed from the kept points `restored` picks; returns it and the points it traced, in
+// order.
+std::pair<SweepResult, std::vector<size_t>> resumeSweep(const SweepSpec& spec, RunControl& control,
+                                                        const std::vector<nlohmann::json>& kept,
+                                                        const std::function<bool(size_t)>& restored) {
+    std::vector<size_t> traced;
+    std::mutex mutex;
+    SweepPointHooks hooks;
+    hooks.restore = [&](size_t k) { return restored(k) ? std::optional(kept[k]) : std::nullopt; };
+    hooks.onPoint = [&](size_t k, const SweepPoint&) {
+        std::lock_guard lock(mutex);
+        traced.push_back(k);
+    };
+    SweepResult result = runSweep(spec, control, hooks);
+    std::sort(traced.begin(), traced.end());
+    return {std::move(result), traced};
 }
 
 nlohmann::json withoutTiming(const SweepResult& result) {
@@ -183,20 +203,79 @@ TEST(Sweep, ResumedFromKeptPointsGivesTheSameBits) {
     const nlohmann::json expected = sweepToJson(runSweep(spec, whole, keep))["points"];
 
     RunControl resumed;
-    std::vector<size_t> traced;
-    std::mutex mutex;
-    SweepPointHooks hooks;
-    hooks.restore = [&](size_t k) { return k % 2 == 0 ? std::optional(kept[k]) : std::nullopt; };
-    hooks.onPoint = [&](size_t k, const SweepPoint&) {
-        std::lock_guard lock(mutex);
-        traced.push_back(k);
-    };
-    const SweepResult result = runSweep(spec, resumed, hooks);
-    std::sort(traced.begin(), traced.end());
+    const auto [result, traced] = resumeSweep(spec, resumed, kept, [](size_t k) { return k % 2 == 0; });
     EXPECT_EQ(traced, (std::vector<size_t>{1, 3}));
     EXPECT_EQ(resumed.itemsDone(), 5u);
     EXPECT_EQ(sweepToJson(result)["points"].dump(), expected.dump());
 
     SweepPoint other = sweepPoints(spec)[1];
     EXPECT_THROW(restoreSweepPoint(kept[0], other), Error);  // a point of another place in the grid
+}
+
+// With fire on, every point carries the fire figures of a single fire trace of its design, bit for bit, in
+// sweep.json and sweep.csv; a sweep resumed from kept points gives the same bits, and a point kept without
+// them (by a build that reported none) is traced again. With fire off, none of it appears.
+TEST(Sweep, FireFiguresAtEveryPointAndResumed) {
+    SweepSpec spec = pavilionSweep("39,40.5,42", 3000, 2);
+    spec.trace.fire.enabled = true;
+    RunControl whole;
+    std::vector<nlohmann::json> kept(spec.pointCount());
+    SweepPointHooks keep;
+    keep.onPoint = [&](size_t k, const SweepPoint& p) { kept[k] = sweepPointJson(spec, p); };
+    const SweepResult result = runSweep(spec, whole, keep);
+    const nlohmann::json j = sweepToJson(result);
+    const std::vector<std::string> figures = j["figures"];
+    EXPECT_EQ(figures, sweepFigureNames());  // the plain figures, then the fire ones
+    for (const nlohmann::json& point : j["points"])
+        for (const std::string& f : sweepFireFigureNames()) {
+            EXPECT_TRUE(point["fire"][f].is_number()) << f;
+            EXPECT_TRUE(point["fire"][f + "_stderr"].is_number()) << f;
+        }
+    const std::string csv = sweepCsv(result);
+    EXPECT_NE(csv.find(",coloured_share,coloured_share_stderr,"), std::string::npos) << csv.substr(0, 400);
+
+    const SweepPoint& p = result.points[1];
+    const Stone stone = Stone::build(makeCut("round_brilliant", {{"pavilion", 40.5}}), "alone");
+    TraceSettings settings = spec.trace;
+    settings.threads = 1;
+    const Scene scene(stone, settings);
+    const TraceResult alone = trace(scene);
+    ASSERT_TRUE(alone.fire);
+    const nlohmann::json fire = fireToJson(*alone.fire, stone, settings);
+    for (const std::string& f : sweepFireFigureNames()) {
+        EXPECT_EQ(p.figure(f), fire[f].get<double>()) << f;
+        EXPECT_EQ(p.stderrOf(f), fire[f + "_stderr"].get<double>()) << f;
+    }
+    EXPECT_GT(p.figure("coloured_share"), 0);
+    EXPECT_GT(p.figure("mean_separation_deg"), 0);
+
+    kept[0].erase("fire");  // kept by a build without fire figures
+    RunControl resumed;
+    const auto [again, traced] = resumeSweep(spec, resumed, kept, [](size_t k) { return k != 1; });
+    EXPECT_EQ(traced, (std::vector<size_t>{0, 1}));
+    EXPECT_EQ(sweepToJson(again)["points"].dump(), j["points"].dump());
+    EXPECT_EQ(sweepCsv(again), csv);
+
+    spec.trace.fire.enabled = false;
+    RunControl plain;
+    const SweepResult dark = runSweep(spec, plain);
+    const nlohmann::json d = sweepToJson(dark);
+    EXPECT_FALSE(d["points"][0].contains("fire"));
+    EXPECT_EQ(d["figures"], nlohmann::json(sweepFigureNames(spec.trace)));
+    EXPECT_EQ(d["figures"].size(), sweepFigureNames().size() - sweepFireFigureNames().size());
+    EXPECT_EQ(sweepCsv(dark).find("coloured"), std::string::npos);
+}
+
+TEST(Sweep, FireFiguresNeedTheFireTrace) {
+    TraceSettings trace;
+    EXPECT_NO_THROW(checkSweepFigure("weighted_return", trace));
+    try {
+        checkSweepFigure("coloured_share", trace);
+        ADD_FAILURE() << "a fire figure without fire";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("--fire"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(checkSweepFigure("sparkle", trace), Error);
+    trace.fire.enabled = true;
+    EXPECT_NO_THROW(checkSweepFigure("coloured_share", trace));
 }

@@ -317,6 +317,7 @@ TEST(SettingsSchema, OpenApiSweepAgreesWithItsTable) {
     for (const FieldInfo& f : sweepRequestSchema().fields()) read.insert(f.key);
     EXPECT_EQ(documented, read);
     EXPECT_EQ(sweep["properties"]["figure"]["enum"], json(sweepFigureNames()));
+    EXPECT_EQ(sweep["properties"]["maximize"]["enum"], json(sweepFigureNames()));
 }
 
 }  // namespace

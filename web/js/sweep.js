@@ -3,7 +3,8 @@
 import { api, jobUrl } from './api.js';
 import { FIGURES, POLL_ACTIVE_MS } from './constants.js';
 import { $, h, svg } from './dom.js';
-import { fmtNumber, fmtPctErr, humanize, shortId } from './format.js';
+import { FIRE_FIGURES, fmtFire } from './fire.js';
+import { fmtNumber, humanize, shortId } from './format.js';
 import { clearFieldError, showFieldError } from './form.js';
 import { refreshJobs } from './jobs.js';
 
@@ -14,7 +15,11 @@ const W = 640;
 const H = 400;
 const M = { left: 70, right: 170, top: 20, bottom: 56 };
 
-function figureInfo(key) { return FIGURES.find((f) => f.key === key) || { key, label: humanize(key) }; }
+// The figures of the statistics' totals, then the fire figures (points of a sweep that traces fire).
+const SWEEP_FIGURES = [...FIGURES, ...FIRE_FIGURES];
+function figureInfo(key) { return SWEEP_FIGURES.find((f) => f.key === key) || { key, label: humanize(key) }; }
+// Where a point keeps a figure and its standard error: its totals, or its fire figures.
+function figuresOf(p, key) { return key in p.totals ? p.totals : p.fire; }
 
 // The defaults of each axis: a pavilion range, and a crown range for the map.
 const AXIS_DEFAULTS = [{ name: 'pavilion', from: 38, to: 43, step: 0.5 }, { name: 'crown', from: 30, to: 38, step: 2 }];
@@ -38,7 +43,13 @@ function axisFieldset(i) {
 export function initSweepForm() {
   const form = $('#sweep-form');
   $('#sweep-axes').replaceChildren(axisFieldset(0), axisFieldset(1));
-  $('#s-figure').replaceChildren(...FIGURES.map((f) => h('option', { value: f.key, selected: f.key === 'weighted_return' }, f.label)));
+  $('#s-figure').replaceChildren(
+    h('optgroup', { label: 'Light return' }, FIGURES.map((f) => h('option', { value: f.key, selected: f.key === 'weighted_return' }, f.label))),
+    h('optgroup', { label: 'Fire (traces fire)' }, FIRE_FIGURES.map((f) => h('option', { value: f.key }, f.label))));
+  // A fire figure needs the fire trace.
+  $('#s-figure').addEventListener('change', (ev) => {
+    if (FIRE_FIGURES.some((f) => f.key === ev.target.value)) $('#s-fire').checked = true;
+  });
   const second = $('#s-second');
   const sync = () => { for (const el of $('#s-axis-1').querySelectorAll('.field input')) el.disabled = !second.checked; };
   second.addEventListener('change', sync);
@@ -75,6 +86,7 @@ async function submitSweep(ev) {
   const sweep = { axes, figure: form.elements.figure.value };
   if (form.elements.maximize.checked) sweep.maximize = form.elements.figure.value;
   const job = { mesh: form.elements.shape.value, photons: Number(form.elements.photons.value), sweep };
+  if (form.elements.fire.checked) job.fire = { enabled: true };
   const threads = Number($('#f-threads').value);
   if (threads > 0) job.threads = threads;
   const status = $('#sweep-status');
@@ -163,14 +175,14 @@ function frame(x, xs, xAxis, yTicks, y, yLabel) {
   return g;
 }
 
-// The point's values in the axes' order, then every figure with its standard error.
-function pointText(pt, axes) {
+// The point's values in the axes' order, then every figure the sweep reports with its standard error.
+function pointText(pt, axes, figures) {
   const values = axes.map((a) => {
     const v = pt.values[a.name];
     return `${humanize(a.name)} ${typeof v === 'number' ? fmtNumber(v, 4) : humanize(v)}`;
   }).join(', ');
   if (pt.error) return `${values}: cannot be made (${pt.error})`;
-  const figs = FIGURES.map((f) => `${f.label.toLowerCase()} ${fmtPctErr(pt.totals[f.key], pt.totals[`${f.key}_stderr`])}`);
+  const figs = figures.map((key) => `${figureInfo(key).label.toLowerCase()} ${fmtFire(figureInfo(key), figuresOf(pt, key))}`);
   const depth = pt.proportions && pt.proportions.total_depth_pct;
   return `${values}: ${figs.join(' · ')}${Number.isFinite(depth) ? ` · total depth ${fmtNumber(depth, 1)} %` : ''}`;
 }
@@ -212,8 +224,8 @@ async function openDesign(point) {
   }
 }
 
-function hoverable(el, point, axes) {
-  const text = pointText(point, axes);
+function hoverable(el, point, data) {
+  const text = pointText(point, data.axes, data.figures);
   el.setAttribute('tabindex', '0');
   el.setAttribute('aria-label', text);
   const show = () => { $('#sweep-tooltip').textContent = text; };
@@ -233,26 +245,31 @@ function drawSweep(data, figure) {
   if (!data.points.length) return;
   const root = svg('svg', { viewBox: `0 0 ${W} ${H}`, class: 'sweep-svg', role: 'img',
     'aria-label': `${figureInfo(figure).label} over ${data.axes.map((a) => humanize(a.name)).join(' and ')}` });
-  const values = ok.map((p) => p.totals[figure]);
-  const yTitle = `${figureInfo(figure).label} (%)`;
-  const pct = (v) => fmtNumber(v * 100, 2);
+  const value = (p) => figuresOf(p, figure)[figure];
+  const sigma = (p) => figuresOf(p, figure)[`${figure}_stderr`];
+  const values = ok.map(value);
+  // Shares in %, the mean separation in degrees.
+  const { degrees } = figureInfo(figure);
+  const unit = degrees ? '°' : '%';
+  const yTitle = `${figureInfo(figure).label} (${unit})`;
+  const pct = (v) => (degrees ? fmtNumber(v, 3) : fmtNumber(v * 100, 2));
   if (data.axes.length === 1) {
     const axis = data.axes[0];
     const xs = axisValues(axis);
     const x = scale(Math.min(...xs), Math.max(...xs), M.left + 10, W - M.right - 10);
-    const lo = Math.min(...ok.map((p) => p.totals[figure] - p.totals[`${figure}_stderr`]), ...values);
-    const hi = Math.max(...ok.map((p) => p.totals[figure] + p.totals[`${figure}_stderr`]), ...values);
+    const lo = Math.min(...ok.map((p) => value(p) - sigma(p)), ...values);
+    const hi = Math.max(...ok.map((p) => value(p) + sigma(p)), ...values);
     const y = scale(lo, hi, H - M.bottom - 10, M.top + 10);
     const xOf = (p) => x(xs[p.at[0]]);
     const sorted = [...ok].sort((a, b) => a.at[0] - b.at[0]);
-    const band = [...sorted.map((p) => `${xOf(p)},${y(p.totals[figure] + p.totals[`${figure}_stderr`])}`),
-      ...sorted.reverse().map((p) => `${xOf(p)},${y(p.totals[figure] - p.totals[`${figure}_stderr`])}`)].join(' ');
+    const band = [...sorted.map((p) => `${xOf(p)},${y(value(p) + sigma(p))}`),
+      ...sorted.reverse().map((p) => `${xOf(p)},${y(value(p) - sigma(p))}`)].join(' ');
     sorted.reverse();
     root.append(frame(x, xs, axis, ticks(lo, hi), y, { title: yTitle, format: pct }),
       svg('polygon', { points: band, class: 'sweep-band' }),
-      svg('polyline', { points: sorted.map((p) => `${xOf(p)},${y(p.totals[figure])}`).join(' '), class: 'sweep-line' }));
+      svg('polyline', { points: sorted.map((p) => `${xOf(p)},${y(value(p))}`).join(' '), class: 'sweep-line' }));
     for (const p of sorted) {
-      root.append(hoverable(svg('circle', { cx: xOf(p), cy: y(p.totals[figure]), r: 5, class: 'sweep-point', 'data-at': p.at.join(',') }), p, data.axes));
+      root.append(hoverable(svg('circle', { cx: xOf(p), cy: y(value(p)), r: 5, class: 'sweep-point', 'data-at': p.at.join(',') }), p, data));
     }
     const lx = W - M.right + 10;
     root.append(svg('g', { class: 'chart-legend' },
@@ -276,10 +293,10 @@ function drawSweep(data, figure) {
     for (const p of data.points) {
       const [j, i] = p.at;
       const rect = svg('rect', { x: xc(i) - cw / 2, y: yc(j) - ch / 2, width: cw, height: ch, class: p.error ? 'sweep-cell failed' : 'sweep-cell',
-        fill: p.error ? '#ccc' : colour(p.totals[figure]), 'data-at': p.at.join(',') });
-      root.append(hoverable(rect, p, data.axes));
+        fill: p.error ? '#ccc' : colour(value(p)), 'data-at': p.at.join(',') });
+      root.append(hoverable(rect, p, data));
     }
-    const best = ok.reduce((b, p) => (!b || p.totals[figure] > b.totals[figure] ? p : b), null);
+    const best = ok.reduce((b, p) => (!b || value(p) > value(b) ? p : b), null);
     if (best) {
       root.append(svg('text', { x: xc(best.at[1]), y: yc(best.at[0]) + 6, 'text-anchor': 'middle', class: 'sweep-best' }, '★'));
     }
@@ -290,8 +307,8 @@ function drawSweep(data, figure) {
       root.append(svg('rect', { x: lx, y: H - M.bottom - (k + 1) * ((H - M.top - M.bottom) / steps), width: 16, height: (H - M.top - M.bottom) / steps, fill: colour(v) }));
     }
     root.append(svg('g', { class: 'chart-legend' },
-      svg('text', { x: lx + 20, y: H - M.bottom }, `${pct(lo)} %`),
-      svg('text', { x: lx + 20, y: M.top + 10 }, `${pct(hi)} %`),
+      svg('text', { x: lx + 20, y: H - M.bottom }, `${pct(lo)} ${unit}`),
+      svg('text', { x: lx + 20, y: M.top + 10 }, `${pct(hi)} ${unit}`),
       svg('text', { x: lx, y: H - M.bottom + 30 }, `${figureInfo(figure).label}`),
       svg('text', { x: lx, y: H - M.bottom + 44 }, '★ highest')));
   }
