@@ -451,6 +451,11 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.match(mean, /° ± /);
     assert.ok(Math.abs(parseFloat(mean) - stats.fire.mean_separation_deg) < 0.01, `${mean} vs ${stats.fire.mean_separation_deg}`);
     assert.match(await page.textContent('[data-figure="fire.coloured_share"] .figure-value'), /% ± /);
+    // Every share the statistics report has a place on the page, split_share too.
+    for (const key of ['pair_share', 'split_share']) {
+      const shown = parseFloat(await page.textContent(`[data-figure="fire.${key}"] .figure-value`));
+      assert.ok(Math.abs(shown - 100 * stats.fire[key]) < 0.51, `${key}: ${shown} vs ${stats.fire[key]}`);
+    }
     assert.ok(await page.locator('.fire-histogram-chart rect').count() > 2, 'the histogram has filled cells');
     await shot('09c-fire');
   });

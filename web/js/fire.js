@@ -13,6 +13,8 @@ export const FIRE_FIGURES = [
     hint: 'Coloured exits weighted by cos(angle to vertical), outside the head cone (after GIA’s DCLR)' },
   { key: 'pair_share', label: 'Red and blue together',
     hint: 'Share of hits whose red and blue both leave the crown upward along one facet path' },
+  { key: 'split_share', label: 'Red and blue parted',
+    hint: 'Share of hits where only one of red and blue leaves the crown upward along that path (not in the separation)' },
 ];
 
 export function fmtFire(f, fire) {
