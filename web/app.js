@@ -53,6 +53,7 @@ async function start() {
   });
   form.elements['light.model'].addEventListener('change', syncFormControls);
   form.elements.render.addEventListener('change', syncFormControls);
+  form.elements.tilt_series.addEventListener('change', syncFormControls);
   $('#f-mesh').addEventListener('change', describeMesh);
   $('#upload-button').addEventListener('click', uploadMesh);
   $('#compare-selected').addEventListener('click', () => {

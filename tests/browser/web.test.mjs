@@ -413,11 +413,17 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.selectOption('#f-mesh', jobIds.brilliantMesh);
     await fillSmallJob({ width: '48', height: '48' });
     await page.setChecked('#f-aset', true);
+    // The rocking range and axis are only editable with a tilt series asked for.
+    assert.ok(await page.isDisabled('#f-tilt-axis'));
     await page.setChecked('#f-tilt-series', true);
+    await page.fill('#f-tilt-max', '6');
+    await page.selectOption('#f-tilt-axis', '90');
     const id = await submitAndGetId();
     jobIds.viewer = id;
     await waitForFinished(id);
     await page.setChecked('#f-aset', false);
+    await page.fill('#f-tilt-max', '10');
+    await page.selectOption('#f-tilt-axis', '0');
     await page.setChecked('#f-tilt-series', false);
     await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
     await page.waitForSelector('[data-section="viewer"]');
@@ -429,7 +435,8 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
     const head = await page.textContent('table.aset-shares tr[data-aset="head"] td');
     assert.ok(Math.abs(parseFloat(head) - stats.aset.shares.head.share * 100) <= 0.05, `${head} vs ${stats.aset.shares.head.share}`);
-    assert.match(await page.textContent('[data-section="viewer"] figcaption'), /Scintillation .* 21 frames/);
+    assert.deepEqual(stats.tilt_series.settings, { max_deg: 6, step_deg: 1, axis_deg: 90 });
+    assert.match(await page.textContent('[data-section="viewer"] figcaption'), /±6° about the front–back \(y\) axis: scintillation .* 13 frames/);
     await shot('09b-viewer-views');
   });
 
@@ -490,7 +497,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     // Each picture says which light it uses.
     assert.match(await page.textContent(`.compare-card[data-id="${jobIds.brilliant}"] .pic-render figcaption`), /studio light, the viewer's head shadow/);
     assert.match(await page.textContent(`.compare-card[data-id="${jobIds.brilliant}"] .pic-heatmap figcaption`), /light/);
-    assert.match(await page.textContent(`.viewer-card[data-id="${jobIds.viewer}"] figcaption`), /Scintillation .* 21 frames/);
+    assert.match(await page.textContent(`.viewer-card[data-id="${jobIds.viewer}"] figcaption`), /front–back \(y\) axis: scintillation .* 13 frames/);
     // Each design's shares, as its statistics give them, in its card and in the table's column.
     const column = 1 + order.indexOf(tilted);
     for (const id of [jobIds.viewer, tilted]) {

@@ -86,7 +86,12 @@ function buildJob(form) {
     };
     if (form.elements.aset.checked) job.aset = {};
     if (form.elements.fire_picture.checked) job.fire_picture = {};
-    if (form.elements.tilt_series.checked) job.tilt_series = { max_deg: 10 };
+    if (form.elements.tilt_series.checked) {
+      job.tilt_series = {
+        max_deg: readNumber(form, 'tilt_series.max_deg', errors),
+        axis_deg: Number(form.elements['tilt_series.axis_deg'].value),
+      };
+    }
   } else {
     job.render = false;
   }
@@ -141,6 +146,9 @@ export function syncFormControls() {
   form.elements['light.head_shadow_deg'].disabled = !hemisphere;
   form.elements['light.sky'].disabled = !hemisphere;
   const render = form.elements.render.checked;
-  for (const input of $('#render-options').querySelectorAll('input')) input.disabled = !render;
+  for (const input of $('#render-options').querySelectorAll('input, select')) input.disabled = !render;
   $('#render-options').classList.toggle('disabled', !render);
+  const tilt = render && form.elements.tilt_series.checked;
+  form.elements['tilt_series.max_deg'].disabled = !tilt;
+  form.elements['tilt_series.axis_deg'].disabled = !tilt;
 }
