@@ -145,15 +145,15 @@ export const ASET_CLASSES = [
 // The axis a tilt series rocks about, by its azimuth (docs/physics.md, "Tilt series and sparkle").
 function tiltAxisName(deg) {
   const a = ((deg % 180) + 180) % 180;
-  if (a === 0) return 'left–right (x)';
-  if (a === 90) return 'front–back (y)';
-  return `${fmtNumber(deg, 0)}° azimuth`;
+  if (a === 0) return 'the left–right (x) axis';
+  if (a === 90) return 'the front–back (y) axis';
+  return `the horizontal axis at ${fmtNumber(deg, 1)}° azimuth`;
 }
 
 // The tilt series' scintillation in words.
 export function scintillationText(tilt) {
   const { max_deg: max, axis_deg: axis } = tilt.settings;
-  return `Rocked ±${fmtNumber(max, 1)}° about the ${tiltAxisName(axis)} axis: scintillation ${fmtPctErr(tilt.scintillation, tilt.scintillation_stderr)} of the face-up area per frame, over ${tilt.frames.length} frames`;
+  return `Rocked ±${fmtNumber(max, 1)}° about ${tiltAxisName(axis)}: scintillation ${fmtPctErr(tilt.scintillation, tilt.scintillation_stderr)} of the face-up area per frame, over ${tilt.frames.length} frames`;
 }
 
 // A job's viewer figures: the ASET picture with its shares, the tilt series' animation and chart; none
