@@ -13,12 +13,12 @@
 #include <vector>
 
 #include "bench_timing.h"
-#include "intersect/scene.h"
 #include "io/mesh_resolver.h"
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
 #include "render/fire_picture.h"
 #include "render/renderer.h"
+#include "scene/scene.h"
 #include "trace/photon_tracer.h"
 #include "util/simd_target.h"
 
@@ -45,10 +45,11 @@ int main(int argc, char** argv) {
         TraceSettings trace;
         trace.threads = threads;
         const Scene scene(stone, trace);
+        const TraceBase traced(scene, trace);
         std::vector<double> pass, build, draw, drawCpu, total;
         for (int r = 0; r < runs; ++r) {
             const auto t0 = std::chrono::steady_clock::now();
-            FloorPhotons photons = traceFloorPhotons(scene, settings.mapPhotons, threads);
+            FloorPhotons photons = traceFloorPhotons(traced, settings.mapPhotons, threads);
             pass.push_back(seconds(t0));
             const auto t1 = std::chrono::steady_clock::now();
             const PhotonMap caustics(std::move(photons.caustic), threads);
@@ -72,7 +73,8 @@ int main(int argc, char** argv) {
     TraceSettings trace;
     trace.threads = 2;
     const Scene scene(stone, trace);
-    FloorPhotons photons = traceFloorPhotons(scene, settings.mapPhotons, trace.threads);
+    const TraceBase traced(scene, trace);
+    FloorPhotons photons = traceFloorPhotons(traced, settings.mapPhotons, trace.threads);
     const PhotonMap caustics(std::move(photons.caustic), trace.threads);
     std::vector<double> plain, plainCpu, spectral, spectralCpu;
     for (int r = 0; r < runs; ++r) {

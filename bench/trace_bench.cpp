@@ -87,11 +87,12 @@ void traceStats(benchmark::State& state, const Stone& stone, bool dispersion = f
     settings.threads = int(state.range(0));
     settings.dispersion = dispersion;
     const Scene scene(stone, settings);
+    const TraceBase traced(scene, settings);
     uint64_t interfaces = 0;
     const double cpuStart = processCpuSeconds();
     for (auto _ : state) {
         FacetStats stats(stone.facets.size());
-        traceBlocks(scene, 0, blockCount(settings.photons), settings.threads, stats);
+        traceBlocks(traced, 0, blockCount(settings.photons), settings.threads, stats);
         benchmark::DoNotOptimize(stats.exited);
         interfaces = stats.hit + stats.exited;
         for (const FacetCounts& f : stats.facets) interfaces += f.internalReflections;
@@ -163,14 +164,15 @@ void BM_FireVsPlainBrilliant57(benchmark::State& state) {
     plain.threads = int(state.range(0));
     TraceSettings fire = plain;
     fire.fire.enabled = true;
-    const Scene plainScene(brilliant(), plain), fireScene(brilliant(), fire);
+    const Scene scene(brilliant(), plain);
+    const TraceBase plainTrace(scene, plain), fireTrace(scene, fire);
     std::vector<double> plainSeconds, fireSeconds;
     for (auto _ : state) {
-        for (const Scene* scene : {&plainScene, &fireScene}) {
+        for (const TraceBase* base : {&plainTrace, &fireTrace}) {
             const auto start = std::chrono::steady_clock::now();
-            const TraceResult r = trace(*scene);
+            const TraceResult r = trace(*base);
             benchmark::DoNotOptimize(r.stats.exited);
-            (scene == &plainScene ? plainSeconds : fireSeconds).push_back(bench::seconds(start));
+            (base == &plainTrace ? plainSeconds : fireSeconds).push_back(bench::seconds(start));
         }
     }
     const double p = bench::median(plainSeconds), f = bench::median(fireSeconds);

@@ -11,13 +11,13 @@
 #include <vector>
 
 #include "bench_timing.h"
-#include "intersect/scene.h"
 #include "io/mesh_resolver.h"
 #include "pictures/aset_picture.h"
 #include "pictures/tilt_chart.h"
 #include "pictures/webp_animation.h"
 #include "render/aset.h"
 #include "render/tilt_series.h"
+#include "scene/scene.h"
 
 using namespace facetlight;
 
@@ -37,18 +37,19 @@ int main(int argc, char** argv) {
         TraceSettings trace;
         trace.threads = threads;
         const Scene scene(stone, trace);
+        const TraceBase traced(scene, trace);
         std::vector<double> asetWall, asetCpu, tiltWall, tiltCpu;
         for (int r = 0; r < runs; ++r) {
             auto t0 = std::chrono::steady_clock::now();
             std::clock_t c0 = std::clock();
-            const AsetView view = asetView(scene, CameraSettings{}, 400, 400, aset, threads, trace.seed);
+            const AsetView view = asetView(traced, CameraSettings{}, 400, 400, aset, threads, trace.seed);
             const std::string png = encodePng(asetPicture(view, aset, "ASET"));
             asetWall.push_back(seconds(t0));
             asetCpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
 
             t0 = std::chrono::steady_clock::now();
             c0 = std::clock();
-            const TiltSeries series = tiltSeries(scene, CameraSettings{}, 320, 320, aset, tilt);
+            const TiltSeries series = tiltSeries(traced, CameraSettings{}, 320, 320, aset, tilt);
             std::vector<Image> frames;
             for (const TiltFrame& f : series.frames) {
                 frames.push_back(asetPicture(f.view, aset, "tilt " + std::to_string(f.tiltDeg)));

@@ -1,7 +1,7 @@
 #pragma once
-// CLI flags made from a settings table (core/util/settings_schema.h): one flag per field, with the table's
-// help, unit and the defaults shown. The flags given are read through the same schema as JSON, so the CLI
-// checks exactly what the service checks; errors name the flag. Header-only: the CLI's build takes its
+// CLI flags made from a settings table (core/settings/settings_schema.h): one flag per field, with the
+// table's help, unit and the defaults shown. The flags given are read through the same schema as JSON, so the
+// CLI checks exactly what the service checks; errors name the flag. Header-only: the CLI's build takes its
 // sources from cli/*_command.cpp.
 #include <algorithm>
 #include <charconv>
@@ -12,8 +12,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "settings/settings_schema.h"
 #include "util/error.h"
-#include "util/settings_schema.h"
 
 namespace facetlight::cli {
 

@@ -30,6 +30,7 @@ void run(const TraceCommandOptions& o) {
     // Under mpirun the ranks split the blocks and rank 0 alone reports (docs/distributed.md).
     Communicator& comm = processCommunicator();
     const Scene scene(stone, settings);
+    const TraceBase trace(scene, settings);
     RunControl control;
     control.startPhase(RunPhase::Tracing, localPhotons(comm, settings.photons));
     TraceResult result;
@@ -38,13 +39,12 @@ void run(const TraceCommandOptions& o) {
         ProgressJson progress(o.progressJson && comm.isRoot(), control, [&](RunPhase phase) {
             return phase == RunPhase::Tracing ? settings.photons : 0;
         });
-        result = traceDistributed(comm, scene, &control);
+        result = traceDistributed(comm, trace, &control);
     }
 
     if (!comm.isRoot()) return;
-    nlohmann::json stats = statsToJson(result.stats, stone, settings, result.timing);
+    nlohmann::json stats = traceReport(result, stone, settings);
     if (comm.size() > 1) stats["timing"]["ranks"] = comm.size();
-    if (result.fire) stats["fire"] = fireToJson(*result.fire, stone, settings);
     const std::string json = stats.dump(2) + "\n";
     if (o.jsonPath.empty()) {
         std::cout << json;

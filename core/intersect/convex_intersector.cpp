@@ -12,8 +12,8 @@
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 
 #include "hwy/highway.h"
+#include "intersect/convex_search-inl.h"
 #include "intersect/detail/convex_kernels.h"
-#include "intersect/detail/convex_search-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace facetlight {

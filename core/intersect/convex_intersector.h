@@ -2,7 +2,7 @@
 // Ray casting against a convex stone by its facet planes alone: the ray is inside the stone where it is
 // inside every half-space, so the exit facet is the plane with the smallest t among those the ray heads out
 // through, and the entry facet the one with the largest t among those it heads in through (the slab test,
-// generalised). The searches are written once over SIMD lanes (intersect/detail/convex_search-inl.h) and
+// generalised). The searches are written once over SIMD lanes (intersect/convex_search-inl.h) and
 // compiled for every target; the CPU's best is picked when an intersector is built. Every target computes
 // the same bits: each (ray, plane) pair takes the same correctly rounded operations, and ties go to the
 // lowest facet.

@@ -1,7 +1,10 @@
 #pragma once
 // Unpolarised Fresnel reflectance at an interface (docs/optics.md), for one ray or for a packet of rays:
-// written once over the number type so that both give the same bits.
+// written once over the number type so that both give the same bits; and the reflected and refracted
+// directions of one ray.
 #include <cmath>
+
+#include "geometry/geometry.h"
 
 namespace facetlight {
 
@@ -10,7 +13,7 @@ inline float select(bool mask, float a, float b) {
 }
 
 // For rays with cos(incidence) cosI in [0, 1] going from index n1 to n2, eta = n1 / n2. Mask is bool for a
-// float and the lane mask for lanes of floats (util/detail/lanes-inl.h).
+// float and the lane mask for lanes of floats (util/lanes-inl.h).
 template <class F, class Mask = decltype(F{} < F{})>
 struct FresnelTerms {
     Mask totalInternal;
@@ -19,7 +22,7 @@ struct FresnelTerms {
 };
 
 // Always inlined, so that lanes of a SIMD target are computed with that target's instructions
-// (util/detail/lanes-inl.h).
+// (util/lanes-inl.h).
 template <class F>
 [[gnu::always_inline]] inline FresnelTerms<F> fresnelTerms(F cosI, F eta) {
     using std::sqrt;
@@ -38,6 +41,19 @@ template <class F>
 using FresnelResult = FresnelTerms<float>;
 inline FresnelResult fresnel(float cosI, float eta) {
     return fresnelTerms(cosI, eta);
+}
+
+// A ray from outside at cos(incidence) cosI off a facet of outward normal `normal`, and into it with
+// eta = 1 / n (Snell's law).
+inline Vec3f reflectOff(const Vec3f& d, const Vec3f& normal, float cosI) {
+    return d + normal * (2 * cosI);
+}
+inline Vec3f refractIn(const Vec3f& d, const Vec3f& normal, float eta, float cosI, float cosT) {
+    return normalize(d * eta + normal * (eta * cosI - cosT));
+}
+// Out of the stone (index n) into air through a facet of outward normal `normal` (Snell's law).
+inline Vec3f refractOut(const Vec3f& d, const Vec3f& normal, float n, float cosI, float cosT) {
+    return normalize(d * n - normal * (n * cosI - cosT));
 }
 
 }  // namespace facetlight

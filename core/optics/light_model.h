@@ -2,8 +2,8 @@
 // Where photons come from. Each model aims its photons at a disc that covers the stone's silhouette as seen
 // along the photon's direction, so few are wasted on empty space; every photon drawn counts in `photons`.
 #include "geometry/geometry.h"
+#include "optics/light_settings.h"
 #include "stone/stone.h"
-#include "trace/trace_settings.h"
 #include "util/random.h"
 
 namespace facetlight {

@@ -6,12 +6,13 @@
 
 namespace facetlight {
 
-FloorPhotons traceFloorPhotons(const Scene& scene, uint64_t count, int threads, RunControl* control) {
-    return traceFloorPhotons(scene, count, 0, blockCount(count), threads, control);
+FloorPhotons traceFloorPhotons(const TraceBase& trace, uint64_t count, int threads, RunControl* control) {
+    return traceFloorPhotons(trace, count, 0, blockCount(count), threads, control);
 }
 
-FloorPhotons traceFloorPhotons(const Scene& scene, uint64_t count, uint64_t firstBlock, uint64_t lastBlock,
-                               int threads, RunControl* control) {
+FloorPhotons traceFloorPhotons(const TraceBase& trace, uint64_t count, uint64_t firstBlock,
+                               uint64_t lastBlock, int threads, RunControl* control) {
+    const Scene& scene = trace.scene();
     const float power = float(scene.photonPower(count));
     lastBlock = std::min(lastBlock, blockCount(count));
     firstBlock = std::min(firstBlock, lastBlock);
@@ -27,13 +28,15 @@ FloorPhotons traceFloorPhotons(const Scene& scene, uint64_t count, uint64_t firs
             PhotonPath path;
             Vec3 position;
             for (uint64_t i = begin; i < end; ++i) {
-                tracePhoton(scene, i, path);
+                tracePhoton(trace, i, path);
                 const Vec3 dir{path.exitDirection.x, path.exitDirection.y, path.exitDirection.z};
                 if (path.outcome == PhotonOutcome::Exited) {
                     const Region r = scene.stone().facets[path.exitFacet].region;
                     if (r == Region::Table || r == Region::Crown) histogram.add(scene.toWorld(dir));
                 }
-                if (scene.landOnFloor(path, position)) {
+                const bool leftStone =
+                    path.outcome == PhotonOutcome::Exited || path.outcome == PhotonOutcome::ReflectedAtEntry;
+                if (leftStone && scene.landOnFloor(path.exitPosition, path.exitDirection, position)) {
                     slots[i - first] =
                         Photon::make(position, power, dir, scene.dispersive() ? path.wavelengthNm : 0.0);
                     landed[i - first] = 1;
@@ -55,10 +58,10 @@ FloorPhotons traceFloorPhotons(const Scene& scene, uint64_t count, uint64_t firs
     return out;
 }
 
-FloorPhotons traceFloorPhotons(Communicator& comm, const Scene& scene, uint64_t count, int threads,
+FloorPhotons traceFloorPhotons(Communicator& comm, const TraceBase& trace, uint64_t count, int threads,
                                RunControl* control) {
     const IndexRange blocks = partition(blockCount(count), comm.rank(), comm.size());
-    FloorPhotons out = traceFloorPhotons(scene, count, blocks.begin, blocks.end, threads, control);
+    FloorPhotons out = traceFloorPhotons(trace, count, blocks.begin, blocks.end, threads, control);
     if (comm.size() == 1) return out;
     out.cancelled = anyRank(comm, out.cancelled);
     if (out.cancelled) return out;

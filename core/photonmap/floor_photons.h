@@ -5,9 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "intersect/scene.h"
 #include "photonmap/photon.h"
-#include "pictures/angular_plot.h"
+#include "stats/angular_histogram.h"
 #include "trace/photon_tracer.h"
 #include "util/distributed.h"
 #include "util/run_control.h"
@@ -21,21 +20,21 @@ struct FloorPhotons {
     bool cancelled = false;
 };
 
-// Traces photons [0, count) of the scene's job with `threads` workers, advancing control->done() by the
+// Traces photons [0, count) of the trace's job with `threads` workers, advancing control->done() by the
 // photons traced. Photons carry power scene.photonPower(count) and their wavelength when the scene is
 // dispersive (else none: white light).
-FloorPhotons traceFloorPhotons(const Scene& scene, uint64_t count, int threads,
+FloorPhotons traceFloorPhotons(const TraceBase& trace, uint64_t count, int threads,
                                RunControl* control = nullptr);
 // The same for blocks [firstBlock, lastBlock) of a job of `count` photons only (clipped to it): the caustic
 // photons of consecutive block ranges, appended in range order, are those of the whole job.
-FloorPhotons traceFloorPhotons(const Scene& scene, uint64_t count, uint64_t firstBlock, uint64_t lastBlock,
-                               int threads, RunControl* control = nullptr);
+FloorPhotons traceFloorPhotons(const TraceBase& trace, uint64_t count, uint64_t firstBlock,
+                               uint64_t lastBlock, int threads, RunControl* control = nullptr);
 
 // The photon pass spread over the ranks of `comm` (docs/distributed.md): each rank traces the blocks of
 // partition(blockCount(count), rank, size), and every rank receives all caustic photons in photon-index
 // order (the single-process map, bit for bit). The angular histogram is summed on rank 0 only; `cancelled`
 // is true on every rank when any rank was cancelled. control->done() counts this rank's photons.
-FloorPhotons traceFloorPhotons(Communicator& comm, const Scene& scene, uint64_t count, int threads,
+FloorPhotons traceFloorPhotons(Communicator& comm, const TraceBase& trace, uint64_t count, int threads,
                                RunControl* control = nullptr);
 
 }  // namespace facetlight

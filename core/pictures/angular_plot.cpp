@@ -8,33 +8,6 @@
 
 namespace facetlight {
 
-void AngularHistogram::add(const Vec3& dir) {
-    ++total;
-    if (dir.z <= 0) return;
-    const int theta = std::min(kThetaBins - 1, int(degrees(std::acos(std::min(1.0, dir.z)))));
-    double phi = degrees(std::atan2(dir.y, dir.x));
-    if (phi < 0) phi += 360;
-    const int p = std::min(kPhiBins - 1, int(phi / (360.0 / kPhiBins)));
-    ++counts[size_t(theta) * kPhiBins + p];
-}
-
-void AngularHistogram::merge(const AngularHistogram& o) {
-    for (size_t i = 0; i < counts.size(); ++i) counts[i] += o.counts[i];
-    total += o.total;
-}
-
-std::vector<uint64_t> AngularHistogram::tallies() const {
-    std::vector<uint64_t> out(counts);
-    out.push_back(total);
-    return out;
-}
-
-void AngularHistogram::setTallies(const std::vector<uint64_t>& values) {
-    if (values.size() != counts.size() + 1) throw Error("angular histogram tallies of the wrong length");
-    std::copy(values.begin(), values.end() - 1, counts.begin());
-    total = values.back();
-}
-
 Image angularPlot(const AngularHistogram& h, const std::string& subtitle) {
     constexpr int kWidth = 720, kHeight = 860;
     constexpr double kRadius = 290, cx = kWidth / 2.0, cy = 400;

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pictures/image.h"
+#include "image/image.h"
 #include "stats/facet_stats.h"
 #include "stats/fire_stats.h"
 #include "stone/stone.h"

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "pictures/image.h"
+#include "image/image.h"
 
 namespace facetlight {
 

@@ -4,7 +4,7 @@
 // up, and the series' scintillation in the subtitle.
 #include <string>
 
-#include "pictures/image.h"
+#include "image/image.h"
 #include "render/tilt_series.h"
 
 namespace facetlight {

@@ -6,7 +6,7 @@
 #include "geometry/rotation.h"
 #include "optics/fresnel.h"
 #include "render/camera.h"
-#include "trace/detail/photon_walker.h"
+#include "trace/photon_walker.h"
 #include "util/error.h"
 #include "util/parallel.h"
 #include "util/random.h"
@@ -68,8 +68,9 @@ struct ViewRayEnd {
 };
 
 // One view ray from `eye` along `dir` (stone frame): false when it misses the stone.
-bool followViewRay(const Scene& scene, const SkyBands& bands, const Vec3f& eye, const Vec3f& dir, float n,
+bool followViewRay(const TraceBase& trace, const SkyBands& bands, const Vec3f& eye, const Vec3f& dir, float n,
                    PhotonWalker::Photon& ph, AsetClass& end) {
+    const Scene& scene = trace.scene();
     SurfaceHit hit;
     if (!scene.enter(eye, dir, hit)) return false;
     const Vec3f p = eye + dir * hit.t;
@@ -80,15 +81,15 @@ bool followViewRay(const Scene& scene, const SkyBands& bands, const Vec3f& eye, 
     // A reflection off a convex stone is never met again; on another shape it is not followed (as the
     // tracer).
     if (ph.rng.uniform() < fr.reflectance) {
-        end = bands(PhotonWalker::reflectOff(dir, normal, cosI));
+        end = bands(reflectOff(dir, normal, cosI));
         return true;
     }
     ph.p = p;
-    ph.d = PhotonWalker::refractIn(dir, normal, eta, cosI, fr.cosT);
+    ph.d = refractIn(dir, normal, eta, cosI, fr.cosT);
     ph.n = n;
     ph.bounces = 0;
     ViewRayEnd visit{bands};
-    while (PhotonWalker::step(scene, scene, visit, ph)) {
+    while (PhotonWalker::step(trace, scene, visit, ph)) {
     }
     end = visit.end;
     return true;
@@ -141,9 +142,10 @@ bool AsetView::lit(size_t pixel) const {
     return lit > dark;
 }
 
-AsetView asetView(const Scene& scene, const CameraSettings& cameraSettings, int width, int height,
+AsetView asetView(const TraceBase& trace, const CameraSettings& cameraSettings, int width, int height,
                   const AsetSettings& settings, int threads, uint64_t seed, RunControl* control,
                   const StoneTurn& turn) {
+    const Scene& scene = trace.scene();
     settings.validate();
     if (width < kMinImageSide || width > kMaxImageSide || height < kMinImageSide || height > kMaxImageSide) {
         throw Error("render.width", "an ASET view's sides must be between " + std::to_string(kMinImageSide) +
@@ -154,7 +156,7 @@ AsetView asetView(const Scene& scene, const CameraSettings& cameraSettings, int 
     const Camera camera(cameraSettings, target, scene.diameter(), width, height);
     const SkyBands bands(frame, settings, normalize(camera.position() - target));
     const Vec3f eye(frame.toStone(camera.position()));
-    const float n = float(scene.index(Material::kSodiumD));
+    const float n = float(scene.refractiveIndex(Material::kSodiumD));
     const uint64_t streams = mix64(seed ^ kAsetStreams);
 
     AsetView view;
@@ -175,7 +177,7 @@ AsetView asetView(const Scene& scene, const CameraSettings& cameraSettings, int 
                     const double px = x + ph.rng.uniformDouble(), py = double(y) + ph.rng.uniformDouble();
                     const Vec3f dir(frame.toStone(camera.direction(px, py)));
                     AsetClass end;
-                    if (!followViewRay(scene, bands, eye, dir, n, ph, end)) continue;
+                    if (!followViewRay(trace, bands, eye, dir, n, ph, end)) continue;
                     ++counts[size_t(end)];
                     ++totals[size_t(end)];
                 }

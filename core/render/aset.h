@@ -16,9 +16,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "intersect/scene.h"
 #include "render/render_settings.h"
 #include "render/view_settings.h"
+#include "trace/trace_base.h"
 #include "util/run_control.h"
 
 namespace facetlight {
@@ -56,7 +56,7 @@ struct StoneTurn {
 
 // The view through `camera` at width x height pixels, of the scene's stone turned by `turn`. Advances
 // control->done() by the pixels of each row. Throws Error on bad settings.
-AsetView asetView(const Scene& scene, const CameraSettings& camera, int width, int height,
+AsetView asetView(const TraceBase& trace, const CameraSettings& camera, int width, int height,
                   const AsetSettings& settings, int threads, uint64_t seed, RunControl* control = nullptr,
                   const StoneTurn& turn = {});
 

@@ -81,7 +81,7 @@ FirePicture firePicture(const Scene& scene, const RenderSettings& render, const 
     const double stratum = (kFireMaxWavelength - kFireMinWavelength) / count;
     // A path that never depends on the wavelength sees the light's whole spectrum, in one sample's share.
     const Vec3 white = equalEnergyXyz() * (1.0 / count);
-    const double fixedIndex = scene.index(Material::kSodiumD);
+    const double fixedIndex = scene.refractiveIndex(Material::kSodiumD);
     const uint64_t streams = mix64(seed ^ kFireStreams);
     const int width = render.width, height = render.height;
 
@@ -99,7 +99,7 @@ FirePicture firePicture(const Scene& scene, const RenderSettings& render, const 
                 for (int s = 0; s < count; ++s) {
                     const double px = x + rng.uniformDouble(), py = double(y) + rng.uniformDouble();
                     const double wavelength = kFireMinWavelength + (s + rng.uniformDouble()) * stratum;
-                    const double n = scene.dispersive() ? scene.index(wavelength) : fixedIndex;
+                    const double n = scene.dispersive() ? scene.refractiveIndex(wavelength) : fixedIndex;
                     const Vec3 dir = scene.toStone(camera.direction(px, py));
                     sum += tracer.trace(eye, dir, n, cieXyz(wavelength) * stratum, white);
                 }

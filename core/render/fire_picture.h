@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "geometry/geometry.h"
-#include "intersect/scene.h"
-#include "pictures/image.h"
+#include "image/image.h"
 #include "render/render_settings.h"
+#include "scene/scene.h"
 #include "util/run_control.h"
 
 namespace facetlight {

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "util/settings_schema.h"
+#include "settings/settings_schema.h"
 
 namespace facetlight {
 

@@ -155,7 +155,7 @@ RenderedImage render(const Scene& scene, const PhotonMap& caustics, const Render
     image.pixels.assign(size_t(settings.width) * size_t(settings.height), Vec3{});
     const int tiles = shareTileCount(tileCount(settings.width, settings.height), share);
     const Vec3 eye = scene.toStone(camera.position());
-    const double fixedIndex = scene.index(Material::kSodiumD);
+    const double fixedIndex = scene.refractiveIndex(Material::kSodiumD);
     const Vec3 white = Vec3{1, 1, 1} * context.causticScale;
 
     const WorkerStates<Worker> workers = parallelForBlocks(
@@ -175,8 +175,9 @@ RenderedImage render(const Scene& scene, const PhotonMap& caustics, const Render
                         // Sample s takes band s, at a wavelength jittered within it when that changes the
                         // index.
                         const double u = rng.uniformDouble();
-                        const double n =
-                            scene.dispersive() ? scene.index(context.bands.wavelength(s, u)) : fixedIndex;
+                        const double n = scene.dispersive()
+                                             ? scene.refractiveIndex(context.bands.wavelength(s, u))
+                                             : fixedIndex;
                         const Vec3 dir = scene.toStone(camera.direction(px, py));
                         sum += tracer.trace(eye, dir, n, context.bands.colour(s), white);
                     }

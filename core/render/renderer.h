@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "geometry/geometry.h"
-#include "intersect/scene.h"
+#include "image/image.h"
 #include "photonmap/photon_map.h"
-#include "pictures/image.h"
 #include "render/camera.h"
 #include "render/render_settings.h"
+#include "scene/scene.h"
 #include "util/distributed.h"
 #include "util/run_control.h"
 

@@ -3,8 +3,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "intersect/scene.h"
-
 namespace facetlight {
 
 AsetShare TiltSeries::scintillation() const {
@@ -13,18 +11,17 @@ AsetShare TiltSeries::scintillation() const {
     return {p, std::sqrt(p * (1 - p) / double(pixelPairs))};
 }
 
-TiltSeries tiltSeries(const Scene& scene, const CameraSettings& camera, int width, int height,
+TiltSeries tiltSeries(const TraceBase& trace, const CameraSettings& camera, int width, int height,
                       const AsetSettings& aset, const TiltSeriesSettings& settings, RunControl* control) {
     settings.validate();
-    const TraceSettings& trace = scene.settings();
+    const TraceSettings& job = trace.settings();
     TiltSeries series;
     series.axisDeg = settings.axisDeg;
     for (int k = 0; k < settings.frames(); ++k) {
         const StoneTurn turn{settings.tiltDeg(k), settings.axisDeg};
-        TiltFrame frame{
-            settings.tiltDeg(k),
-            asetView(scene, camera, width, height, aset, trace.threads, trace.seed, control, turn),
-            {}};
+        TiltFrame frame{settings.tiltDeg(k),
+                        asetView(trace, camera, width, height, aset, job.threads, job.seed, control, turn),
+                        {}};
         if (frame.view.cancelled) {
             series.cancelled = true;
             return series;

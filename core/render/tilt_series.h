@@ -32,9 +32,9 @@ struct TiltSeries {
 };
 
 // Frames of the scene's stone turned by settings.tiltDeg(k) about the horizontal axis at settings.axisDeg,
-// after the job's own tilt, through `camera`; the scene's threads and seed. Advances control->done() by each
+// after the job's own tilt, through `camera`; the trace's threads and seed. Advances control->done() by each
 // frame's pixels.
-TiltSeries tiltSeries(const Scene& scene, const CameraSettings& camera, int width, int height,
+TiltSeries tiltSeries(const TraceBase& trace, const CameraSettings& camera, int width, int height,
                       const AsetSettings& aset, const TiltSeriesSettings& settings,
                       RunControl* control = nullptr);
 

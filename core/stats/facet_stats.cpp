@@ -108,8 +108,7 @@ void FacetStats::setTallies(std::span<const uint64_t> values) {
     forEachTally(*this, [&](uint64_t& v) { v = values[i++]; });
 }
 
-json statsToJson(const FacetStats& s, const Stone& stone, const TraceSettings& settings,
-                 const TraceTiming& timing) {
+json statsToJson(const FacetStats& s, const Stone& stone, const json& settings, const TraceTiming& timing) {
     if (s.facets.size() != stone.facets.size())
         throw Error("statistics do not belong to stone '" + stone.name + "'");
     const uint64_t n = s.hit;
@@ -159,7 +158,7 @@ json statsToJson(const FacetStats& s, const Stone& stone, const TraceSettings& s
     }
 
     return {{"mesh", meshJson(stone)},
-            {"settings", toJson(settings)},
+            {"settings", settings},
             {"timing",
              {{"seconds", timing.seconds},
               {"photons_per_second", timing.seconds > 0 ? double(s.photons) / timing.seconds : 0.0},

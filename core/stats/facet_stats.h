@@ -11,7 +11,6 @@
 #include <nlohmann/json.hpp>
 
 #include "stone/stone.h"
-#include "trace/trace_settings.h"
 
 namespace facetlight {
 
@@ -82,8 +81,8 @@ struct TraceTiming {
     int threads = 1;
 };
 
-// The full answer of a trace (docs/stats-schema.md).
-nlohmann::json statsToJson(const FacetStats& stats, const Stone& stone, const TraceSettings& settings,
+// The full answer of a trace (docs/stats-schema.md); `settings` are the job's, as JSON.
+nlohmann::json statsToJson(const FacetStats& stats, const Stone& stone, const nlohmann::json& settings,
                            const TraceTiming& timing);
 // Adds each region's `share_stderr` and each facet's `leaving_share_stderr` (binomial standard errors over
 // `totals.hit`) to a document of statsToJson: the service sends them with the statistics, so that clients

@@ -57,15 +57,15 @@ void FireStats::setTallies(std::span<const uint64_t> values) {
     forEachTally(*this, [&](uint64_t& v) { v = values[i++]; });
 }
 
-json fireToJson(const FireStats& s, const Stone& stone, const TraceSettings& settings) {
+json fireToJson(const FireStats& s, const Stone& stone, double pupilDeg, double headConeDeg) {
     if (s.colouredByFacet.size() != stone.facets.size())
         throw Error("fire statistics do not belong to stone '" + stone.name + "'");
     const uint64_t n = s.hit;
     json fire = {{"wavelengths_nm", kFireWavelengthsNm},
                  {"red_nm", kFireWavelengthsNm[kFireRed]},
                  {"blue_nm", kFireWavelengthsNm[kFireBlue]},
-                 {"pupil_deg", settings.fire.pupilAngleDeg()},
-                 {"head_cone_deg", settings.light.headShadowDeg},
+                 {"pupil_deg", pupilDeg},
+                 {"head_cone_deg", headConeDeg},
                  {"photons", s.photons},
                  {"hit", s.hit},
                  {"pairs", s.pairs},

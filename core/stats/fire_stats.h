@@ -13,7 +13,6 @@
 
 #include "geometry/geometry.h"
 #include "stone/stone.h"
-#include "trace/trace_settings.h"
 
 namespace facetlight {
 
@@ -79,7 +78,8 @@ struct alignas(64) FireStats {
     bool operator==(const FireStats&) const = default;
 };
 
-// The `fire` member of stats.json.
-nlohmann::json fireToJson(const FireStats& stats, const Stone& stone, const TraceSettings& settings);
+// The `fire` member of stats.json: `pupilDeg` the angle the pupil spans, `headConeDeg` the head cone of the
+// light (FireSettings::pupilAngleDeg(), LightSettings::headShadowDeg).
+nlohmann::json fireToJson(const FireStats& stats, const Stone& stone, double pupilDeg, double headConeDeg);
 
 }  // namespace facetlight

@@ -4,7 +4,6 @@
 #include <sstream>
 #include <vector>
 
-#include "intersect/scene.h"
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
 #include "pictures/angular_plot.h"
@@ -16,6 +15,7 @@
 #include "render/fire_picture.h"
 #include "render/renderer.h"
 #include "render/tilt_series.h"
+#include "scene/scene.h"
 #include "trace/distributed_trace.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
@@ -83,6 +83,7 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunControl& control,
                      Communicator& comm) {
     const Scene scene(stone, settings.trace);
+    const TraceBase trace(scene, settings.trace);
     if (settings.aset) {
         if (!settings.render)
             throw Error("aset must come with a render: it is seen through the render's camera");
@@ -99,18 +100,17 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
     const int threads = settings.trace.threads;
 
     enterPhase(control, RunPhase::Tracing, localPhotons(comm, settings.trace.photons));
-    const TraceResult traced = traceDistributed(comm, scene, &control);
+    const TraceResult traced = traceDistributed(comm, trace, &control);
     // Every rank takes the same way out, so none is left waiting in a collective.
     if (anyRank(comm, traced.cancelled || control.cancelled())) throw Canceled();
     if (comm.isRoot()) {
-        result.stats = statsToJson(traced.stats, stone, settings.trace, traced.timing);
+        result.stats = traceReport(traced, stone, settings.trace);
         std::ostringstream csv;
         writeFacetCsv(csv, traced.stats, stone);
         result.statsCsv = csv.str();
         result.heatmapPng = encodePng(facetHeatmap(stone, traced.stats));
         result.heatmapLayout = toJson(heatmapLayout(stone), stone).dump();
         if (traced.fire) {
-            result.stats["fire"] = fireToJson(*traced.fire, stone, settings.trace);
             result.fireHeatmapPng = encodePng(fireHeatmap(stone, *traced.fire));
         }
     }
@@ -123,7 +123,7 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
 
     // Every rank traces its share of the map photons and builds the whole map (docs/distributed.md).
     enterPhase(control, RunPhase::PhotonMap, localPhotons(comm, r.mapPhotons));
-    FloorPhotons photons = traceFloorPhotons(comm, scene, r.mapPhotons, threads, &control);
+    FloorPhotons photons = traceFloorPhotons(comm, trace, r.mapPhotons, threads, &control);
     if (photons.cancelled || control.cancelled()) throw Canceled();
     const PhotonMap caustics(std::move(photons.caustic), threads);
     if (comm.isRoot()) {
@@ -151,7 +151,7 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
     }
     if (settings.aset) {
         // Rank 0 alone: a few view rays per pixel, far cheaper than the render.
-        const AsetView view = asetView(scene, r.camera, r.width, r.height, *settings.aset, threads,
+        const AsetView view = asetView(trace, r.camera, r.width, r.height, *settings.aset, threads,
                                        settings.trace.seed, &control);
         if (view.cancelled || control.cancelled()) throw Canceled();
         result.stats["aset"] = toJson(view, *settings.aset);
@@ -160,7 +160,7 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
     if (settings.tiltSeries) {
         const AsetSettings aset = settings.aset.value_or(AsetSettings{});
         const TiltSeries series =
-            tiltSeries(scene, r.camera, r.width, r.height, aset, *settings.tiltSeries, &control);
+            tiltSeries(trace, r.camera, r.width, r.height, aset, *settings.tiltSeries, &control);
         if (series.cancelled || control.cancelled()) throw Canceled();
         result.stats["tilt_series"] = toJson(series, *settings.tiltSeries);
         std::vector<Image> frames;

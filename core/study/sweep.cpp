@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "cuts/facet_design.h"
-#include "intersect/scene.h"
+#include "scene/scene.h"
 #include "stats/fire_stats.h"
 #include "study/study.h"
 #include "trace/photon_tracer.h"
@@ -322,13 +322,13 @@ SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPoin
                     TraceSettings settings = p.trace;
                     settings.threads = inner;
                     const Scene scene(*stone, settings);
-                    TraceResult traced = trace(scene, &control);
+                    TraceResult traced = trace(TraceBase(scene, settings), &control);
                     if (traced.cancelled) return uint64_t(0);
-                    nlohmann::json stats = statsToJson(traced.stats, *stone, p.trace, traced.timing);
+                    nlohmann::json stats = traceReport(traced, *stone, p.trace);
                     p.totals = std::move(stats["totals"]);
                     p.proportions = std::move(stats["mesh"]["proportions"]);
                     if (traced.fire) {
-                        const nlohmann::json fire = fireToJson(*traced.fire, *stone, p.trace);
+                        const nlohmann::json& fire = stats.at("fire");
                         p.fire = nlohmann::json::object();
                         for (const std::string& f : sweepFireFigureNames())
                             for (const std::string& key : {f, f + "_stderr"}) p.fire[key] = fire.at(key);

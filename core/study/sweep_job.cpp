@@ -1,8 +1,8 @@
 #include "study/sweep_job.h"
 
 #include "cuts/cut_library.h"
+#include "image/image.h"
 #include "io/obj_writer.h"
-#include "pictures/image.h"
 #include "study/optimizer.h"
 #include "study/study.h"
 #include "study/sweep_pictures.h"

@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "settings/settings_schema.h"
 #include "study/sweep.h"
-#include "util/settings_schema.h"
 
 namespace facetlight {
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "pictures/image.h"
+#include "image/image.h"
 #include "study/sweep.h"
 
 namespace facetlight {

@@ -10,15 +10,16 @@ uint64_t localPhotons(const Communicator& comm, uint64_t photons) {
     return std::min(blocks.end * kPhotonBlock, photons) - std::min(blocks.begin * kPhotonBlock, photons);
 }
 
-TraceResult traceDistributed(Communicator& comm, const Scene& scene, RunControl* control) {
+TraceResult traceDistributed(Communicator& comm, const TraceBase& trace, RunControl* control) {
     const auto start = std::chrono::steady_clock::now();
-    const TraceSettings& settings = scene.settings();
-    TraceResult result{FacetStats(scene.stone().facets.size()), {0, settings.threads}, false, std::nullopt};
+    const TraceSettings& settings = trace.settings();
+    const size_t facets = trace.scene().stone().facets.size();
+    TraceResult result{FacetStats(facets), {0, settings.threads}, false, std::nullopt};
     const IndexRange blocks = partition(blockCount(settings.photons), comm.rank(), comm.size());
-    if (settings.fire.enabled) result.fire = FireStats(scene.stone().facets.size());
+    if (settings.fire.enabled) result.fire = FireStats(facets);
     FireStats* fire = result.fire ? &*result.fire : nullptr;
     const bool finished =
-        traceBlocks(scene, blocks.begin, blocks.end, settings.threads, result.stats, control, fire);
+        traceBlocks(trace, blocks.begin, blocks.end, settings.threads, result.stats, control, fire);
 
     // The fire tallies follow the trace's; the last element counts cancelled ranks, so a cancel anywhere is
     // seen on rank 0.

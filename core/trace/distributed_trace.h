@@ -9,7 +9,7 @@ namespace facetlight {
 
 // Rank 0 gets the whole job's statistics; other ranks keep their own share. `cancelled` is true on rank 0
 // when any rank was cancelled. control->done() counts this rank's photons only.
-TraceResult traceDistributed(Communicator& comm, const Scene& scene, RunControl* control = nullptr);
+TraceResult traceDistributed(Communicator& comm, const TraceBase& trace, RunControl* control = nullptr);
 
 // The photons this rank traces (the blocks of partition(blockCount(photons), rank, size)).
 uint64_t localPhotons(const Communicator& comm, uint64_t photons);

@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "trace/detail/photon_walker.h"
+#include "trace/photon_walker.h"
 
 namespace facetlight {
 namespace {
@@ -15,14 +15,14 @@ using BandExit = PhotonWalker::BandExit;
 // The fire tallies of photons whose bands have been walked.
 class FireTally {
   public:
-    FireTally(const Scene& s, FireStats& stats)
-        : s_(s),
+    FireTally(const TraceBase& t, FireStats& stats)
+        : t_(t),
           st_(stats),
-          up_(s.up()),
-          cosHeadCone_(s.settings().light.headShadowDeg > 0
-                           ? std::cos(radians(s.settings().light.headShadowDeg))
+          up_(t.scene().up()),
+          cosHeadCone_(t.scene().lightSettings().headShadowDeg > 0
+                           ? std::cos(radians(t.scene().lightSettings().headShadowDeg))
                            : 2.0),
-          pupil_(uint64_t(s.settings().fire.pupilAngleDeg() * kSeparationScale + 0.5)) {}
+          pupil_(uint64_t(t.settings().fire.pupilAngleDeg() * kSeparationScale + 0.5)) {}
 
     // Tallies one photon, band k of which went as bands[k].
     void add(std::span<const BandExit, kFireBands> bands) {
@@ -60,12 +60,10 @@ class FireTally {
   private:
     // Out through table or crown into the upper hemisphere.
     bool upward(const BandExit& b) const {
-        if (b.outcome != PhotonOutcome::Exited) return false;
-        const Region r = s_.stone().facets[b.facet].region;
-        return (r == Region::Table || r == Region::Crown) && dot(b.dir, Vec3f(up_)) > 0;
+        return b.outcome == PhotonOutcome::Exited && t_.crownSide(b.facet) && dot(b.dir, Vec3f(up_)) > 0;
     }
 
-    const Scene& s_;
+    const TraceBase& t_;
     FireStats& st_;
     const Vec3 up_;
     const double cosHeadCone_;  // 2: no cone
@@ -77,27 +75,28 @@ class FireTally {
 std::array<float, kFireBands> bandIndices(const Scene& scene) {
     std::array<float, kFireBands> bands;
     for (int k = 0; k < kFireBands; ++k)
-        bands[k] = float(scene.index(scene.dispersive() ? kFireWavelengthsNm[k] : Material::kSodiumD));
+        bands[k] =
+            float(scene.refractiveIndex(scene.dispersive() ? kFireWavelengthsNm[k] : Material::kSodiumD));
     return bands;
 }
 
 }  // namespace
 
-void traceFire(const Scene& scene, uint64_t begin, uint64_t end, FireStats& stats) {
+void traceFire(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats) {
     thread_local std::vector<BandExit> exits;  // the block's, sized once per thread
     exits.resize((end - begin) * kFireBands);
-    PhotonWalker::blockBands(scene, begin, end, bandIndices(scene), exits);
-    FireTally tally(scene, stats);
+    PhotonWalker::blockBands(trace, begin, end, bandIndices(trace.scene()), exits);
+    FireTally tally(trace, stats);
     for (size_t i = 0; i < end - begin; ++i)
         tally.add(std::span<const BandExit, kFireBands>(&exits[i * kFireBands], kFireBands));
 }
 
-void traceFirePhotonByPhoton(const Scene& scene, uint64_t begin, uint64_t end, FireStats& stats) {
-    const std::array<float, kFireBands> bands = bandIndices(scene);
-    FireTally tally(scene, stats);
+void traceFirePhotonByPhoton(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats) {
+    const std::array<float, kFireBands> bands = bandIndices(trace.scene());
+    FireTally tally(trace, stats);
     std::array<BandExit, kFireBands> exits;
     for (uint64_t i = begin; i < end; ++i) {
-        PhotonWalker::walkBands(scene, i, bands, exits);
+        PhotonWalker::walkBands(trace, i, bands, exits);
         tally.add(exits);
     }
 }

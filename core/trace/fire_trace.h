@@ -5,15 +5,15 @@
 // tallies are integers, so a fire trace gives the same bits for any thread or rank count.
 #include <cstdint>
 
-#include "intersect/scene.h"
 #include "stats/fire_stats.h"
+#include "trace/trace_base.h"
 
 namespace facetlight {
 
 // Adds photons [begin, end) of the job to `stats` (sized for the stone's facets). A convex stone's bands
 // are walked a packet at a time, one (photon, band) per SIMD lane.
-void traceFire(const Scene& scene, uint64_t begin, uint64_t end, FireStats& stats);
+void traceFire(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats);
 // The same with each photon's bands walked one at a time: the reference traceFire is tested against.
-void traceFirePhotonByPhoton(const Scene& scene, uint64_t begin, uint64_t end, FireStats& stats);
+void traceFirePhotonByPhoton(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats);
 
 }  // namespace facetlight

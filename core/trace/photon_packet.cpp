@@ -8,15 +8,15 @@
 #include <algorithm>
 #include <bit>
 
-#include "trace/detail/photon_walker.h"
+#include "trace/photon_walker.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "trace/photon_packet.cpp"
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 
 #include "hwy/highway.h"
-#include "intersect/detail/convex_search-inl.h"
-#include "util/detail/lanes-inl.h"
+#include "intersect/convex_search-inl.h"
+#include "util/lanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace facetlight {
@@ -195,13 +195,13 @@ HWY_INLINE void enterBeam(const Packets& s, const BeamStart& b, Floats n, uint64
     forEachLane(reflects, [&](int k) {
         const uint32_t f = b.hit.facet[k];
         visit.lane(firstId + k * idStep)
-            .reflectedAtEntry(f, b.hit.p(k), PhotonWalker::reflectOff(d, s.normal[f], b.hit.cosI[k]));
+            .reflectedAtEntry(f, b.hit.p(k), reflectOff(d, s.normal[f], b.hit.cosI[k]));
     });
     forEachLane(hitBits & ~reflects, [&](int k) {
         const uint32_t f = b.hit.facet[k];
         visit.lane(firstId + k * idStep).entered(f);
-        started.put(k, b.hit.p(k), PhotonWalker::refractIn(d, s.normal[f], etas[k], b.hit.cosI[k], cosT[k]),
-                    index[k], state[k], firstId + k * idStep);
+        started.put(k, b.hit.p(k), refractIn(d, s.normal[f], etas[k], b.hit.cosI[k], cosT[k]), index[k],
+                    state[k], firstId + k * idStep);
     });
 }
 
@@ -215,7 +215,7 @@ void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end,
         int k = 0;
         for (uint64_t i = first; i < first + count; ++i) {
             PhotonWalker::Photon ph;
-            if (PhotonWalker::start(s.scene, s.convex, i, tally, ph))
+            if (PhotonWalker::start(s.trace, s.convex, i, tally, ph))
                 started.put(k++, ph.p, ph.d, ph.n, ph.rng.state(), uint32_t(i - begin));
         }
         return;
@@ -251,8 +251,7 @@ void stepPacket(const Packets& s, Packet& lanes, Visitor& visit) {
         const uint32_t f = hit.facet[k];
         const Vec3f d{lanes.dx[k], lanes.dy[k], lanes.dz[k]};
         visit.lane(lanes.id[k])
-            .exited(f, hit.p(k),
-                    PhotonWalker::refractOut(d, s.normal[f], lanes.n[k], hit.cosI[k], hit.cosT[k]),
+            .exited(f, hit.p(k), refractOut(d, s.normal[f], lanes.n[k], hit.cosI[k], hit.cosT[k]),
                     lanes.bounces[k]);
     });
 
@@ -343,7 +342,7 @@ void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_
             for (uint64_t i = first; i < next; ++i) {
                 const uint32_t id = firstId + uint32_t(i - first) * count;
                 PhotonWalker::Photon ph;
-                if (PhotonWalker::startBand(s.scene, s.convex, i, bands[band], visit.lane(id), ph))
+                if (PhotonWalker::startBand(s.trace, s.convex, i, bands[band], visit.lane(id), ph))
                     started.put(k++, ph.p, ph.d, ph.n, ph.rng.state(), id);
             }
         }
@@ -355,12 +354,12 @@ void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_
 // Highway's one-lane fallback (x86 CPUs without SSE4): one photon at a time.
 void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
                  PhotonWalker::Tally& tally) {
-    for (uint64_t i = begin; i < end; ++i) PhotonWalker::walk(s.scene, s.convex, i, tally);
+    for (uint64_t i = begin; i < end; ++i) PhotonWalker::walk(s.trace, s.convex, i, tally);
 }
 void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
                      std::span<const float> bands, std::span<PhotonWalker::BandExit> exits) {
     for (uint64_t i = begin; i < end; ++i)
-        PhotonWalker::walkBands(s.scene, s.convex, i, bands,
+        PhotonWalker::walkBands(s.trace, s.convex, i, bands,
                                 exits.subspan((i - begin) * bands.size(), bands.size()));
 }
 #endif
@@ -375,16 +374,18 @@ namespace facetlight {
 HWY_EXPORT(walkPackets);
 HWY_EXPORT(walkBandPackets);
 
-PhotonWalker::PacketScene PhotonWalker::packetScene(const Scene& s) {
-    return {s,         *s.convex_,    s.beam_.get(),  s.light_,         s.material_,
-            s.normal_, s.fixedIndex_, s.dispersive(), s.settings_.seed, uint32_t(s.settings_.maxBounces)};
+PhotonWalker::PacketScene PhotonWalker::packetScene(const TraceBase& t) {
+    const Scene& s = t.scene();
+    return {
+        t,           *s.convex(),    s.beamEntry(),  s.light(),         s.material(),
+        s.normals(), s.fixedIndex(), s.dispersive(), t.settings().seed, uint32_t(t.settings().maxBounces)};
 }
 
-void PhotonWalker::packets(const Scene& s, uint64_t begin, uint64_t end, Tally& tally) {
+void PhotonWalker::packets(const TraceBase& s, uint64_t begin, uint64_t end, Tally& tally) {
     HWY_DYNAMIC_DISPATCH(walkPackets)(packetScene(s), begin, end, tally);
 }
 
-void PhotonWalker::bandPackets(const Scene& s, uint64_t begin, uint64_t end, std::span<const float> bands,
+void PhotonWalker::bandPackets(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const float> bands,
                                std::span<BandExit> exits) {
     HWY_DYNAMIC_DISPATCH(walkBandPackets)(packetScene(s), begin, end, bands, exits);
 }

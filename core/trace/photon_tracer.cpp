@@ -3,22 +3,22 @@
 #include <algorithm>
 #include <chrono>
 
-#include "trace/detail/photon_walker.h"
 #include "trace/fire_trace.h"
+#include "trace/photon_walker.h"
 #include "util/parallel.h"
 
 namespace facetlight {
 
-void tracePhoton(const Scene& scene, uint64_t index, PhotonPath& out) {
-    PhotonWalker::path(scene, index, out);
+void tracePhoton(const TraceBase& trace, uint64_t index, PhotonPath& out) {
+    PhotonWalker::path(trace, index, out);
 }
 
-bool traceBlocks(const Scene& scene, uint64_t firstBlock, uint64_t lastBlock, int threads, FacetStats& stats,
-                 RunControl* control, FireStats* fire) {
-    const uint64_t photons = scene.settings().photons;
+bool traceBlocks(const TraceBase& trace, uint64_t firstBlock, uint64_t lastBlock, int threads,
+                 FacetStats& stats, RunControl* control, FireStats* fire) {
+    const uint64_t photons = trace.settings().photons;
     lastBlock = std::min(lastBlock, blockCount(photons));
     if (firstBlock >= lastBlock) return true;
-    const size_t facets = scene.stone().facets.size();
+    const size_t facets = trace.scene().stone().facets.size();
     if (stats.facets.size() != facets) stats = FacetStats(facets);
     if (fire && fire->colouredByFacet.size() != facets) *fire = FireStats(facets);
     const BlockLoop loop{firstBlock * kPhotonBlock, std::min(lastBlock * kPhotonBlock, photons), kPhotonBlock,
@@ -30,8 +30,8 @@ bool traceBlocks(const Scene& scene, uint64_t firstBlock, uint64_t lastBlock, in
     const WorkerStates<Tallies> tallies =
         parallelForBlocks(loop, control, Tallies{FacetStats(facets), FireStats(fire ? facets : 0)},
                           [&](Tallies& tally, uint64_t begin, uint64_t end) {
-                              PhotonWalker::tally(scene, begin, end, tally.stats);
-                              if (fire) traceFire(scene, begin, end, tally.fire);
+                              PhotonWalker::tally(trace, begin, end, tally.stats);
+                              if (fire) traceFire(trace, begin, end, tally.fire);
                               return end - begin;
                           });
     for (const Tallies& tally : tallies.states) {
@@ -41,12 +41,21 @@ bool traceBlocks(const Scene& scene, uint64_t firstBlock, uint64_t lastBlock, in
     return tallies.finished;
 }
 
-TraceResult trace(const Scene& scene, RunControl* control) {
-    const TraceSettings& settings = scene.settings();
-    TraceResult result{FacetStats(scene.stone().facets.size()), {0, settings.threads}, false, std::nullopt};
-    if (settings.fire.enabled) result.fire = FireStats(scene.stone().facets.size());
+nlohmann::json traceReport(const TraceResult& result, const Stone& stone, const TraceSettings& settings) {
+    nlohmann::json stats = statsToJson(result.stats, stone, toJson(settings), result.timing);
+    if (result.fire)
+        stats["fire"] =
+            fireToJson(*result.fire, stone, settings.fire.pupilAngleDeg(), settings.light.headShadowDeg);
+    return stats;
+}
+
+TraceResult trace(const TraceBase& trace, RunControl* control) {
+    const TraceSettings& settings = trace.settings();
+    const size_t facets = trace.scene().stone().facets.size();
+    TraceResult result{FacetStats(facets), {0, settings.threads}, false, std::nullopt};
+    if (settings.fire.enabled) result.fire = FireStats(facets);
     const auto start = std::chrono::steady_clock::now();
-    result.cancelled = !traceBlocks(scene, 0, blockCount(settings.photons), settings.threads, result.stats,
+    result.cancelled = !traceBlocks(trace, 0, blockCount(settings.photons), settings.threads, result.stats,
                                     control, result.fire ? &*result.fire : nullptr);
     result.timing.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -6,10 +6,12 @@
 #include <cstdint>
 #include <optional>
 
+#include <nlohmann/json.hpp>
+
 #include "geometry/ray.h"
-#include "intersect/scene.h"
 #include "stats/facet_stats.h"
 #include "stats/fire_stats.h"
+#include "trace/trace_base.h"
 #include "util/run_control.h"
 
 namespace facetlight {
@@ -27,7 +29,7 @@ struct PhotonPath {
 };
 
 // Traces photon `index` of the job exactly as a full trace would.
-void tracePhoton(const Scene& scene, uint64_t index, PhotonPath& out);
+void tracePhoton(const TraceBase& trace, uint64_t index, PhotonPath& out);
 
 // Photons are handed out in blocks of this many consecutive indices.
 constexpr uint64_t kPhotonBlock = 4096;
@@ -40,8 +42,8 @@ inline uint64_t blockCount(uint64_t photons) {
 // the same photons to *fire (trace/fire_trace.h), advancing control->done() by the photons traced. Returns
 // false when cancelled before all blocks were traced. A distributed run gives each rank a block range and
 // sums the tallies with FacetStats::merge.
-bool traceBlocks(const Scene& scene, uint64_t firstBlock, uint64_t lastBlock, int threads, FacetStats& stats,
-                 RunControl* control = nullptr, FireStats* fire = nullptr);
+bool traceBlocks(const TraceBase& trace, uint64_t firstBlock, uint64_t lastBlock, int threads,
+                 FacetStats& stats, RunControl* control = nullptr, FireStats* fire = nullptr);
 
 struct TraceResult {
     FacetStats stats;
@@ -52,8 +54,12 @@ struct TraceResult {
     std::optional<FireStats> fire;  // when settings.fire.enabled
 };
 
-// The whole job: the scene's settings.photons photons with settings.threads workers (and the fire trace when
+// stats.json of a trace (docs/stats-schema.md): the facet statistics with the job's settings, and the fire
+// trace's `fire` member when it ran.
+nlohmann::json traceReport(const TraceResult& result, const Stone& stone, const TraceSettings& settings);
+
+// The whole job: the trace's settings.photons photons with settings.threads workers (and the fire trace when
 // settings.fire.enabled).
-TraceResult trace(const Scene& scene, RunControl* control = nullptr);
+TraceResult trace(const TraceBase& trace, RunControl* control = nullptr);
 
 }  // namespace facetlight

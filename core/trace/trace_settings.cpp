@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/polygon_mesh.h"
 #include "optics/material.h"
 #include "util/error.h"
 
@@ -11,33 +10,6 @@ namespace facetlight {
 namespace {
 
 using namespace settings;
-
-const Schema<LightSettings>& lightSchema() {
-    static const Schema<LightSettings> schema({
-        choice("model", &LightSettings::model, kLightModelNames, {"--light", "Light model"}),
-        vec3("direction", &LightSettings::direction, true,
-             {"--light-direction", "Collimated: direction of travel of the light (x y z)"}),
-        number("tilt_deg", &LightSettings::tiltDeg, {.lo = -90, .hi = 90},
-               {"--tilt", "Tilt of the stone about the x axis", "degrees"}),
-        number("head_shadow_deg", &LightSettings::headShadowDeg, {.lo = 0, .hi = 90, .openHi = true},
-               {"--head-shadow", "Hemisphere: half-angle of the viewer's cone removed", "degrees"}),
-        choice("sky", &LightSettings::sky, kSkyNames,
-               {"--sky", "Hemisphere: uniform (a diffuse dome, the same radiance everywhere) or cosine "
-                         "(radiance falling as cos(theta) from the zenith)"}),
-        vec3("position", &LightSettings::position, false,
-             {"--light-position", "Point: the source position (x y z), outside the stone"}),
-    },
-    // No stone reaches beyond kMaxMeshCoordinate (a light at 1e308 "succeeded" with no photon hitting);
-    // LightModel also refuses a light too far for its stone.
-    [](const LightSettings& s, const std::string& path) {
-        const Vec3& p = s.position;
-        if (std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kMaxMeshCoordinate) {
-            const std::string field = fieldPath(path, "position");
-            throw Error(field, field + " must be finite, each coordinate within 1e9");
-        }
-    });
-    return schema;
-}
 
 const Schema<FireSettings>& fireSchema() {
     static const Schema<FireSettings> schema({
@@ -70,21 +42,23 @@ const Schema<TraceSettings>& traceSettingsSchema() {
             count("threads", &TraceSettings::threads, 1, kMaxThreads, {"--threads", "Worker threads"}),
             count("seed", &TraceSettings::seed, 0, UINT64_MAX,
                   {"--seed", "Random seed; the same seed gives the same results"}),
-            text("material", &TraceSettings::material, {"--material", materialHelp()}),
-            optionalNumber("n", &TraceSettings::n, {.lo = 1, .hi = 10, .openLo = true},
+            text("material", inherited<TraceSettings>(&TraceSettings::material),
+                 {"--material", materialHelp()}),
+            optionalNumber("n", inherited<TraceSettings>(&TraceSettings::constantIndex),
+                           {.lo = 1, .hi = 10, .openLo = true},
                            {"--n", "A constant refractive index instead of the material's"}),
-            boolean("dispersion", &TraceSettings::dispersion,
+            boolean("dispersion", inherited<TraceSettings>(&TraceSettings::dispersion),
                     {"--no-dispersion", "Trace every photon at 589.3 nm"}),
             count("max_bounces", &TraceSettings::maxBounces, 1, 100000,
                   {"--max-bounces", "Internal reflections before a photon counts as trapped"}),
-            choice("intersector", &TraceSettings::intersector, kIntersectorNames,
+            choice("intersector", inherited<TraceSettings>(&TraceSettings::intersector), kIntersectorNames,
                    {"--intersector", "Ray-stone intersection"}),
-            object("light", &TraceSettings::light, lightSchema()),
+            object("light", inherited<TraceSettings>(&TraceSettings::light), lightSettingsSchema()),
             object("fire", &TraceSettings::fire, fireSchema()),
         },
         // The material's name matters only without an `n` to override it.
         [](const TraceSettings& s, const std::string& path) {
-            if (!s.n) readChoice(s.material, fieldPath(path, "material"), materialNames());
+            if (!s.constantIndex) readChoice(s.material, fieldPath(path, "material"), materialNames());
         });
     return schema;
 }

@@ -6,7 +6,7 @@
 
 namespace facetlight {
 
-// SplitMix64's finaliser, for a uint64_t or for lanes of them (util/detail/lanes-inl.h; always inlined,
+// SplitMix64's finaliser, for a uint64_t or for lanes of them (util/lanes-inl.h; always inlined,
 // so that lanes are computed with their SIMD target's instructions).
 template <class U>
 [[gnu::always_inline]] constexpr U mix64(U z) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "geometry/halfspace.h"
+#include "support/fixtures.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
 
@@ -16,9 +17,9 @@ namespace {
 
 // 100 x 100 x 1: the sides are counted apart, so the top stands for an infinite flat surface.
 Stone wideSlab() {
-    std::vector<NamedPlane> planes{{{{0, 0, 1}, 0.5}, "top"},    {{{0, 0, -1}, 0.5}, "bottom"},
-                                   {{{1, 0, 0}, 50}, "side_1"},  {{{-1, 0, 0}, 50}, "side_2"},
-                                   {{{0, 1, 0}, 50}, "side_3"},  {{{0, -1, 0}, 50}, "side_4"}};
+    std::vector<NamedPlane> planes{{{{0, 0, 1}, 0.5}, "top"},   {{{0, 0, -1}, 0.5}, "bottom"},
+                                   {{{1, 0, 0}, 50}, "side_1"}, {{{-1, 0, 0}, 50}, "side_2"},
+                                   {{{0, 1, 0}, 50}, "side_3"}, {{{0, -1, 0}, 50}, "side_4"}};
     return Stone::build(intersectHalfSpaces(planes), "slab");
 }
 
@@ -42,13 +43,13 @@ TEST_P(SlabUnderTheSky, FirstSurfaceReflectionMatchesTheQuadrature) {
     s.photons = 4'000'000;
     s.threads = 2;
     s.seed = 11;
-    s.n = 2.4173;
+    s.constantIndex = 2.4173;
     s.dispersion = false;
     s.maxBounces = 1;  // only the first surface matters: photons that enter are done with at once
     s.light.model = LightModelKind::Hemisphere;
     s.light.sky = c.sky;
     s.light.headShadowDeg = c.headShadowDeg;
-    const TraceResult r = trace(Scene(slab, s));
+    const TraceResult r = test::traceStone(slab, s);
     const Facet* top = nullptr;
     for (const Facet& f : slab.facets)
         if (f.name == "top") top = &f;
@@ -63,7 +64,8 @@ TEST_P(SlabUnderTheSky, FirstSurfaceReflectionMatchesTheQuadrature) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Skies, SlabUnderTheSky,
-                         ::testing::Values(SkyCase{SkyKind::Uniform, 0, 0.2122}, SkyCase{SkyKind::Cosine, 0, 0.1902},
+                         ::testing::Values(SkyCase{SkyKind::Uniform, 0, 0.2122},
+                                           SkyCase{SkyKind::Cosine, 0, 0.1902},
                                            SkyCase{SkyKind::Uniform, 10, 0.2135},
                                            SkyCase{SkyKind::Cosine, 10, 0.1911}));
 

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "intersect/scene.h"
 #include "optics/material.h"
 #include "pictures/aset_picture.h"
+#include "scene/scene.h"
 #include "stone/stone.h"
 #include "support/fixtures.h"
 #include "util/error.h"
@@ -54,6 +54,7 @@ double share(const AsetView& v, AsetClass c) {
 TEST(AsetView, SlabShowsItsMirrorDirectionByFresnelAndSnell) {
     const Stone slab = box(20, 20, 1);
     const Scene scene(slab, diamond());
+    const TraceBase trace(scene, diamond());
     const double n = Material::byName("diamond").indexD();
     const struct {
         double elevation;
@@ -66,7 +67,7 @@ TEST(AsetView, SlabShowsItsMirrorDirectionByFresnelAndSnell) {
         camera.fovDeg = 2;
         AsetSettings settings;
         settings.samples = 16;
-        const AsetView view = asetView(scene, camera, 48, 48, settings, 2, 11);
+        const AsetView view = asetView(trace, camera, 48, 48, settings, 2, 11);
         ASSERT_EQ(view.stoneRays(), 48u * 48u * 16u) << "every ray meets the slab";
         const double r = reflectance(n, radians(90 - v.elevation));
         const AsetShare mirror = view.share(v.mirror);
@@ -82,10 +83,11 @@ TEST(AsetView, SlabShowsItsMirrorDirectionByFresnelAndSnell) {
 TEST(AsetView, CubeLeaksThroughItsBottom) {
     const Stone cube = box(1, 1, 1);
     const Scene scene(cube, diamond());
+    const TraceBase trace(scene, diamond());
     AsetSettings settings;
     settings.samples = 8;
     const int side = 120;
-    const AsetView view = asetView(scene, CameraSettings{}, side, side, settings, 2, 3);
+    const AsetView view = asetView(trace, CameraSettings{}, side, side, settings, 2, 3);
     const double area = std::pow(1 / (2 * 3.5 * std::tan(radians(10))), 2);
     EXPECT_NEAR(double(view.stoneRays()) / (side * side * settings.samples), area, 0.01);
     const double r = 0.1720;
@@ -97,13 +99,14 @@ TEST(AsetView, CubeLeaksThroughItsBottom) {
 
 TEST(AsetView, SameBitsForAnyThreadCount) {
     const Scene scene(test::roundBrilliant(), diamond());
+    const TraceBase trace(scene, diamond());
     AsetSettings settings;
     settings.samples = 4;
-    const AsetView one = asetView(scene, CameraSettings{}, 64, 64, settings, 1, 5);
-    const AsetView three = asetView(scene, CameraSettings{}, 64, 64, settings, 3, 5);
+    const AsetView one = asetView(trace, CameraSettings{}, 64, 64, settings, 1, 5);
+    const AsetView three = asetView(trace, CameraSettings{}, 64, 64, settings, 3, 5);
     EXPECT_EQ(one.counts, three.counts);
     EXPECT_EQ(one.totals, three.totals);
-    const AsetView reseeded = asetView(scene, CameraSettings{}, 64, 64, settings, 1, 6);
+    const AsetView reseeded = asetView(trace, CameraSettings{}, 64, 64, settings, 1, 6);
     EXPECT_NE(one.counts, reseeded.counts);
 }
 
@@ -111,22 +114,24 @@ TEST(AsetView, SameBitsForAnyThreadCount) {
 // turns bright light into head.
 TEST(AsetView, BrilliantIsMostlyLitAndTheHeadConeIsASetting) {
     const Scene scene(test::roundBrilliant(), diamond());
+    const TraceBase trace(scene, diamond());
     AsetSettings settings;
     settings.samples = 4;
-    const AsetView view = asetView(scene, CameraSettings{}, 80, 80, settings, 2, 1);
+    const AsetView view = asetView(trace, CameraSettings{}, 80, 80, settings, 2, 1);
     EXPECT_GT(share(view, AsetClass::Bright) + share(view, AsetClass::Low), 0.5);
     EXPECT_LT(share(view, AsetClass::Leakage), 0.2);
     settings.headConeDeg = 40;
-    const AsetView wide = asetView(scene, CameraSettings{}, 80, 80, settings, 2, 1);
+    const AsetView wide = asetView(trace, CameraSettings{}, 80, 80, settings, 2, 1);
     EXPECT_GT(share(wide, AsetClass::Head), share(view, AsetClass::Head) + 0.05);
     EXPECT_EQ(wide.stoneRays(), view.stoneRays());
 }
 
 TEST(AsetView, PictureHasTheViewAndALegend) {
     const Scene scene(test::roundBrilliant(), diamond());
+    const TraceBase trace(scene, diamond());
     AsetSettings settings;
     settings.samples = 2;
-    const AsetView view = asetView(scene, CameraSettings{}, 64, 64, settings, 1, 1);
+    const AsetView view = asetView(trace, CameraSettings{}, 64, 64, settings, 1, 1);
     const Image picture = asetPicture(view, settings, "title");
     EXPECT_GE(picture.width(), 64);
     EXPECT_GT(picture.height(), 64 + 5 * 16);

@@ -8,8 +8,8 @@
 #include "io/mesh_resolver.h"
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
-#include "pictures/angular_plot.h"
 #include "render/renderer.h"
+#include "stats/angular_histogram.h"
 #include "support/fixtures.h"
 #include "support/thread_communicator.h"
 #include "util/distributed.h"
@@ -33,7 +33,8 @@ constexpr uint64_t kMapPhotons = 7 * kPhotonBlock + 321;  // a partial last bloc
 TEST(DistributedFloorPhotons, BlockRangesInOrderEqualTheWholePass) {
     const TraceSettings t = smallTrace();
     const Scene scene(roundBrilliant(), t);
-    const FloorPhotons whole = traceFloorPhotons(scene, kMapPhotons, 2);
+    const TraceBase trace(scene, t);
+    const FloorPhotons whole = traceFloorPhotons(trace, kMapPhotons, 2);
     ASSERT_GT(whole.caustic.size(), 0u);
     ASSERT_GT(whole.crownExits.total, 0u);
     for (int size : {2, 3, 5}) {
@@ -43,7 +44,7 @@ TEST(DistributedFloorPhotons, BlockRangesInOrderEqualTheWholePass) {
         for (int r = 0; r < size; ++r) {
             const IndexRange blocks = partition(blockCount(kMapPhotons), r, size);
             const FloorPhotons part =
-                traceFloorPhotons(scene, kMapPhotons, blocks.begin, blocks.end, 1 + r % 2);
+                traceFloorPhotons(trace, kMapPhotons, blocks.begin, blocks.end, 1 + r % 2);
             EXPECT_FALSE(part.cancelled);
             caustic.insert(caustic.end(), part.caustic.begin(), part.caustic.end());
             std::vector<uint64_t> sum = histogram.tallies();
@@ -63,9 +64,10 @@ TEST(DistributedFloorPhotons, BlockRangesInOrderEqualTheWholePass) {
 TEST(DistributedFloorPhotons, SerialCommunicatorGivesTheWholePass) {
     const TraceSettings t = smallTrace();
     const Scene scene(roundBrilliant(), t);
-    const FloorPhotons whole = traceFloorPhotons(scene, kMapPhotons, 2);
+    const TraceBase trace(scene, t);
+    const FloorPhotons whole = traceFloorPhotons(trace, kMapPhotons, 2);
     SerialCommunicator serial;
-    const FloorPhotons viaComm = traceFloorPhotons(serial, scene, kMapPhotons, 1);
+    const FloorPhotons viaComm = traceFloorPhotons(serial, trace, kMapPhotons, 1);
     ASSERT_EQ(viaComm.caustic.size(), whole.caustic.size());
     EXPECT_EQ(
         0, std::memcmp(viaComm.caustic.data(), whole.caustic.data(), whole.caustic.size() * sizeof(Photon)));
@@ -99,7 +101,8 @@ TEST(TileShares, CoverEveryPixelOnce) {
 TEST(TileShares, RenderedApartAndPlacedEqualTheWholeRender) {
     const TraceSettings t = smallTrace();
     const Scene scene(roundBrilliant(), t);
-    FloorPhotons photons = traceFloorPhotons(scene, kMapPhotons, 2);
+    const TraceBase trace(scene, t);
+    FloorPhotons photons = traceFloorPhotons(trace, kMapPhotons, 2);
     const PhotonMap caustics(std::move(photons.caustic), 2);
     RenderSettings r;
     r.width = 53;  // tiles that do not divide the image

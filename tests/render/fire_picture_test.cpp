@@ -13,9 +13,9 @@
 #define STBI_ONLY_PNG
 #include <stb/stb_image.h>
 
-#include "intersect/scene.h"
+#include "image/image.h"
 #include "optics/spectrum.h"
-#include "pictures/image.h"
+#include "scene/scene.h"
 #include "study/result_files.h"
 #include "study/study.h"
 #include "support/fixtures.h"

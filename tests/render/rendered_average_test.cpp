@@ -7,10 +7,10 @@
 #include <cmath>
 #include <functional>
 
-#include "intersect/scene.h"
 #include "photonmap/photon_map.h"
 #include "render/camera.h"
 #include "render/renderer.h"
+#include "scene/scene.h"
 #include "support/fixtures.h"
 
 namespace facetlight {

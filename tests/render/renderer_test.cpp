@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "intersect/scene.h"
+#include "image/image.h"
 #include "io/mesh_resolver.h"
 #include "optics/spectrum.h"
 #include "photonmap/floor_photons.h"
@@ -15,7 +15,7 @@
 #include "pictures/angular_plot.h"
 #include "pictures/colormap.h"
 #include "pictures/heatmap.h"
-#include "pictures/image.h"
+#include "scene/scene.h"
 #include "study/study.h"
 #include "support/fixtures.h"
 #include "trace/photon_tracer.h"
@@ -46,7 +46,8 @@ RenderSettings smallRender() {
 RenderedImage renderWith(int threads, const RenderSettings& r) {
     const TraceSettings t = smallTrace(threads);
     const Scene scene(roundBrilliant(), t);
-    FloorPhotons photons = traceFloorPhotons(scene, r.mapPhotons, threads);
+    const TraceBase trace(scene, t);
+    FloorPhotons photons = traceFloorPhotons(trace, r.mapPhotons, threads);
     const PhotonMap caustics(std::move(photons.caustic), threads);
     return render(scene, caustics, r, threads, t.seed);
 }
@@ -88,8 +89,9 @@ TEST(Renderer, SameBitsForOneAndTwoThreads) {
 TEST(Renderer, FloorPhotonsDoNotDependOnThreads) {
     const TraceSettings t = smallTrace(1);
     const Scene scene(roundBrilliant(), t);
-    const FloorPhotons a = traceFloorPhotons(scene, 30'000, 1);
-    const FloorPhotons b = traceFloorPhotons(scene, 30'000, 2);
+    const TraceBase trace(scene, t);
+    const FloorPhotons a = traceFloorPhotons(trace, 30'000, 1);
+    const FloorPhotons b = traceFloorPhotons(trace, 30'000, 2);
     ASSERT_EQ(a.caustic.size(), b.caustic.size());
     EXPECT_GT(a.caustic.size(), 0u);
     EXPECT_EQ(0, std::memcmp(a.caustic.data(), b.caustic.data(), a.caustic.size() * sizeof(Photon)));
@@ -232,7 +234,7 @@ TEST(Pictures, HeatmapFillsEachFacetWithItsShare) {
         }
     }
     // A traced stone's shares colour most of the diagrams, compared with a stone no light left.
-    const TraceResult traced = trace(Scene(stone, smallTrace(2)));
+    const TraceResult traced = test::traceStone(stone, smallTrace(2));
     const Image dark = facetHeatmap(stone, FacetStats(stone.facets.size()));
     EXPECT_GT(changedPixels(facetHeatmap(stone, traced.stats), dark).size(),
               size_t(dark.width()) * size_t(dark.height()) / 10);

@@ -7,10 +7,10 @@
 #include <memory>
 
 #include "cuts/cut_library.h"
-#include "intersect/scene.h"
 #include "pictures/aset_picture.h"
 #include "pictures/tilt_chart.h"
 #include "pictures/webp_animation.h"
+#include "scene/scene.h"
 #include "study/study.h"
 #include "support/fixtures.h"
 #include "util/error.h"
@@ -73,7 +73,8 @@ TEST(TiltSeries, SlabDoesNotSparkle) {
     AsetSettings aset;
     aset.samples = 4;
     const Scene scene(stone, diamond());
-    const TiltSeries series = tiltSeries(scene, camera, 32, 32, aset, tilt);
+    const TraceBase trace(scene, diamond());
+    const TiltSeries series = tiltSeries(trace, camera, 32, 32, aset, tilt);
     ASSERT_EQ(series.frames.size(), 7u);
     EXPECT_EQ(series.pixelPairs, 6u * 32 * 32);
     EXPECT_EQ(series.switched, 0u);
@@ -87,7 +88,8 @@ TEST(TiltSeries, BrilliantSparkles) {
     AsetSettings aset;
     aset.samples = 2;
     const Scene scene(test::roundBrilliant(), diamond());
-    const TiltSeries series = tiltSeries(scene, CameraSettings{}, 64, 64, aset, tilt);
+    const TraceBase trace(scene, diamond());
+    const TiltSeries series = tiltSeries(trace, CameraSettings{}, 64, 64, aset, tilt);
     ASSERT_EQ(series.frames.size(), 5u);
     EXPECT_EQ(series.frames.front().tiltDeg, -2);
     EXPECT_GT(series.scintillation().share, 0.02);
@@ -123,11 +125,13 @@ TEST(TiltSeries, TheAxisTurnsWithTheStone) {
     const Stone oval = Stone::build(mesh, "oval", raw), ovalTurned = Stone::build(turned, "turned oval", raw);
     const CameraSettings camera{.distance = 200, .fovDeg = 0.45};
     const AsetSettings aset{.samples = 4};
-    const TiltSeriesSettings aboutX{.maxDeg = 8, .stepDeg = 4}, aboutY{.maxDeg = 8, .stepDeg = 4, .axisDeg = 90};
+    const TiltSeriesSettings aboutX{.maxDeg = 8, .stepDeg = 4},
+        aboutY{.maxDeg = 8, .stepDeg = 4, .axisDeg = 90};
     const Scene scene(oval, diamond()), turnedScene(ovalTurned, diamond());
-    const TiltSeries a = tiltSeries(scene, camera, 96, 96, aset, aboutX);
-    const TiltSeries b = tiltSeries(turnedScene, camera, 96, 96, aset, aboutY);
-    const TiltSeries wrong = tiltSeries(turnedScene, camera, 96, 96, aset, aboutX);
+    const TraceBase trace(scene, diamond()), turnedTrace(turnedScene, diamond());
+    const TiltSeries a = tiltSeries(trace, camera, 96, 96, aset, aboutX);
+    const TiltSeries b = tiltSeries(turnedTrace, camera, 96, 96, aset, aboutY);
+    const TiltSeries wrong = tiltSeries(turnedTrace, camera, 96, 96, aset, aboutX);
     ASSERT_EQ(a.frames.size(), 5u);
     ASSERT_EQ(b.frames.size(), 5u);
     EXPECT_EQ(disagreements(a, b), 0);

@@ -7,7 +7,7 @@
 #include <functional>
 #include <mutex>
 
-#include "intersect/scene.h"
+#include "scene/scene.h"
 #include "stats/fire_stats.h"
 #include "study/study.h"
 #include "trace/photon_tracer.h"
@@ -118,9 +118,9 @@ TEST(Sweep, PointEqualsSingleTrace) {
     settings.light.tiltDeg = 10;
     settings.threads = 1;
     const Scene scene(stone, settings);
-    const TraceResult alone = trace(scene);
+    const TraceResult alone = trace(TraceBase(scene, settings));
     EXPECT_TRUE(alone.stats == p.stats);
-    EXPECT_EQ(statsToJson(alone.stats, stone, settings, alone.timing)["totals"], p.totals);
+    EXPECT_EQ(traceReport(alone, stone, settings)["totals"], p.totals);
     EXPECT_FALSE(result.points[2].stats == p.stats);  // the tilt changes the answer
 }
 
@@ -239,9 +239,9 @@ TEST(Sweep, FireFiguresAtEveryPointAndResumed) {
     TraceSettings settings = spec.trace;
     settings.threads = 1;
     const Scene scene(stone, settings);
-    const TraceResult alone = trace(scene);
+    const TraceResult alone = trace(TraceBase(scene, settings));
     ASSERT_TRUE(alone.fire);
-    const nlohmann::json fire = fireToJson(*alone.fire, stone, settings);
+    const nlohmann::json fire = traceReport(alone, stone, settings).at("fire");
     for (const std::string& f : sweepFireFigureNames()) {
         EXPECT_EQ(p.figure(f), fire[f].get<double>()) << f;
         EXPECT_EQ(p.stderrOf(f), fire[f + "_stderr"].get<double>()) << f;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "io/mesh_io.h"
+#include "support/fixtures.h"
 #include "trace/distributed_trace.h"
 #include "util/error.h"
 
@@ -43,9 +44,10 @@ TEST(Partition, CoversTheRangeInOrderWithBalancedParts) {
 TEST(FacetStatsTallies, RoundTripAndSumLikeMerge) {
     const Stone stone = loadStone(kData + "brilliant.asc");
     const Scene scene(stone, smallTrace());
+    const TraceBase trace(scene, smallTrace());
     FacetStats a(stone.facets.size()), b(stone.facets.size());
-    traceBlocks(scene, 0, 2, 1, a);
-    traceBlocks(scene, 2, 6, 1, b);
+    traceBlocks(trace, 0, 2, 1, a);
+    traceBlocks(trace, 2, 6, 1, b);
     ASSERT_GT(a.exited, 0u);
 
     FacetStats copy(stone.facets.size());
@@ -68,15 +70,16 @@ TEST(FacetStatsTallies, RoundTripAndSumLikeMerge) {
 TEST(DistributedTrace, RankSharesSumToTheWholeTrace) {
     const Stone stone = loadStone(kData + "brilliant.asc");
     const TraceSettings settings = smallTrace();
-    const TraceResult whole = trace(Scene(stone, settings));
+    const TraceResult whole = test::traceStone(stone, settings);
     for (int size : {2, 3, 4}) {
         const Scene scene(stone, settings);
+        const TraceBase trace(scene, settings);
         FacetStats sum(stone.facets.size());
         uint64_t photons = 0;
         for (int r = 0; r < size; ++r) {
             const IndexRange blocks = partition(blockCount(settings.photons), r, size);
             FacetStats share(stone.facets.size());
-            traceBlocks(scene, blocks.begin, blocks.end, 1 + r % 2, share);
+            traceBlocks(trace, blocks.begin, blocks.end, 1 + r % 2, share);
             sum.merge(share);
             photons += share.photons;
         }
@@ -88,8 +91,9 @@ TEST(DistributedTrace, RankSharesSumToTheWholeTrace) {
 TEST(DistributedTrace, SerialCommunicatorGivesTheWholeTrace) {
     const Stone stone = loadStone(kData + "brilliant.asc");
     SerialCommunicator comm;
-    const TraceResult result = traceDistributed(comm, Scene(stone, smallTrace()));
-    EXPECT_EQ(result.stats, trace(Scene(stone, smallTrace())).stats);
+    const Scene scene(stone, smallTrace());
+    const TraceResult result = traceDistributed(comm, TraceBase(scene, smallTrace()));
+    EXPECT_EQ(result.stats, test::traceStone(stone, smallTrace()).stats);
     EXPECT_FALSE(result.cancelled);
     EXPECT_EQ(localPhotons(comm, smallTrace().photons), smallTrace().photons);
 }

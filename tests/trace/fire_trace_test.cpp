@@ -66,8 +66,8 @@ TraceSettings brilliantTrace() {
 }
 
 json fireJson(const Stone& stone, const TraceSettings& settings) {
-    const TraceResult r = trace(Scene(stone, settings));
-    return fireToJson(*r.fire, stone, settings);
+    const TraceResult r = test::traceStone(stone, settings);
+    return traceReport(r, stone, settings).at("fire");
 }
 
 }  // namespace
@@ -75,8 +75,8 @@ json fireJson(const Stone& stone, const TraceSettings& settings) {
 TEST(FireTrace, PrismSeparationMatchesTheDeviationFormulas) {
     const Stone stone = prism();
     const TraceSettings settings = prismTrace();
-    const TraceResult r = trace(Scene(stone, settings));
-    const json fire = fireToJson(*r.fire, stone, settings);
+    const TraceResult r = test::traceStone(stone, settings);
+    const json fire = traceReport(r, stone, settings).at("fire");
     ASSERT_GT(r.fire->pairs, settings.photons / 4);
 
     const Material bk7 = Material::byName("bk7");
@@ -109,17 +109,17 @@ TEST(FireTrace, PrismSeparationMatchesTheDeviationFormulas) {
 TEST(FireTrace, ConstantIndexGivesZeroFireExactly) {
     const Stone& stone = roundBrilliant();
     TraceSettings constant = brilliantTrace();
-    constant.n = 2.4173;
+    constant.constantIndex = 2.4173;
     TraceSettings sodium = brilliantTrace();
     sodium.dispersion = false;
     for (const TraceSettings& settings : {constant, sodium}) {
-        const FireStats fire = *trace(Scene(stone, settings)).fire;
+        const FireStats fire = *test::traceStone(stone, settings).fire;
         EXPECT_GT(fire.pairs, 100u);
         EXPECT_EQ(fire.split, 0u);
         EXPECT_EQ(fire.separationSum, 0u);
         EXPECT_EQ(fire.coloured, 0u);
         EXPECT_EQ(fire.crownReturn[kFireRed], fire.crownReturn[kFireBlue]);
-        const json j = fireToJson(fire, stone, settings);
+        const json j = fireToJson(fire, stone, settings.fire.pupilAngleDeg(), settings.light.headShadowDeg);
         EXPECT_EQ(j["mean_separation_deg"].get<double>(), 0.0);
         EXPECT_EQ(j["coloured_return_weighted"].get<double>(), 0.0);
     }
@@ -128,7 +128,7 @@ TEST(FireTrace, ConstantIndexGivesZeroFireExactly) {
 TEST(FireTrace, DiamondShowsFireAndTheFiguresAddUp) {
     const Stone& stone = roundBrilliant();
     const TraceSettings settings = brilliantTrace();
-    const TraceResult r = trace(Scene(stone, settings));
+    const TraceResult r = test::traceStone(stone, settings);
     const FireStats& fire = *r.fire;
     EXPECT_EQ(fire.photons, settings.photons);
     EXPECT_EQ(fire.hit, r.stats.hit);  // whether a photon hits does not depend on its wavelength
@@ -140,7 +140,7 @@ TEST(FireTrace, DiamondShowsFireAndTheFiguresAddUp) {
     for (uint64_t v : fire.colouredByFacet) byFacet += v;
     EXPECT_EQ(histogram, fire.pairs);
     EXPECT_EQ(byFacet, fire.coloured);
-    const json j = fireToJson(fire, stone, settings);
+    const json j = fireToJson(fire, stone, settings.fire.pupilAngleDeg(), settings.light.headShadowDeg);
     EXPECT_GT(j["mean_separation_deg"].get<double>(), 0.1);
     EXPECT_GT(j["mean_separation_deg_stderr"].get<double>(), 0.0);
     EXPECT_NEAR(j["pupil_deg"].get<double>(), 0.9167, 1e-4);  // 2 atan(2 / 250)
@@ -153,15 +153,16 @@ TEST(FireTrace, SameBitsForAnyThreadCountAndBlockSplit) {
     const Stone& stone = roundBrilliant();
     TraceSettings one = brilliantTrace(), two = brilliantTrace();
     two.threads = 2;
-    const TraceResult a = trace(Scene(stone, one)), b = trace(Scene(stone, two));
+    const TraceResult a = test::traceStone(stone, one), b = test::traceStone(stone, two);
     EXPECT_EQ(*a.fire, *b.fire);
-    EXPECT_EQ(fireToJson(*a.fire, stone, one).dump(), fireToJson(*b.fire, stone, two).dump());
+    EXPECT_EQ(traceReport(a, stone, one).at("fire").dump(), traceReport(b, stone, two).at("fire").dump());
 
     const Scene scene(stone, one);
+    const TraceBase trace(scene, one);
     FacetStats stats, statsRest;
     FireStats first, rest;
-    traceBlocks(scene, 0, 1, 1, stats, nullptr, &first);
-    traceBlocks(scene, 1, 10, 3, statsRest, nullptr, &rest);
+    traceBlocks(trace, 0, 1, 1, stats, nullptr, &first);
+    traceBlocks(trace, 1, 10, 3, statsRest, nullptr, &rest);
     FireStats summed(stone.facets.size());
     summed.setTallies(first.tallies());
     summed.merge(rest);
@@ -172,8 +173,8 @@ TEST(FireTrace, LeavesThePlainTallyAsItWas) {
     const Stone& stone = roundBrilliant();
     TraceSettings plain = brilliantTrace();
     plain.fire.enabled = false;
-    const TraceResult without = trace(Scene(stone, plain));
-    const TraceResult with = trace(Scene(stone, brilliantTrace()));
+    const TraceResult without = test::traceStone(stone, plain);
+    const TraceResult with = test::traceStone(stone, brilliantTrace());
     EXPECT_FALSE(without.fire);
     EXPECT_EQ(without.stats, with.stats);
 }
@@ -209,11 +210,12 @@ TEST(FireTrace, PacketWalkReproducesTheOneByOneWalk) {
         for (const Case& c : cases) {
             SCOPED_TRACE(c.what);
             const Scene scene(c.stone, c.settings);
+            const TraceBase trace(scene, c.settings);
             const uint64_t photons = c.settings.photons;
             FacetStats stats;
             FireStats packets, reference(c.stone.facets.size());
-            traceBlocks(scene, 0, blockCount(photons), 1, stats, nullptr, &packets);
-            traceFirePhotonByPhoton(scene, 0, photons, reference);
+            traceBlocks(trace, 0, blockCount(photons), 1, stats, nullptr, &packets);
+            traceFirePhotonByPhoton(trace, 0, photons, reference);
             EXPECT_TRUE(packets == reference);
             EXPECT_EQ(packets.tallies(), reference.tallies());  // names the tallies that differ, if any
             EXPECT_GT(reference.pairs, 100u);

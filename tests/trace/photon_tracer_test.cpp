@@ -17,6 +17,7 @@
 #include "optics/fresnel.h"
 #include "optics/material.h"
 #include "stone/stone.h"
+#include "support/fixtures.h"
 #include "support/simd_targets.h"
 #include "util/error.h"
 #include "util/random.h"
@@ -131,7 +132,7 @@ TEST(PhotonTracer, DiamondSlabAtNormalIncidence) {
     const Stone stone = cube();
     TraceSettings settings = baseSettings(400'000);
     settings.threads = 2;
-    const TraceResult r = trace(Scene(stone, settings));
+    const TraceResult r = test::traceStone(stone, settings);
     ASSERT_FALSE(r.cancelled);
     const FacetStats& s = r.stats;
     expectConservation(s);
@@ -155,7 +156,7 @@ TEST(PhotonTracer, DiamondSlabAtNormalIncidence) {
     // Straight up and straight down only.
     EXPECT_EQ(s.histogram[0][0] + s.histogram[0][179], s.exited);
 
-    const json j = statsToJson(s, stone, settings, r.timing);
+    const json j = statsToJson(s, stone, toJson(settings), r.timing);
     EXPECT_NEAR(j["totals"]["crown_return_with_reflection"].get<double>(), up, 1e-12);
     EXPECT_NEAR(j["totals"]["weighted_return"].get<double>(), j["totals"]["crown_return"].get<double>(),
                 1e-6);
@@ -170,9 +171,9 @@ TEST(PhotonTracer, IdenticalForAnyThreadCount) {
     json first;
     for (int threads : {1, 2, 3}) {
         settings.threads = threads;
-        const TraceResult r = trace(Scene(stone, settings));
+        const TraceResult r = test::traceStone(stone, settings);
         expectConservation(r.stats);
-        const json j = comparable(statsToJson(r.stats, stone, settings, r.timing));
+        const json j = comparable(traceReport(r, stone, settings));
         if (threads == 1) {
             first = j;
         } else {
@@ -186,10 +187,11 @@ TEST(PhotonTracer, BlockRangesMergeToTheWholeRun) {
     const Stone stone = singleCut();
     TraceSettings settings = baseSettings(5 * kPhotonBlock + 10);
     const Scene scene(stone, settings);
+    const TraceBase trace(scene, settings);
     FacetStats whole(stone.facets.size()), a(stone.facets.size()), b(stone.facets.size());
-    ASSERT_TRUE(traceBlocks(scene, 0, blockCount(settings.photons), 1, whole));
-    ASSERT_TRUE(traceBlocks(scene, 0, 2, 2, a));
-    ASSERT_TRUE(traceBlocks(scene, 2, 100, 1, b));
+    ASSERT_TRUE(traceBlocks(trace, 0, blockCount(settings.photons), 1, whole));
+    ASSERT_TRUE(traceBlocks(trace, 0, 2, 2, a));
+    ASSERT_TRUE(traceBlocks(trace, 2, 100, 1, b));
     b.merge(a);
     EXPECT_TRUE(b == whole);
     EXPECT_EQ(whole.photons, settings.photons);
@@ -202,15 +204,15 @@ TEST(PhotonTracer, ConvexAndEmbreeAgree) {
     settings.threads = 2;
     settings.light.model = LightModelKind::Hemisphere;
     settings.intersector = IntersectorKind::Convex;
-    const TraceResult convex = trace(Scene(stone, settings));
+    const TraceResult convex = test::traceStone(stone, settings);
     settings.intersector = IntersectorKind::Embree;
     ASSERT_TRUE(Scene(stone, settings).usesEmbree());
-    const TraceResult embree = trace(Scene(stone, settings));
+    const TraceResult embree = test::traceStone(stone, settings);
     expectConservation(convex.stats);
     expectConservation(embree.stats);
     EXPECT_EQ(embree.stats.lost, 0u);
-    const json a = statsToJson(convex.stats, stone, settings, convex.timing)["totals"];
-    const json b = statsToJson(embree.stats, stone, settings, embree.timing)["totals"];
+    const json a = traceReport(convex, stone, settings)["totals"];
+    const json b = traceReport(embree, stone, settings)["totals"];
     for (const char* figure : {"crown_return", "leakage", "cone_return_45", "weighted_return"}) {
         const double se = std::hypot(a[std::string(figure) + "_stderr"].get<double>(),
                                      b[std::string(figure) + "_stderr"].get<double>());
@@ -223,9 +225,9 @@ TEST(PhotonTracer, ConvexAndEmbreeAgree) {
 namespace {
 
 // The counts a trace keeps, rebuilt from tracePhoton's path of each photon in turn.
-FacetStats tallyOfPaths(const Scene& scene) {
-    const Stone& stone = scene.stone();
-    const TraceSettings& settings = scene.settings();
+FacetStats tallyOfPaths(const TraceBase& trace) {
+    const Stone& stone = trace.scene().stone();
+    const TraceSettings& settings = trace.settings();
     const double tilt = radians(settings.light.tiltDeg);
     const Vec3f up(Vec3{0, std::sin(tilt), std::cos(tilt)});
     const ExitAngleBins exitBin;
@@ -233,7 +235,7 @@ FacetStats tallyOfPaths(const Scene& scene) {
     uint64_t bounces = 0;
     for (uint64_t i = 0; i < settings.photons; ++i) {
         PhotonPath path;
-        tracePhoton(scene, i, path);
+        tracePhoton(trace, i, path);
         ++stats.photons;
         bounces += path.bounces;
         switch (path.outcome) {
@@ -273,11 +275,12 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
         int maxBounces;
         SkyKind sky = SkyKind::Uniform;
     };
-    for (const Case& c : {Case{"collimated", LightModelKind::Collimated, false, 0, 64},
-                          Case{"collimated, tilted, dispersion", LightModelKind::Collimated, true, 20, 64},
-                          Case{"hemisphere, dispersion", LightModelKind::Hemisphere, true, 0, 64},
-                          Case{"hemisphere, cosine sky", LightModelKind::Hemisphere, false, 0, 64, SkyKind::Cosine},
-                          Case{"point, 3 bounces at most", LightModelKind::Point, false, 0, 3}}) {
+    for (const Case& c :
+         {Case{"collimated", LightModelKind::Collimated, false, 0, 64},
+          Case{"collimated, tilted, dispersion", LightModelKind::Collimated, true, 20, 64},
+          Case{"hemisphere, dispersion", LightModelKind::Hemisphere, true, 0, 64},
+          Case{"hemisphere, cosine sky", LightModelKind::Hemisphere, false, 0, 64, SkyKind::Cosine},
+          Case{"point, 3 bounces at most", LightModelKind::Point, false, 0, 3}}) {
         SCOPED_TRACE(c.what);
         TraceSettings settings = baseSettings(2 * kPhotonBlock + 1000);
         settings.light.model = c.light;
@@ -286,9 +289,10 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
         settings.dispersion = c.dispersion;
         settings.maxBounces = c.maxBounces;
         const Scene scene(stone, settings);
+        const TraceBase trace(scene, settings);
         FacetStats traced(stone.facets.size());
-        traceBlocks(scene, 0, blockCount(settings.photons), 1, traced);
-        const FacetStats paths = tallyOfPaths(scene);
+        traceBlocks(trace, 0, blockCount(settings.photons), 1, traced);
+        const FacetStats paths = tallyOfPaths(trace);
         EXPECT_EQ(paths.photons, traced.photons);
         EXPECT_EQ(paths.hit, traced.hit);
         EXPECT_EQ(paths.reflectedAtEntry, traced.reflectedAtEntry);
@@ -346,7 +350,8 @@ TEST(ConvexIntersector, SameHitsOnEveryTarget) {
             const Vec3f dir = normalize(Vec3f{draw(), draw(), draw()});
             const Vec3f beamOrigin = Vec3f{draw(), draw(), 1.0f} - beamDir * 2.0f;
             SurfaceHit leaving, entering, beamEntering;
-            const bool found[3] = {convex.leave(inside, dir, leaving), convex.enter(outside, -outside, entering),
+            const bool found[3] = {convex.leave(inside, dir, leaving),
+                                   convex.enter(outside, -outside, entering),
                                    beam.enter(beamOrigin, beamEntering)};
             const SurfaceHit* hit[3] = {&leaving, &entering, &beamEntering};
             for (int k = 0; k < 3; ++k) {
@@ -362,8 +367,8 @@ TEST(ConvexIntersector, SameHitsOnEveryTarget) {
         cast(hits);
         EXPECT_TRUE(hits == first);
     });
-    // The exits of the first 1000 rays from a plain loop: the smallest num / den over the planes with den > 0,
-    // the lowest facet on ties, 0 for a point a rounding error outside.
+    // The exits of the first 1000 rays from a plain loop: the smallest num / den over the planes with den >
+    // 0, the lowest facet on ties, 0 for a point a rounding error outside.
     Rng rng(7, 1);
     auto draw = [&] { return 1.4f * rng.uniform() - 0.7f; };
     for (int i = 0; i < 1000; ++i) {
@@ -494,13 +499,14 @@ TEST(PhotonTracer, SecondReflectionLeavesTheTableOnlyAboveTheThreshold) {
                                        {{{0, -1, 0}, 1}, "end_b"}};  // vertical light never meets the ends
         const Stone trough = Stone::build(intersectHalfSpaces(planes), "trough");
         TraceSettings settings = baseSettings(20'000);
-        settings.n = 2.4173;
+        settings.constantIndex = 2.4173;
         const Scene scene(trough, settings);
+        const TraceBase trace(scene, settings);
         int count = 0;
         exitAngleDeg = 0;
         for (uint64_t i = 0; i < settings.photons; ++i) {
             PhotonPath path;
-            tracePhoton(scene, i, path);
+            tracePhoton(trace, i, path);
             if (path.outcome != PhotonOutcome::Exited || path.bounces != 2) continue;
             if (trough.facets[path.exitFacet].region != Region::Table) continue;
             ++count;
@@ -517,9 +523,10 @@ TEST(PhotonTracer, SecondReflectionLeavesTheTableOnlyAboveTheThreshold) {
 TEST(PhotonTracer, ExitPathsLeaveThroughTheirFacet) {
     const Stone stone = singleCut();
     const Scene scene(stone, baseSettings(2000));
+    const TraceBase trace(scene, baseSettings(2000));
     for (uint64_t i = 0; i < 2000; ++i) {
         PhotonPath path;
-        tracePhoton(scene, i, path);
+        tracePhoton(trace, i, path);
         if (path.outcome != PhotonOutcome::Exited) continue;
         EXPECT_NEAR(std::sqrt(dot(path.exitDirection, path.exitDirection)), 1.0, 1e-5);
         const Facet& f = stone.facets[path.exitFacet];
@@ -537,7 +544,7 @@ TEST(PhotonTracer, LightModelsAndTiltKeepConservation) {
         settings.light.model = model;
         settings.light.tiltDeg = 20;
         settings.maxBounces = 3;
-        const TraceResult r = trace(Scene(stone, settings));
+        const TraceResult r = test::traceStone(stone, settings);
         expectConservation(r.stats);
         EXPECT_GT(r.stats.trapped, 0u) << "a bounce limit of 3 traps some photons";
         EXPECT_GT(r.stats.hit, r.stats.photons / 4) << "photons are aimed at the stone";
@@ -546,7 +553,7 @@ TEST(PhotonTracer, LightModelsAndTiltKeepConservation) {
 
 TEST(PhotonTracer, CollimatedStraightDownHitsAlmostEveryPhoton) {
     const Stone stone = singleCut();
-    const TraceResult r = trace(Scene(stone, baseSettings(20'000)));
+    const TraceResult r = test::traceStone(stone, baseSettings(20'000));
     // The disc circumscribes the octagonal girdle: cos(22.5 deg)^2 * (8 tan(22.5) / pi) of it is stone.
     const double octagonShare = 8 * std::tan(radians(22.5)) * std::pow(std::cos(radians(22.5)), 2) / kPi;
     EXPECT_NEAR(double(r.stats.hit) / double(r.stats.photons), octagonShare, 0.01);
@@ -559,7 +566,7 @@ TEST(PhotonTracer, HugeDirectionIsTheSameDirection) {
     huge.light.direction = {1e308, 1e308, -1e308};
     TraceSettings unit = huge;
     unit.light.direction = {1, 1, -1};
-    const TraceResult a = trace(Scene(stone, huge)), b = trace(Scene(stone, unit));
+    const TraceResult a = test::traceStone(stone, huge), b = test::traceStone(stone, unit);
     EXPECT_GT(a.stats.hit, 0u);
     EXPECT_EQ(a.stats.hit, b.stats.hit);
     EXPECT_EQ(a.stats.tallies(), b.stats.tallies());
@@ -574,7 +581,7 @@ TEST(PhotonTracer, FarPointLightIsRefused) {
     for (const Vec3& far : {Vec3{0, 0, 1e308}, Vec3{1e308, 1e308, 1e308}, Vec3{0, 0, 1e6}}) {
         settings.light.position = far;
         try {
-            trace(Scene(stone, settings));
+            test::traceStone(stone, settings);
             ADD_FAILURE() << "a point light at " << far.z << " was accepted";
         } catch (const Error& e) {
             EXPECT_NE(std::string(e.what()).find("light.position must lie within 10000 stone radii"),
@@ -589,7 +596,7 @@ TEST(PhotonTracer, FarPointLightIsRefused) {
         EXPECT_EQ(std::string(e.what()), "light.position must be finite, each coordinate within 1e9");
     }
     settings.light.position = {0, 0, 100};
-    EXPECT_GT(trace(Scene(stone, settings)).stats.hit, 0u);
+    EXPECT_GT(test::traceStone(stone, settings).stats.hit, 0u);
 }
 
 TEST(ExitAngleBins, MatchAcosExceptAtBinBoundaries) {
@@ -636,13 +643,13 @@ TEST(PhotonTracer, CancelStopsBeforeTheEnd) {
     const Stone stone = cube();
     RunControl control;
     control.cancel();
-    const TraceResult r = trace(Scene(stone, baseSettings(100'000)), &control);
+    const TraceResult r = test::traceStone(stone, baseSettings(100'000), &control);
     EXPECT_TRUE(r.cancelled);
     EXPECT_EQ(r.stats.photons, 0u);
     EXPECT_EQ(control.done(), 0u);
 
     RunControl progress;
-    const TraceResult full = trace(Scene(stone, baseSettings(10'000)), &progress);
+    const TraceResult full = test::traceStone(stone, baseSettings(10'000), &progress);
     EXPECT_FALSE(full.cancelled);
     EXPECT_EQ(progress.done(), 10'000u);
 }
@@ -660,7 +667,7 @@ TEST(PhotonTracer, ConvexIntersectorRefusesNonConvexRequest) {
 TEST(TraceSettings, JsonRoundTrip) {
     TraceSettings s = baseSettings(12345);
     s.threads = 3;
-    s.n = 2.0;
+    s.constantIndex = 2.0;
     s.light.model = LightModelKind::Point;
     s.light.position = {1, 2, 30};
     s.intersector = IntersectorKind::Embree;
@@ -701,8 +708,8 @@ TEST(TraceSettings, StrictJsonNamesTheField) {
 TEST(FacetStats, JsonAndCsvReport) {
     const Stone stone = cube();
     TraceSettings settings = baseSettings(10'000);
-    const TraceResult r = trace(Scene(stone, settings));
-    json j = statsToJson(r.stats, stone, settings, r.timing);
+    const TraceResult r = test::traceStone(stone, settings);
+    json j = traceReport(r, stone, settings);
     addShareStandardErrors(j);
     for (const char* key :
          {"mesh", "settings", "timing", "totals", "regions", "facets", "exit_angle_histogram"}) {

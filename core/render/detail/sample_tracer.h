@@ -7,9 +7,9 @@
 #include <array>
 #include <cmath>
 
-#include "intersect/scene.h"
 #include "optics/fresnel.h"
 #include "render/render_settings.h"
+#include "scene/scene.h"
 #include "util/random.h"
 
 namespace facetlight::detail {

@@ -1,4 +1,4 @@
-#include "util/settings_schema.h"
+#include "settings/settings_schema.h"
 
 #include <cmath>
 #include <sstream>

@@ -1,13 +1,10 @@
-#include "intersect/scene.h"
+#include "scene/scene.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "intersect/convex_intersector.h"
 #include "intersect/embree_intersector.h"
-#include "optics/fresnel.h"
-#include "trace/detail/photon_walker.h"
-#include "trace/photon_tracer.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -20,22 +17,19 @@ double smoothstep(double lo, double hi, double x) {
 
 }  // namespace
 
-Scene::Scene(const Stone& stone, const TraceSettings& settings)
+Scene::Scene(const Stone& stone, const SceneSettings& settings)
     : stone_(stone),
-      settings_(settings),
-      material_(settings.n ? Material::constant(*settings.n) : Material::byName(settings.material)),
+      material_(settings.constantIndex ? Material::constant(*settings.constantIndex)
+                                       : Material::byName(settings.material)),
+      lightSettings_(settings.light),
       light_(settings.light, stone),
       fixedIndex_(float(material_.indexD())) {
     if (stone.facets.empty()) throw Error("stone '" + stone.name + "' has no facets");
     dispersive_ = settings.dispersion && material_.dispersive();
-    for (const Facet& f : stone.facets) {
-        facetRegion_.push_back(f.region);
-        normal_.emplace_back(f.normal);
-    }
+    for (const Facet& f : stone.facets) normal_.emplace_back(f.normal);
     cosTilt_ = std::cos(radians(settings.light.tiltDeg));
     sinTilt_ = std::sin(radians(settings.light.tiltDeg));
     vertical_ = toStone({0, 0, 1});
-    up_ = Vec3f(vertical_);
     center_ = stone.bounds.center();
     const Vec3 extent = stone.bounds.extent();
     diameter_ = stone.proportions.diameter > 0 ? stone.proportions.diameter : std::max(extent.x, extent.y);
@@ -47,9 +41,6 @@ Scene::Scene(const Stone& stone, const TraceSettings& settings)
     const Vec3 toCenter = light_.sphereCenter() - lightPos_;
     pointIntensity_ = dot(toCenter, toCenter);  // irradiance 1 at the centre
     cosShadow3_ = std::pow(std::cos(radians(settings.light.headShadowDeg)), 3);
-    cosHeadShadow_ =
-        settings.light.headShadowDeg > 0 ? float(std::cos(radians(settings.light.headShadowDeg))) : 2.0f;
-    for (int c = 0; c < kConeCount; ++c) cosCone_[c] = float(std::cos(radians(kConeDegrees[c])));
 
     IntersectorKind kind = settings.intersector;
     if (kind == IntersectorKind::Auto)
@@ -61,17 +52,6 @@ Scene::Scene(const Stone& stone, const TraceSettings& settings)
         if (light_.collimated()) beam_ = std::make_unique<ConvexBeamEntry>(stone, Vec3f(light_.direction()));
     } else {
         embree_ = std::make_unique<EmbreeIntersector>(stone);
-    }
-    if (light_.collimated() && !dispersive_) {
-        // The same float operations as PhotonWalker::start, so a photon's fate is bit for bit the same.
-        const Vec3f d(light_.direction());
-        const float eta = 1.0f / fixedIndex_;
-        for (const Vec3f& normal : normal_) {
-            const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
-            const FresnelResult fr = fresnel(cosI, eta);
-            fixedEntry_.push_back({fr.reflectance, PhotonWalker::reflectOff(d, normal, cosI),
-                                   PhotonWalker::refractIn(d, normal, eta, cosI, fr.cosT)});
-        }
     }
 }
 
@@ -103,7 +83,7 @@ bool Scene::hitFloor(const Vec3& origin, const Vec3& dir, double& t) const {
 double Scene::directIrradiance(const Vec3& p, Rng& rng) const {
     const Vec3 origin = p + vertical_ * (1e-4 * diameter_);
     SurfaceHit hit;
-    switch (settings_.light.model) {
+    switch (lightSettings_.model) {
         case LightModelKind::Collimated: {
             const double cosTheta = -dot(lightDir_, vertical_);
             if (cosTheta <= 0 || enter(Vec3f(origin), Vec3f(-lightDir_), hit)) return 0;
@@ -139,13 +119,13 @@ double Scene::directIrradiance(const Vec3& p, Rng& rng) const {
 double Scene::photonPower(uint64_t count) const {
     const double n = double(std::max<uint64_t>(count, 1));
     const double r = light_.sphereRadius();
-    switch (settings_.light.model) {
+    switch (lightSettings_.model) {
         case LightModelKind::Collimated:
             return kPi * light_.discRadius() * light_.discRadius() / n;
         case LightModelKind::Hemisphere: {
             // Flux L0 pi r^2 * pi cos^2(s) through the sphere's cross-section, with L0 = 3 / (2 pi cos^3 s)
             // making the open floor's irradiance 1.
-            return 3 * kPi * r * r / (2 * std::cos(radians(settings_.light.headShadowDeg))) / n;
+            return 3 * kPi * r * r / (2 * std::cos(radians(lightSettings_.headShadowDeg))) / n;
         }
         case LightModelKind::Point: {
             const double d2 = pointIntensity_;
@@ -156,11 +136,9 @@ double Scene::photonPower(uint64_t count) const {
     return 0;
 }
 
-bool Scene::landOnFloor(const PhotonPath& path, Vec3& position) const {
-    if (path.outcome != PhotonOutcome::Exited && path.outcome != PhotonOutcome::ReflectedAtEntry)
-        return false;
-    const Vec3 o{path.exitPosition.x, path.exitPosition.y, path.exitPosition.z};
-    const Vec3 d{path.exitDirection.x, path.exitDirection.y, path.exitDirection.z};
+bool Scene::landOnFloor(const Vec3f& exitPosition, const Vec3f& exitDirection, Vec3& position) const {
+    const Vec3 o{exitPosition.x, exitPosition.y, exitPosition.z};
+    const Vec3 d{exitDirection.x, exitDirection.y, exitDirection.z};
     double t;
     if (!hitFloor(o, d, t)) return false;
     // A convex stone is never met again; another shape may catch the photon (not followed further).

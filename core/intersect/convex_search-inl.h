@@ -15,7 +15,7 @@
 
 #include "hwy/highway.h"
 #include "intersect/convex_intersector.h"
-#include "util/detail/lanes-inl.h"
+#include "util/lanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace facetlight {

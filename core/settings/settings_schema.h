@@ -121,6 +121,12 @@ class Schema {
 
 // The table rows, one per kind of field.
 
+// A member of S's base class B as a member of S, for a row of S's table: `inherited<S>(&S::field)`.
+template <class S, class B, class T>
+constexpr T S::*inherited(T B::*member) {
+    return member;
+}
+
 template <class S, class T>
 Field<S> count(std::string key, T S::*member, uint64_t lo, uint64_t hi, Doc doc) {
     static_assert(std::is_integral_v<T>);

@@ -136,7 +136,7 @@ TEST(SettingsSchema, JsonRoundTrip) {
     t.threads = 3;
     t.seed = UINT64_MAX;
     t.material = "sapphire";
-    t.n = 2.5;
+    t.constantIndex = 2.5;
     t.dispersion = false;
     t.maxBounces = 7;
     t.intersector = IntersectorKind::Embree;

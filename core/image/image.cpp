@@ -1,4 +1,4 @@
-#include "pictures/image.h"
+#include "image/image.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
 #pragma once
-// Inside the tracer (not for use outside core/): the walk of photons through a stone, shared by the
-// per-photon path and the packet walk of photon_packet.cpp.
+// The walk of photons through a stone, shared by the per-photon path, the packet walk of photon_packet.cpp
+// and the view rays of the ASET view (render/aset.cpp). It reads the world from the scene and the trace's
+// own settings and caches from the TraceBase.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include "intersect/embree_intersector.h"
 #include "optics/fresnel.h"
 #include "trace/photon_tracer.h"
+#include "trace/trace_base.h"
 #include "util/random.h"
 
 namespace facetlight {
@@ -30,16 +32,16 @@ class PhotonWalker {
 
     // Draws photon `index` and takes it to the stone; true when it is inside and has to be stepped on.
     template <class Intersector, class Visitor>
-    static bool start(const Scene& s, const Intersector& isect, uint64_t index, Visitor& visit,
+    static bool start(const TraceBase& s, const Intersector& isect, uint64_t index, Visitor& visit,
                       Photon& ph) {
-        ph.rng = Rng(s.settings_.seed, index);
+        ph.rng = Rng(s.settings().seed, index);
         ph.bounces = 0;
-        const LightRay ray = s.light_.sample(ph.rng);
+        const LightRay ray = s.scene().light().sample(ph.rng);
         float wavelength = float(Material::kSodiumD);
-        ph.n = s.fixedIndex_;
-        if (s.dispersive()) {
+        ph.n = s.scene().fixedIndex();
+        if (s.scene().dispersive()) {
             wavelength = 380.0f + 400.0f * ph.rng.uniform();
-            ph.n = float(s.material_.index(wavelength));
+            ph.n = float(s.scene().material().index(wavelength));
         }
         visit.wavelength(wavelength);
         return enter(s, isect, ray, visit, ph);
@@ -48,24 +50,24 @@ class PhotonWalker {
     // Takes a photon drawn from the light to the stone, with ph.rng and ph.n set; true when it is inside.
     // The fire trace (trace/fire_trace.cpp) enters one drawn ray at several indices of refraction.
     template <class Intersector, class Visitor>
-    static bool enter(const Scene& s, const Intersector& isect, const LightRay& ray, Visitor& visit,
+    static bool enter(const TraceBase& s, const Intersector& isect, const LightRay& ray, Visitor& visit,
                       Photon& ph) {
         Vec3f d(ray.direction), p(ray.origin);
         SurfaceHit hit;
-        if (!(s.beam_ ? s.beam_->enter(p, hit) : isect.enter(p, d, hit))) {
+        if (!(s.scene().beamEntry() ? s.scene().beamEntry()->enter(p, hit) : isect.enter(p, d, hit))) {
             visit.missed();
             return false;
         }
         p = p + d * hit.t;
-        if (!s.fixedEntry_.empty()) {
-            const Scene::FixedEntry& e = s.fixedEntry_[hit.facet];
+        if (!s.fixedEntries().empty()) {
+            const TraceBase::FixedEntry& e = s.fixedEntries()[hit.facet];
             if (ph.rng.uniform() < e.reflectance) {
                 visit.reflectedAtEntry(hit.facet, p, e.reflected);
                 return false;
             }
             d = e.refracted;
         } else {
-            const Vec3f normal = s.normal_[hit.facet];
+            const Vec3f normal = s.scene().normal(hit.facet);
             const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
             const float eta = 1.0f / ph.n;
             const FresnelResult fr = fresnel(cosI, eta);
@@ -83,14 +85,14 @@ class PhotonWalker {
 
     // The photon's next interaction inside; true while it stays inside.
     template <class Intersector, class Visitor>
-    static bool step(const Scene& s, const Intersector& isect, Visitor& visit, Photon& ph) {
+    static bool step(const TraceBase& s, const Intersector& isect, Visitor& visit, Photon& ph) {
         SurfaceHit hit;
         if (!isect.leave(ph.p, ph.d, hit)) {
             visit.lost(ph.bounces);
             return false;
         }
         const Vec3f p = ph.p + ph.d * hit.t, d = ph.d;
-        const Vec3f normal = s.normal_[hit.facet];
+        const Vec3f normal = s.scene().normal(hit.facet);
         const float cosI = std::clamp(dot(d, normal), 0.0f, 1.0f), n = ph.n;
         const FresnelResult fr = fresnel(cosI, n);
         if (!fr.totalInternal && ph.rng.uniform() >= fr.reflectance) {
@@ -100,28 +102,15 @@ class PhotonWalker {
         ph.p = p;
         ph.d = d - normal * (2 * cosI);
         visit.internalReflection(hit.facet);
-        if (++ph.bounces >= uint32_t(s.settings_.maxBounces)) {
+        if (++ph.bounces >= uint32_t(s.settings().maxBounces)) {
             visit.trapped(ph.bounces);
             return false;
         }
         return true;
     }
 
-    // A ray from outside at cos(incidence) cosI off a facet of outward normal `normal`, and into it with
-    // eta = 1 / n (Snell's law).
-    static Vec3f reflectOff(const Vec3f& d, const Vec3f& normal, float cosI) {
-        return d + normal * (2 * cosI);
-    }
-    static Vec3f refractIn(const Vec3f& d, const Vec3f& normal, float eta, float cosI, float cosT) {
-        return normalize(d * eta + normal * (eta * cosI - cosT));
-    }
-    // Out of the stone (index n) into air through a facet of outward normal `normal` (Snell's law).
-    static Vec3f refractOut(const Vec3f& d, const Vec3f& normal, float n, float cosI, float cosT) {
-        return normalize(d * n - normal * (n * cosI - cosT));
-    }
-
     template <class Intersector, class Visitor>
-    static void walk(const Scene& s, const Intersector& isect, uint64_t index, Visitor& visit) {
+    static void walk(const TraceBase& s, const Intersector& isect, uint64_t index, Visitor& visit) {
         Photon ph;
         if (start(s, isect, index, visit, ph)) {
             while (step(s, isect, visit, ph)) {
@@ -163,28 +152,28 @@ class PhotonWalker {
     // are the plain photon's (the wavelength draw skipped), so a band's draws part from another's only where
     // their choices differ.
     template <class Intersector, class Visitor>
-    static bool startBand(const Scene& s, const Intersector& isect, uint64_t index, float n, Visitor& visit,
-                          Photon& ph) {
-        ph.rng = Rng(s.settings_.seed, index);
+    static bool startBand(const TraceBase& s, const Intersector& isect, uint64_t index, float n,
+                          Visitor& visit, Photon& ph) {
+        ph.rng = Rng(s.settings().seed, index);
         ph.bounces = 0;
-        const LightRay ray = s.light_.sample(ph.rng);
-        if (s.dispersive()) ph.rng.uniform();  // start()'s wavelength
+        const LightRay ray = s.scene().light().sample(ph.rng);
+        if (s.scene().dispersive()) ph.rng.uniform();  // start()'s wavelength
         ph.n = n;
         return enter(s, isect, ray, visit, ph);
     }
 
     // Photon `index` at each index of refraction of `bands` in turn, one band at a time, into out[k] (the
     // fire trace's reference walk; bandPackets() takes the same steps).
-    static void walkBands(const Scene& s, uint64_t index, std::span<const float> bands,
+    static void walkBands(const TraceBase& s, uint64_t index, std::span<const float> bands,
                           std::span<BandExit> out) {
-        if (s.convex_) {
-            walkBands(s, *s.convex_, index, bands, out);
+        if (s.scene().convex()) {
+            walkBands(s, *s.scene().convex(), index, bands, out);
         } else {
-            walkBands(s, *s.embree_, index, bands, out);
+            walkBands(s, *s.scene().embree(), index, bands, out);
         }
     }
     template <class Intersector>
-    static void walkBands(const Scene& s, const Intersector& isect, uint64_t index,
+    static void walkBands(const TraceBase& s, const Intersector& isect, uint64_t index,
                           std::span<const float> bands, std::span<BandExit> out) {
         for (size_t k = 0; k < bands.size(); ++k) {
             Photon ph;
@@ -197,19 +186,21 @@ class PhotonWalker {
     // The bands of photons [begin, end): band k of photon i into exits[(i - begin) * bands.size() + k], as
     // walkBands() gives it. A convex stone's bands are walked a packet at a time, one (photon, band) per
     // lane.
-    static void blockBands(const Scene& s, uint64_t begin, uint64_t end, std::span<const float> bands,
+    static void blockBands(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const float> bands,
                            std::span<BandExit> exits) {
-        if (s.convex_) {
+        if (s.scene().convex()) {
             bandPackets(s, begin, end, bands, exits);
             return;
         }
         for (uint64_t i = begin; i < end; ++i)
-            walkBands(s, *s.embree_, i, bands, exits.subspan((i - begin) * bands.size(), bands.size()));
+            walkBands(s, *s.scene().embree(), i, bands,
+                      exits.subspan((i - begin) * bands.size(), bands.size()));
     }
 
-    // What the packet walk (photon_packet.cpp, compiled once per SIMD target) reads of the scene.
+    // What the packet walk (photon_packet.cpp, compiled once per SIMD target) reads of the trace and its
+    // scene.
     struct PacketScene {
-        const Scene& scene;
+        const TraceBase& trace;
         const ConvexIntersector& convex;
         const ConvexBeamEntry* beam;  // null unless the light is one collimated beam
         const LightModel& light;
@@ -222,40 +213,36 @@ class PhotonWalker {
     };
     // Photons [begin, end) of a convex stone a packet at a time, one per SIMD lane, on the CPU's best
     // target. Each photon takes exactly the steps walk() takes, so the tally has the same bits.
-    static void packets(const Scene& s, uint64_t begin, uint64_t end, Tally& t);
+    static void packets(const TraceBase& s, uint64_t begin, uint64_t end, Tally& t);
     // The packet walk of blockBands(), on a convex stone.
-    static void bandPackets(const Scene& s, uint64_t begin, uint64_t end, std::span<const float> bands,
+    static void bandPackets(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const float> bands,
                             std::span<BandExit> exits);
 
     // Photons [begin, end) into one thread's tally.
-    static void tally(const Scene& s, uint64_t begin, uint64_t end, FacetStats& stats) {
+    static void tally(const TraceBase& s, uint64_t begin, uint64_t end, FacetStats& stats) {
         Tally t{s, stats};
-        if (s.convex_) {
+        if (s.scene().convex()) {
             packets(s, begin, end, t);
         } else {
-            for (uint64_t i = begin; i < end; ++i) walk(s, *s.embree_, i, t);
+            for (uint64_t i = begin; i < end; ++i) walk(s, *s.scene().embree(), i, t);
         }
         stats.photons += end - begin;
     }
 
-    static void path(const Scene& s, uint64_t index, PhotonPath& out) {
+    static void path(const TraceBase& s, uint64_t index, PhotonPath& out) {
         out = PhotonPath{};
         Recorder r{out};
-        if (s.convex_) {
-            walk(s, *s.convex_, index, r);
+        if (s.scene().convex()) {
+            walk(s, *s.scene().convex(), index, r);
         } else {
-            walk(s, *s.embree_, index, r);
+            walk(s, *s.scene().embree(), index, r);
         }
     }
 
     struct Tally {
-        const Scene& s;
+        const TraceBase& s;
         FacetStats& st;
 
-        bool crownSide(uint32_t facet) const {
-            const Region r = s.facetRegion_[facet];
-            return r == Region::Table || r == Region::Crown;
-        }
         // The packet walk's visitor of the photon in a lane: the one tally for all.
         Tally& lane(uint32_t) { return *this; }
         void wavelength(float) {}
@@ -264,7 +251,7 @@ class PhotonWalker {
             ++st.hit;
             ++st.reflectedAtEntry;
             ++st.facets[facet].reflected;
-            st.crownReflection += crownSide(facet) && dot(dir, s.up_) > 0;
+            st.crownReflection += s.crownSide(facet) && dot(dir, s.up()) > 0;
         }
         void entered(uint32_t facet) {
             ++st.hit;
@@ -275,9 +262,9 @@ class PhotonWalker {
         void exited(uint32_t facet, const Vec3f&, const Vec3f& dir, uint32_t) {
             ++st.exited;
             ++st.facets[facet].leaving;
-            const float cosUp = std::clamp(dot(dir, s.up_), -1.0f, 1.0f);
-            const int bin = s.exitBin_(cosUp);
-            const bool crown = crownSide(facet);
+            const float cosUp = std::clamp(dot(dir, s.up()), -1.0f, 1.0f);
+            const int bin = s.exitBin()(cosUp);
+            const bool crown = s.crownSide(facet);
             ++st.histogram[0][bin];
             ++st.histogram[crown ? 1 : 2][bin];
             if (!crown || cosUp <= 0) return;
@@ -285,8 +272,8 @@ class PhotonWalker {
             const uint64_t w = uint64_t(double(cosUp) * kWeightScale + 0.5);
             st.weightSum += w;
             st.weightSquareSum += (w * w) >> 30;
-            const bool outsideHead = cosUp < s.cosHeadShadow_;
-            for (int c = 0; c < kConeCount; ++c) st.coneReturn[c] += outsideHead && cosUp >= s.cosCone_[c];
+            const bool outsideHead = cosUp < s.cosHeadShadow();
+            for (int c = 0; c < kConeCount; ++c) st.coneReturn[c] += outsideHead && cosUp >= s.cosCone()[c];
         }
         void trapped(uint32_t) { ++st.trapped; }
         void lost(uint32_t) {
@@ -297,7 +284,7 @@ class PhotonWalker {
     static_assert(kWeightScale == double(1ULL << 30), "weightSquareSum's shift assumes a 2^30 scale");
 
   private:
-    static PacketScene packetScene(const Scene& s);
+    static PacketScene packetScene(const TraceBase& s);
 
     struct Recorder {
         PhotonPath& out;

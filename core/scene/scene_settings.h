@@ -1,0 +1,26 @@
+#pragma once
+// The world a job happens in (after Tungsten: plain settings, apart from the algorithms): the stone's
+// material, the light, and how rays meet the stone. The tracer's own settings extend these
+// (trace/trace_settings.h), where every field is described once.
+#include <optional>
+#include <string>
+
+#include "optics/light_settings.h"
+#include "util/name_table.h"
+
+namespace facetlight {
+
+enum class IntersectorKind { Auto, Convex, Embree };
+inline constexpr NameTable<IntersectorKind, 3> kIntersectorNames{{{{IntersectorKind::Auto, "auto"},
+                                                                   {IntersectorKind::Convex, "convex"},
+                                                                   {IntersectorKind::Embree, "embree"}}}};
+
+struct SceneSettings {
+    std::string material = "diamond";
+    std::optional<double> constantIndex;  // a constant refractive index overriding the material's (JSON "n")
+    bool dispersion = true;               // refraction by wavelength in 380-780 nm; false: all at 589.3 nm
+    IntersectorKind intersector = IntersectorKind::Auto;
+    LightSettings light;
+};
+
+}  // namespace facetlight

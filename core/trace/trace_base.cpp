@@ -1,0 +1,30 @@
+#include "trace/trace_base.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "optics/fresnel.h"
+
+namespace facetlight {
+
+TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
+    : scene_(scene), settings_(settings), up_(scene.up()) {
+    for (const Facet& f : scene.stone().facets)
+        crownSide_.push_back(f.region == Region::Table || f.region == Region::Crown);
+    const double headShadowDeg = scene.lightSettings().headShadowDeg;
+    cosHeadShadow_ = headShadowDeg > 0 ? float(std::cos(radians(headShadowDeg))) : 2.0f;
+    for (int c = 0; c < kConeCount; ++c) cosCone_[c] = float(std::cos(radians(kConeDegrees[c])));
+    if (scene.light().collimated() && !scene.dispersive()) {
+        // The same float operations as PhotonWalker::enter, so a photon's fate is bit for bit the same.
+        const Vec3f d(scene.light().direction());
+        const float eta = 1.0f / scene.fixedIndex();
+        for (const Vec3f& normal : scene.normals()) {
+            const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
+            const FresnelResult fr = fresnel(cosI, eta);
+            fixedEntry_.push_back(
+                {fr.reflectance, reflectOff(d, normal, cosI), refractIn(d, normal, eta, cosI, fr.cosT)});
+        }
+    }
+}
+
+}  // namespace facetlight

@@ -1,0 +1,53 @@
+#pragma once
+// What the photon tracer prepares from a scene and the trace's settings before its first photon (after
+// Tungsten's TraceBase(scene, settings)): the settings go down in one straight line, the scene stays the
+// world alone. The statistics trace, the fire trace, the photon pass and the ASET view's rays share it.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/ray.h"
+#include "scene/scene.h"
+#include "stats/facet_stats.h"
+#include "trace/trace_settings.h"
+
+namespace facetlight {
+
+class TraceBase {
+  public:
+    // The scene must outlive it; it was made from the same job's scene settings.
+    TraceBase(const Scene& scene, const TraceSettings& settings);
+
+    const Scene& scene() const { return scene_; }
+    const TraceSettings& settings() const { return settings_; }
+
+    // Collimated light at one index of refraction: every photon entering through facet f meets it at the
+    // same angle, so its Fresnel reflectance and both directions are worked out once per facet. Empty for
+    // other lights and for a dispersive scene.
+    struct FixedEntry {
+        float reflectance;
+        Vec3f reflected, refracted;
+    };
+    const std::vector<FixedEntry>& fixedEntries() const { return fixedEntry_; }
+
+    // What the tallies need: whether a facet is on the crown side (table or crown), the world's vertical in
+    // the stone's frame, the exit-angle bins, cos of the head-shadow half-angle (2 without a head cone) and
+    // of each return cone.
+    bool crownSide(uint32_t facet) const { return crownSide_[facet]; }
+    const Vec3f& up() const { return up_; }
+    const ExitAngleBins& exitBin() const { return exitBin_; }
+    float cosHeadShadow() const { return cosHeadShadow_; }
+    const std::array<float, kConeCount>& cosCone() const { return cosCone_; }
+
+  private:
+    const Scene& scene_;
+    TraceSettings settings_;
+    std::vector<FixedEntry> fixedEntry_;
+    std::vector<uint8_t> crownSide_;  // 1 for table and crown facets
+    Vec3f up_;
+    ExitAngleBins exitBin_;
+    float cosHeadShadow_;
+    std::array<float, kConeCount> cosCone_;
+};
+
+}  // namespace facetlight
