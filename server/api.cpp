@@ -157,7 +157,7 @@ void logRequest(const Request& req, const Response& res) {
 
 }  // namespace
 
-Api::Api(ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
+Api::Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
          std::string readOnly)
     : results_(results), queue_(queue), catalog_(catalog), limits_(limits), readOnly_(std::move(readOnly)) {}
 

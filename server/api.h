@@ -12,7 +12,7 @@
 #include "job_store.h"
 #include "mesh_catalog.h"
 #include "request_guard.h"
-#include "result_files.h"
+#include "result_store.h"
 
 namespace facetlight::server {
 
@@ -22,7 +22,7 @@ std::string_view openApiDocument();
 class Api {
   public:
     // `readOnly`: why the store cannot be written (empty: it can); then every route that writes answers 503.
-    Api(ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
+    Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
         std::string readOnly);
     // Registers every route, the guards that run before them, the error handlers and the access log.
     void install(httplib::Server& server, bool accessLog);
@@ -44,7 +44,7 @@ class Api {
     void getResult(const httplib::Request& req, httplib::Response& res, const std::string& file,
                    const std::string& contentType);
 
-    ResultFiles& results_;
+    ResultStore& results_;
     JobQueue& queue_;
     MeshCatalog& catalog_;
     ServiceLimits limits_;

@@ -29,7 +29,7 @@ constexpr const char* kStartNotRecorded =
 
 }  // namespace
 
-JobQueue::JobQueue(JobStore& store, ResultFiles& results, StudyRunner& runner, size_t maxQueued,
+JobQueue::JobQueue(JobStore& store, ResultStore& results, StudyRunner& runner, size_t maxQueued,
                    uint64_t minFreeBytes, int cores)
     : store_(store),
       results_(results),

@@ -1,6 +1,6 @@
 #pragma once
 // The jobs table of the service's database: each job's request, state and times. Their result files are
-// ResultFiles' (result_files.h), uploaded meshes MeshStore's (mesh_store.h).
+// the ResultStore's (result_store.h), uploaded meshes MeshStore's (mesh_store.h).
 #include <cstdint>
 #include <optional>
 #include <string>
