@@ -29,7 +29,6 @@ class Api {
     static std::vector<Route> routes();
 
   private:
-    nlohmann::json statusJson(const JobRecord& job) const;
     bool refuseWhenStorageLow(httplib::Response& res) const;  // true: answered 507
     bool refuseWhenReadOnly(httplib::Response& res) const;    // true: answered 503
     nlohmann::json storageJson() const;

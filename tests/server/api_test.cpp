@@ -179,6 +179,31 @@ TEST_F(ServiceTest, HealthAndOpenApiDescribeEveryRoute) {
     EXPECT_EQ(documented, served);
 }
 
+// The page's form starts from GET /api/defaults: exactly the settings a job that leaves them out gets.
+TEST_F(ServiceTest, DefaultsAreWhatAJobThatLeavesThemOutGets) {
+    auto r = client_->Get("/api/defaults");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200);
+    const json defaults = json::parse(r->body);
+    EXPECT_EQ(defaults["threads"], 2);  // the service's cores
+    EXPECT_FALSE(defaults.contains("mesh"));
+    for (const char* part : {"render", "aset", "tilt_series", "fire_picture"})
+        EXPECT_TRUE(defaults[part].is_object()) << part;
+    const json job = {
+        {"mesh", "round_brilliant"}, {"photons", defaults["photons"]}, {"render", true},
+        {"aset", json::object()},    {"tilt_series", json::object()},  {"fire_picture", json::object()}};
+    auto s = submit(job);
+    ASSERT_TRUE(s);
+    ASSERT_EQ(s->status, 202) << s->body;
+    const json status = json::parse(s->body);
+    client_->Post("/api/jobs/" + status["id"].get<std::string>() + "/cancel");
+    json settings = status["settings"];
+    EXPECT_EQ(settings["mesh"], "round_brilliant");
+    settings.erase("mesh");
+    EXPECT_EQ(settings, defaults);
+    EXPECT_EQ(waitFinished(status["id"])["state"], "canceled");
+}
+
 TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     json job = smallJob();
     job["render"] = {{"width", 32}, {"height", 24}, {"samples", 1}, {"map_photons", 5000}};
