@@ -681,6 +681,32 @@ TEST_F(ServiceTest, QueuedAndInterruptedJobsSurviveARestart) {
     EXPECT_EQ(waitFinished(queued)["state"], "succeeded");
 }
 
+// A stored job that no longer reads as a job (a store another version wrote): it still lists with what was
+// stored, its points answer 500 with the reason, and it fails with that reason when its turn comes.
+TEST_F(ServiceTest, AStoredJobThatNoLongerReadsListsAndFailsWithTheReason) {
+    const std::string running = submitOk(longJob());
+    const std::string queued = submitOk(sweepJob(2, 1000));
+    waitState(running, "running");
+    json unreadable = status(queued)["settings"];
+    unreadable["photons"] = 0;
+    stopService();
+    {
+        Database db(dir_ / "data");
+        Statement s(db.handle(), "UPDATE jobs SET request = ? WHERE id = ?");
+        s.bind(1, unreadable.dump()).bind(2, queued);
+        s.step();
+    }
+    start();
+    const json listed = status(queued);
+    EXPECT_EQ(listed["state"], "queued");
+    EXPECT_EQ(listed["settings"], unreadable);
+    expectProblem(client_->Get("/api/jobs/" + queued + "/points"), 500);
+    client_->Post("/api/jobs/" + running + "/cancel");
+    const json failed = waitFinished(queued);
+    EXPECT_EQ(failed["state"], "failed");
+    EXPECT_NE(failed["error"].get<std::string>().find("photons"), std::string::npos) << failed.dump();
+}
+
 TEST_F(ServiceTest, SweepRunsToSuccessWithPointsAndResults) {
     json job = sweepJob(3, 4000);
     job["sweep"]["set"] = {{"crown", 34}};
