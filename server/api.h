@@ -1,6 +1,8 @@
 #pragma once
-// The HTTP face of the service: routes, validation, problem+json errors (RFC 9457), the access log. Handlers
-// only read and write the store and the queue; jobs run on the queue's worker.
+// The HTTP face of the service: the routes and their handlers, the guards before them, the error handlers and
+// the access log. Answers are written with problem.h (problem+json, RFC 9457), a job's status with
+// job_status.h, bodies read with request_body.h. Handlers only read and write the store and the queue; jobs
+// run on the queue's worker.
 #include <string>
 #include <string_view>
 #include <vector>
