@@ -37,6 +37,8 @@ nlohmann::json readJob(const std::string& path) {
 void runStudyCommand(const StudyOptions& options) {
     Communicator& comm = processCommunicator();
     StudySpec spec;
+    // The service's launcher writes the file from the job's typed spec (its canonical JSON, toJson): this
+    // process cannot share the spec, so reading it back here is the one parse it needs.
     try {
         nlohmann::json job = readJob(options.job);
         // Job files of earlier versions hold the trace settings under "trace", as scripts/same-results

@@ -5,6 +5,9 @@
 #include <iostream>
 #include <map>
 
+#include "job_status.h"
+#include "problem.h"
+#include "request_body.h"
 #include "stats/facet_stats.h"
 #include "study/result_files.h"
 #include "util/error.h"
@@ -18,146 +21,16 @@ using httplib::Request;
 using httplib::Response;
 using nlohmann::json;
 
-constexpr const char* kProblemType = "application/problem+json";
-constexpr const char* kJsonType = "application/json";
-
-std::string_view reasonPhrase(int status) {
-    switch (status) {
-        case 400:
-            return "Bad Request";
-        case 404:
-            return "Not Found";
-        case 405:
-            return "Method Not Allowed";
-        case 409:
-            return "Conflict";
-        case 411:
-            return "Length Required";
-        case 413:
-            return "Payload Too Large";
-        case 414:
-            return "URI Too Long";
-        case 415:
-            return "Unsupported Media Type";
-        case 422:
-            return "Unprocessable Content";
-        case 500:
-            return "Internal Server Error";
-        case 503:
-            return "Service Unavailable";
-        case 507:
-            return "Insufficient Storage";
-        default:
-            return status >= 500 ? "Server Error" : "Client Error";
-    }
-}
-
-void problem(Response& res, int status, const std::string& detail, const std::string& field = {}) {
-    json body = {
-        {"type", "about:blank"}, {"title", reasonPhrase(status)}, {"status", status}, {"detail", detail}};
-    if (!field.empty()) body["field"] = field;
-    res.status = status;
-    res.set_content(body.dump(), kProblemType);
-}
-
-void sendJson(Response& res, int status, const json& body) {
-    res.status = status;
-    res.set_content(body.dump(2) + "\n", kJsonType);
-}
-
-std::string mediaType(const Request& req) {
-    std::string type = req.get_header_value("Content-Type");
-    type = type.substr(0, type.find(';'));
-    while (!type.empty() && type.back() == ' ') type.pop_back();
-    for (char& c : type) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return type;
-}
-
-// The most bytes a request body may have: uploads have their own limit. The one place both the check before
-// routing (Content-Length) and the handlers' readers (BodyCollector, bytes as they arrive) take it from.
-size_t bodyLimit(const ServiceLimits& limits, const std::string& path) {
-    return path == "/api/meshes" ? limits.maxUploadBytes : limits.maxBodyBytes;
-}
-
-// Collects a request body as it arrives, stopping the read once it passes its route's limit. `read` says
-// whether every byte of the Content-Length arrived: a body cut short (the client went away, or lied) stores
-// nothing.
-class BodyCollector {
-  public:
-    BodyCollector(const ServiceLimits& limits, const Request& req) : limit_(bodyLimit(limits, req.path)) {}
-    bool operator()(const char* data, size_t n) {
-        if (bytes_.size() + n > limit_) {
-            tooLarge_ = true;
-            return false;
-        }
-        bytes_.append(data, n);
-        return true;
-    }
-    void read(const httplib::ContentReader& reader) { complete_ = reader(std::ref(*this)); }
-    void readMultipart(const httplib::ContentReader& reader, const httplib::MultipartContentHeader& header,
-                       const std::function<bool()>& wanted) {
-        complete_ = reader(header, [&](const char* data, size_t n) { return wanted() ? (*this)(data, n) : true; });
-    }
-    bool tooLarge() const { return tooLarge_; }
-    bool complete() const { return complete_; }
-    size_t limit() const { return limit_; }
-    std::string& bytes() { return bytes_; }
-
-  private:
-    size_t limit_;
-    std::string bytes_;
-    bool tooLarge_ = false;
-    bool complete_ = false;
-};
-
-// A body that stopped short of its Content-Length (the client went away, or lied): nothing is stored.
-constexpr const char* kShortBody = "the body ended before its Content-Length; nothing was stored";
-
-// A query parameter as an integer in [lo, hi]; `fallback` when absent. Throws Error naming it.
-int64_t queryInt(const Request& req, const std::string& name, int64_t fallback, int64_t lo, int64_t hi) {
-    if (!req.has_param(name)) return fallback;
-    const std::string v = req.get_param_value(name);
-    const std::string msg =
-        name + " must be an integer between " + std::to_string(lo) + " and " + std::to_string(hi);
-    if (v.empty() || v.size() > 12 || v.find_first_not_of("0123456789") != std::string::npos)
-        throw Error(name, msg);
-    const int64_t x = std::stoll(v);
-    if (x < lo || x > hi) throw Error(name, msg);
-    return x;
-}
-
-std::string jobPath(const std::string& id) {
-    return "/api/jobs/" + id;
-}
-
-json nullIfEmpty(const std::string& s) {
-    return s.empty() ? json(nullptr) : json(s);
-}
-
-// A write the store refused: the detail (with paths) goes to the log, the client reads 507 for a full disk
-// (SQLite may say only "disk I/O error": an empty disk counts too) and 503 for a failing one, without paths
-// (issue 18).
-void storageProblem(Response& res, const StorageError& e, uint64_t freeBytes) {
-    std::cerr << "facetlight-server: storage: " << e.what() << "\n";
-    res.set_header("Retry-After", "60");
-    if (e.full() || freeBytes == 0)
-        return problem(
-            res, 507,
-            "the server's storage is full: nothing was stored; try again once space is freed, e.g. by "
-            "deleting finished jobs");
-    problem(res, 503, "the server's storage is failing: nothing was stored; the server log has the details");
-}
-
 void logRequest(const Request& req, const Response& res) {
-    const std::string line = nowIso8601() + " " + req.remote_addr + " \"" + escapeForLog(req.method, 16) + " " +
-                             escapeForLog(req.path) + "\" " + std::to_string(res.status) + " " +
+    const std::string line = nowIso8601() + " " + req.remote_addr + " \"" + escapeForLog(req.method, 16) +
+                             " " + escapeForLog(req.path) + "\" " + std::to_string(res.status) + " " +
                              std::to_string(res.body.size()) + "\n";
     std::fputs(line.c_str(), stderr);
 }
 
 }  // namespace
 
-Api::Api(ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
+Api::Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
          std::string readOnly)
     : results_(results), queue_(queue), catalog_(catalog), limits_(limits), readOnly_(std::move(readOnly)) {}
 
@@ -165,6 +38,7 @@ std::vector<Route> Api::routes() {
     std::vector<Route> routes = {
         {"GET", "/healthz"},
         {"GET", "/api/openapi.json"},
+        {"GET", "/api/defaults"},
         {"GET", "/api/jobs"},
         {"POST", "/api/jobs"},
         {"GET", "/api/jobs/{id}"},
@@ -177,108 +51,6 @@ std::vector<Route> Api::routes() {
     routes.push_back({"GET", "/api/meshes"});
     routes.push_back({"POST", "/api/meshes"});
     return routes;
-}
-
-json Api::statusJson(const JobRecord& job) const {
-    const std::string self = jobPath(job.id);
-    const json& request = job.request;
-    const int requested = request.value("threads", 1);
-    json threads = {{"requested", requested}, {"cores", queue_.cores()}};
-    const int used = job.threadsUsed > 0 ? job.threadsUsed : std::min(requested, queue_.cores());
-    threads["used"] = used;
-    if (used < requested) {
-        threads["note"] = "capped at the " + std::to_string(queue_.cores()) + " cores of this machine";
-    }
-    // A study with pictures runs three phases (tracing, photon map, rendering), one without only the first, a
-    // sweep one round (or a search's rounds): `step` of `steps` and `overall` say where the whole job is, so
-    // that clients need not know the phases.
-    const bool rendered = request.contains("render") && request["render"].is_object();
-    const bool sweep = request.contains("sweep") && request["sweep"].is_object();
-    const json& sweepRequest = sweep ? request["sweep"] : json();
-    const int steps =
-        sweep      ? 1 + (sweepRequest["maximize"].is_string() ? sweepRequest.value("refine_rounds", 0) : 0)
-        : rendered ? 3
-                   : 1;
-    uint64_t pointsTotal = sweep ? 1 : 0, pointsDone = 0;
-    if (sweep)
-        for (const json& axis : sweepRequest["axes"])
-            pointsTotal *= axis.contains("values") ? axis["values"].size() : axis["choices"].size();
-    json progress = {{"phase", jobStateName(job.state)}, {"done", 0}, {"total", 0}, {"fraction", 0.0}};
-    int step = 0;
-    double overall = 0;
-    json doc = {{"id", job.id},
-                {"state", jobStateName(job.state)},
-                {"mesh", request.value("mesh", "")},
-                {"settings", request},
-                {"created_at", job.createdAt},
-                {"started_at", nullIfEmpty(job.startedAt)},
-                {"finished_at", nullIfEmpty(job.finishedAt)},
-                {"threads", threads}};
-    json links = {{"self", self}};
-    switch (job.state) {
-        case JobState::Queued:
-            if (const auto pos = queue_.queuePosition(job.id)) doc["queue_position"] = *pos;
-            links["cancel"] = self + "/cancel";
-            break;
-        case JobState::Running:
-            if (const auto live = queue_.live(job.id)) {
-                const RunPhase phase = live->phase();
-                const uint64_t done = live->done(), total = live->total();
-                const double fraction = total ? double(done) / double(total) : 0.0;
-                progress = {{"phase", phase == RunPhase::Queued ? "starting" : runPhaseName(phase)},
-                            {"done", done},
-                            {"total", total},
-                            {"fraction", fraction}};
-                const RunPhase phases[] = {RunPhase::Tracing, RunPhase::PhotonMap, RunPhase::Rendering};
-                if (sweep && live->stage() > 0) {
-                    // Whole points of the round under way (points_total: that round's).
-                    step = live->stage();
-                    pointsDone = live->itemsDone();
-                    pointsTotal = live->itemsTotal();
-                    overall =
-                        (step - 1 + (pointsTotal ? double(pointsDone) / double(pointsTotal) : 0.0)) / steps;
-                } else if (sweep) {  // in a launcher's child: its photons only
-                    overall = std::clamp(fraction, 0.0, 1.0) / steps;
-                }
-                for (int i = 0; i < steps && !sweep; ++i) {
-                    if (phases[i] != phase) continue;
-                    step = i + 1;
-                    overall = (i + std::clamp(fraction, 0.0, 1.0)) / steps;
-                }
-                if (phase == RunPhase::Done) {  // the work is over, its results are being written
-                    step = steps;
-                    overall = 1;
-                }
-                doc["cancel_requested"] = live->cancelled();
-            }
-            links["cancel"] = self + "/cancel";
-            break;
-        case JobState::Succeeded: {
-            progress = {{"phase", "done"}, {"done", 1}, {"total", 1}, {"fraction", 1.0}};
-            step = steps;
-            overall = 1;
-            pointsDone = pointsTotal;
-            for (const ResultFile& f : kResultFiles)
-                if (hasResultFile(f, request)) links[std::string(f.link)] = self + "/" + std::string(f.route);
-            break;
-        }
-        case JobState::Failed:
-            doc["error"] = job.error;
-            break;
-        case JobState::Canceled:
-            break;
-    }
-    progress["step"] = step;
-    progress["steps"] = steps;
-    progress["overall"] = overall;
-    if (sweep) {
-        progress["points_done"] = pointsDone;
-        progress["points_total"] = pointsTotal;
-        links["points"] = self + "/points";
-    }
-    doc["progress"] = progress;
-    doc["links"] = links;
-    return doc;
 }
 
 // New work stops before the disk fills: jobs and uploads would fail half-written, and a full disk kept
@@ -354,7 +126,8 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     }
     JobRecord job;
     job.id = newId();
-    job.request = toJson(spec);
+    job.spec = std::make_shared<const StudySpec>(std::move(spec));  // the one parse of this job
+    job.request = toJson(*job.spec);
     job.createdAt = nowIso8601();
     bool queued;
     try {
@@ -368,7 +141,7 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
                        "the queue is full (" + std::to_string(limits_.maxQueued) + " jobs); try again later");
     }
     res.set_header("Location", jobPath(job.id));
-    sendJson(res, 202, statusJson(job));
+    sendJson(res, 202, jobStatusJson(job, queue_));
 }
 
 void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentReader& reader) {
@@ -422,7 +195,7 @@ void Api::listJobs(const Request& req, Response& res) {
         return problem(res, 400, e.what(), e.field());
     }
     json jobs = json::array();
-    for (const auto& job : queue_.jobs(int(limit), int(offset))) jobs.push_back(statusJson(job));
+    for (const auto& job : queue_.jobs(int(limit), int(offset))) jobs.push_back(jobStatusJson(job, queue_));
     const int64_t total = queue_.jobCount();
     json doc = {{"jobs", jobs}, {"total", total}, {"limit", limit}, {"offset", offset}, {"next", nullptr}};
     if (offset + limit < total) {
@@ -435,7 +208,7 @@ void Api::listJobs(const Request& req, Response& res) {
 void Api::getJob(const Request& req, Response& res) {
     const auto job = queue_.job(req.matches[1]);
     if (!job) return problem(res, 404, "no job with this id");
-    sendJson(res, 200, statusJson(*job));
+    sendJson(res, 200, jobStatusJson(*job, queue_));
 }
 
 void Api::cancelJob(const Request& req, Response& res) {
@@ -449,7 +222,7 @@ void Api::cancelJob(const Request& req, Response& res) {
     const auto outcome = queue_.cancel(id);
     const auto now = queue_.job(id);
     if (!now) return problem(res, 404, "no job with this id");
-    sendJson(res, outcome == JobQueue::CancelOutcome::Requested ? 202 : 200, statusJson(*now));
+    sendJson(res, outcome == JobQueue::CancelOutcome::Requested ? 202 : 200, jobStatusJson(*now, queue_));
 }
 
 void Api::deleteJob(const Request& req, Response& res) {
@@ -491,13 +264,15 @@ void Api::getSweepPoints(const Request& req, Response& res) {
     const std::string id = req.matches[1];
     const auto job = queue_.job(id);
     if (!job) return problem(res, 404, "no job with this id");
+    const std::string unread = "the stored job no longer reads: ";
+    if (!job->spec) return problem(res, 500, unread + job->specError);
+    const StudySpec& study = *job->spec;
+    if (!study.settings.sweep) return problem(res, 404, "this job is not a sweep");
     SweepSpec spec;
     try {
-        const StudySpec study = parseJobSpec(job->request, queue_.cores());
-        if (!study.settings.sweep) return problem(res, 404, "this job is not a sweep");
         spec = sweepSpec(study.mesh, *study.settings.sweep, study.settings.trace);
     } catch (const Error& e) {
-        return problem(res, 500, std::string("the stored job no longer reads: ") + e.what());
+        return problem(res, 500, unread + e.what());
     }
     json points = json::array();
     if (job->state == JobState::Succeeded) {
@@ -540,6 +315,8 @@ void Api::install(httplib::Server& server, bool accessLog) {
          }},
         {"GET /api/openapi.json",
          [](const Request&, Response& res) { res.set_content(std::string(openApiDocument()), kJsonType); }},
+        {"GET /api/defaults",
+         [this](const Request&, Response& res) { sendJson(res, 200, jobDefaults(queue_.cores())); }},
         {"GET /api/jobs", [this](const Request& req, Response& res) { listJobs(req, res); }},
         {"GET /api/jobs/{id}", [this](const Request& req, Response& res) { getJob(req, res); }},
         {"DELETE /api/jobs/{id}", [this](const Request& req, Response& res) { deleteJob(req, res); }},
@@ -589,7 +366,8 @@ void Api::install(httplib::Server& server, bool accessLog) {
     if (!plain.empty() || !withReader.empty()) throw std::logic_error("handler without a route");
 
     const ServiceLimits limits = limits_;
-    RequestRules rules{routes(), limits.maxUrlBytes,
+    RequestRules rules{routes(),
+                       limits.maxUrlBytes,
                        [limits](const std::string& path) { return bodyLimit(limits, path); },
                        {"POST /api/jobs", "POST /api/meshes"}};
     server.set_payload_max_length(std::max(limits.maxBodyBytes, limits.maxUploadBytes));

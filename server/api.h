@@ -1,6 +1,8 @@
 #pragma once
-// The HTTP face of the service: routes, validation, problem+json errors (RFC 9457), the access log. Handlers
-// only read and write the store and the queue; jobs run on the queue's worker.
+// The HTTP face of the service: the routes and their handlers, the guards before them, the error handlers and
+// the access log. Answers are written with problem.h (problem+json, RFC 9457), a job's status with
+// job_status.h, bodies read with request_body.h. Handlers only read and write the store and the queue; jobs
+// run on the queue's worker.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,7 +14,7 @@
 #include "job_store.h"
 #include "mesh_catalog.h"
 #include "request_guard.h"
-#include "result_files.h"
+#include "result_store.h"
 
 namespace facetlight::server {
 
@@ -22,14 +24,13 @@ std::string_view openApiDocument();
 class Api {
   public:
     // `readOnly`: why the store cannot be written (empty: it can); then every route that writes answers 503.
-    Api(ResultFiles& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
+    Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
         std::string readOnly);
     // Registers every route, the guards that run before them, the error handlers and the access log.
     void install(httplib::Server& server, bool accessLog);
     static std::vector<Route> routes();
 
   private:
-    nlohmann::json statusJson(const JobRecord& job) const;
     bool refuseWhenStorageLow(httplib::Response& res) const;  // true: answered 507
     bool refuseWhenReadOnly(httplib::Response& res) const;    // true: answered 503
     nlohmann::json storageJson() const;
@@ -44,7 +45,7 @@ class Api {
     void getResult(const httplib::Request& req, httplib::Response& res, const std::string& file,
                    const std::string& contentType);
 
-    ResultFiles& results_;
+    ResultStore& results_;
     JobQueue& queue_;
     MeshCatalog& catalog_;
     ServiceLimits limits_;

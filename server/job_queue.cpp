@@ -8,7 +8,6 @@
 #include <iostream>
 #include <new>
 
-#include "job_spec.h"
 #include "study/result_files.h"
 #include "util/error.h"
 
@@ -29,7 +28,7 @@ constexpr const char* kStartNotRecorded =
 
 }  // namespace
 
-JobQueue::JobQueue(JobStore& store, ResultFiles& results, StudyRunner& runner, size_t maxQueued,
+JobQueue::JobQueue(JobStore& store, ResultStore& results, StudyRunner& runner, size_t maxQueued,
                    uint64_t minFreeBytes, int cores)
     : store_(store),
       results_(results),
@@ -247,7 +246,12 @@ void JobQueue::runJob(JobRecord job, RunControl& control) {
         // A job whose results cannot fit fails now with the reason, rather than after its work.
         if (const std::string shortage = results_.spaceShortage(minFreeBytes_); !shortage.empty())
             return finish(JobState::Failed, shortage + ": the job was not run");
-        StudySpec spec = parseJobSpec(job.request, cores_);
+        if (!job.spec) {
+            results_.clear(id);
+            return finish(JobState::Failed, job.specError);
+        }
+        // Parsed when the job was accepted (or read back from the store); a copy runs with its threads.
+        StudySpec spec = *job.spec;
         const int threads = std::min(spec.settings.trace.threads, cores_);
         spec.settings.trace.threads = threads;
         job.state = JobState::Running;

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "job_store.h"
-#include "result_files.h"
+#include "result_store.h"
 #include "study/study.h"
 #include "study_runner.h"
 
@@ -30,7 +30,7 @@ namespace facetlight::server {
 class JobQueue {
   public:
     // Jobs fail without running when the disk has less than `minFreeBytes` free: their results would not fit.
-    JobQueue(JobStore& store, ResultFiles& results, StudyRunner& runner, size_t maxQueued,
+    JobQueue(JobStore& store, ResultStore& results, StudyRunner& runner, size_t maxQueued,
              uint64_t minFreeBytes, int cores);
     ~JobQueue();  // stop()
 
@@ -73,7 +73,7 @@ class JobQueue {
     void saveUnsaved();  // with mutex_ held
 
     JobStore& store_;
-    ResultFiles& results_;
+    ResultStore& results_;
     StudyRunner& runner_;
     const size_t maxQueued_;
     const uint64_t minFreeBytes_;

@@ -20,15 +20,20 @@ void checkRenderLimits(const StudySpec& spec, const ServiceLimits& limits) {
     }
 }
 
+// What a job leaves out: core's defaults, but every core of the machine unless it asks for fewer.
+StudySpec serviceDefaults(int defaultThreads) {
+    StudySpec defaults;
+    defaults.settings.trace.threads = defaultThreads;
+    return defaults;
+}
+
 }  // namespace
 
 StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits) {
     // This server's cap, not only the core's, names the range a user may ask for.
     if (limits && body.is_object() && body.contains("photons"))
         settings::readCount(body["photons"], "photons", 1, limits->maxPhotons);
-    StudySpec defaults;
-    defaults.settings.trace.threads = defaultThreads;
-    const StudySpec spec = StudySpec::fromJson(body, defaults);
+    const StudySpec spec = StudySpec::fromJson(body, serviceDefaults(defaultThreads));
     if (!body.contains("photons")) throw Error("photons", "photons is required");
     if (limits) checkRenderLimits(spec, *limits);
     if (limits && spec.settings.sweep) {
@@ -40,6 +45,21 @@ StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const Ser
                                        std::to_string(limits->maxPhotons) + " on this server");
     }
     return spec;
+}
+
+nlohmann::json jobDefaults(int defaultThreads) {
+    StudySpec spec = serviceDefaults(defaultThreads);
+    spec.settings.render = RenderSettings{};
+    spec.settings.aset = AsetSettings{};
+    spec.settings.tiltSeries = TiltSeriesSettings{};
+    spec.settings.firePicture = FirePictureSettings{};
+    nlohmann::json j = toJson(spec);
+    j.erase("mesh");
+    return j;
+}
+
+StudySpec storedJobSpec(const nlohmann::json& request) {
+    return StudySpec::fromJson(request);
 }
 
 }  // namespace facetlight::server

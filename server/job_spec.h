@@ -26,4 +26,13 @@ struct ServiceLimits {
 // without: jobs already accepted). Missing `threads` means `defaultThreads`.
 StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits = nullptr);
 
+// The job a client's form starts from (GET /api/defaults): every setting at the value a job that leaves it
+// out gets here (threads: `defaultThreads`), and render, aset, tilt_series and fire_picture at their own; the
+// canonical JSON without a mesh.
+nlohmann::json jobDefaults(int defaultThreads);
+
+// A job the store kept, read back when its record is loaded: the text is the canonical JSON written from its
+// spec when it was accepted (toJson), so it holds every setting. Throws Error when it no longer reads.
+StudySpec storedJobSpec(const nlohmann::json& request);
+
 }  // namespace facetlight::server

@@ -2,6 +2,7 @@
 
 #include <sqlite3.h>
 
+#include "job_spec.h"
 #include "util/error.h"
 
 namespace facetlight::server {
@@ -16,6 +17,11 @@ JobRecord readJob(const Statement& s) {
     j.id = s.text(1);
     j.state = parseJobState(s.text(2));
     j.request = nlohmann::json::parse(s.text(3));
+    try {
+        j.spec = std::make_shared<const StudySpec>(storedJobSpec(j.request));
+    } catch (const std::exception& e) {  // the job still lists; it fails if run
+        j.specError = e.what();
+    }
     j.createdAt = s.text(4);
     j.startedAt = s.text(5);
     j.finishedAt = s.text(6);

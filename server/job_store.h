@@ -1,7 +1,8 @@
 #pragma once
 // The jobs table of the service's database: each job's request, state and times. Their result files are
-// ResultFiles' (result_files.h), uploaded meshes MeshStore's (mesh_store.h).
+// the ResultStore's (result_store.h), uploaded meshes MeshStore's (mesh_store.h).
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "database.h"
+#include "study/study_spec.h"
 
 namespace facetlight::server {
 
@@ -24,7 +26,11 @@ struct JobRecord {
     std::string id;
     int64_t seq = 0;  // submission order
     JobState state = JobState::Queued;
-    nlohmann::json request;  // the validated job, normalised (every default written out)
+    // The job, parsed once: on submission, or from the store's text when its record is read back. Null when
+    // the stored text no longer reads as a job (`specError` says why).
+    std::shared_ptr<const StudySpec> spec;
+    nlohmann::json request;  // the spec's canonical JSON (toJson, every default written out), as stored
+    std::string specError;
     std::string createdAt, startedAt, finishedAt;  // ISO 8601 UTC; empty until it happens
     std::string error;                             // why it failed
     int threadsUsed = 0;  // threads the worker gave it (the request capped at the cores)

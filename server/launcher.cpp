@@ -11,7 +11,6 @@
 #include <nlohmann/json.hpp>
 
 #include "study/result_files.h"
-#include "study/study_spec.h"
 #include "util/error.h"
 
 namespace facetlight::server {
@@ -113,13 +112,14 @@ bool applyProgressLine(std::string_view line, RunControl& control) {
     return true;
 }
 
-StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
-                            const StudySettings& settings, RunControl& control) {
+StudyResult runStudyInChild(const LaunchSettings& launch, const StudySpec& spec, RunControl& control) {
     const JobFolder folder(launch.workDir);
     const fs::path jobFile = folder.path() / "job.json";
     {
+        // The child is another process: it gets the job as the canonical JSON written from the typed spec,
+        // and reading that file is its one parse (cli/study_command.cpp).
         std::ofstream out(jobFile);
-        out << toJson(StudySpec{mesh.source, mesh.name, settings, mesh.cut}).dump(2);
+        out << toJson(spec).dump(2);
         if (!(out << std::flush)) throw Error("launcher: cannot write " + jobFile.string());
     }
 
@@ -143,7 +143,7 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
                     ": " + exit.tail);
 
     // The file a study writes last.
-    if (!fs::exists(folder.path() / (settings.sweep ? "sweep.json" : "stats.json")))
+    if (!fs::exists(folder.path() / (spec.settings.sweep ? "sweep.json" : "stats.json")))
         throw Error("launcher: the job left no results in " + folder.path().string() +
                     " (is it a directory every node shares?): " + exit.tail);
     StudyResult result;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "child_process.h"
-#include "study/study.h"
+#include "study/study_spec.h"
 
 namespace facetlight::server {
 
@@ -36,14 +36,13 @@ bool useLauncher(const LaunchSettings& launch, const StudySettings& settings);
 struct ChildMesh {
     std::string source;
     std::string name;
-    CutValues cut = {};  // with a shape of the cut library: its parameters (StudySpec::cut)
 };
 
-// Runs the study in a child and returns its results. Follows the child's progress into `control`; when
-// control.cancel() is called, ends the child's process group (SIGTERM, then SIGKILL after the grace period)
-// and throws Canceled. A launch that fails or exits non-zero throws Error with the end of the child's output.
-StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
-                            const StudySettings& settings, RunControl& control);
+// Runs the job in a child and returns its results. `spec` names its mesh as the child reads it (a ChildMesh's
+// source, or a shape of the cut library). Follows the child's progress into `control`; when control.cancel()
+// is called, ends the child's process group (SIGTERM, then SIGKILL after the grace period) and throws
+// Canceled. A launch that fails or exits non-zero throws Error with the end of the child's output.
+StudyResult runStudyInChild(const LaunchSettings& launch, const StudySpec& spec, RunControl& control);
 
 // Reads a progress line {"phase": "tracing", "done": 1, "total": 2} into control; false if it is not one.
 bool applyProgressLine(std::string_view line, RunControl& control);

@@ -1,6 +1,6 @@
 #include "mesh_store.h"
 
-#include "result_files.h"
+#include "result_store.h"
 #include "util/error.h"
 
 namespace facetlight::server {

@@ -11,7 +11,7 @@ Service::Service(ServiceConfig config) : config_(std::move(config)), http_(confi
     database_ = std::make_unique<Database>(config_.dataDir);
     store_ = std::make_unique<JobStore>(*database_);
     meshes_ = std::make_unique<MeshStore>(*database_, config_.dataDir / "meshes");
-    results_ = std::make_unique<ResultFiles>(config_.dataDir / "jobs");
+    results_ = std::make_unique<ResultStore>(config_.dataDir / "jobs");
     catalog_ = std::make_unique<MeshCatalog>(*meshes_, config_.meshesDir);
     runner_ = makeStudyRunner(*catalog_, config_.launch);
     queue_ = std::make_unique<JobQueue>(*store_, *results_, *runner_, config_.limits.maxQueued,

@@ -15,7 +15,7 @@
 #include "job_store.h"
 #include "mesh_catalog.h"
 #include "mesh_store.h"
-#include "result_files.h"
+#include "result_store.h"
 #include "study_runner.h"
 
 namespace facetlight::server {
@@ -54,7 +54,7 @@ class Service {
     std::unique_ptr<Database> database_;
     std::unique_ptr<JobStore> store_;
     std::unique_ptr<MeshStore> meshes_;
-    std::unique_ptr<ResultFiles> results_;
+    std::unique_ptr<ResultStore> results_;
     std::unique_ptr<MeshCatalog> catalog_;
     std::unique_ptr<StudyRunner> runner_;
     std::unique_ptr<JobQueue> queue_;

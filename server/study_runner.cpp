@@ -20,12 +20,13 @@ StudyResult LauncherRunner::run(const StudySpec& spec, RunControl& control,
                                 const SweepCheckpoint& checkpoint) {
     if (!useLauncher(launch_, spec.settings)) return inProcess_.run(spec, control, checkpoint);
     // A sweep's designs, and a design of the cut library, are built by the child.
-    if (spec.settings.sweep || !spec.cut.empty())
-        return runStudyInChild(launch_, {spec.mesh, spec.name, spec.cut}, spec.settings, control);
+    if (spec.settings.sweep || !spec.cut.empty()) return runStudyInChild(launch_, spec, control);
     catalog_.resolve(spec.mesh);  // a mesh that does not build fails here, as it would in-process
-    ChildMesh child = catalog_.locate(spec.mesh);
-    if (!spec.name.empty()) child.name = spec.name;
-    return runStudyInChild(launch_, child, spec.settings, control);
+    const ChildMesh child = catalog_.locate(spec.mesh);
+    StudySpec located = spec;  // the same job, its mesh named as the child reads it
+    located.mesh = child.source;
+    if (located.name.empty()) located.name = child.name;
+    return runStudyInChild(launch_, located, control);
 }
 
 std::unique_ptr<StudyRunner> makeStudyRunner(const MeshCatalog& catalog,

@@ -4,8 +4,8 @@
 // This module routes between the views and starts the page.
 import { showCompare } from './js/compare.js';
 import { JOBS_PER_PAGE } from './js/constants.js';
-import { $, h } from './js/dom.js';
-import { clearFieldError, submitJob, syncFormControls } from './js/form.js';
+import { $, clearFieldError, h } from './js/dom.js';
+import { loadFormDefaults, submitJob, syncFormControls } from './js/form.js';
 import { jobsView, refreshHealth, refreshJobs } from './js/jobs.js';
 import { describeMesh, loadMeshes, uploadMesh } from './js/meshes.js';
 import { resultView, showResult } from './js/result.js';
@@ -70,12 +70,8 @@ async function start() {
   syncFormControls();
   initSweepForm();
   route();
-  const health = await refreshHealth();
-  if (health && health.cores) {
-    const threads = $('#f-threads');
-    threads.value = String(health.cores);
-    threads.max = String(health.cores);
-  }
+  const [health] = await Promise.all([refreshHealth(), loadFormDefaults()]);
+  if (health && health.cores) $('#f-threads').max = String(health.cores);
   const shipped = await loadMeshes();
   if (shipped) setSweepShapes(shipped);
   refreshJobs();

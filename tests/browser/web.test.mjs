@@ -86,6 +86,17 @@ async function startServer() {
   throw new Error('unreachable');
 }
 
+// The page's modules as a graph: module -> the modules it imports.
+function webImports() {
+  const dir = path.join(sourceDir, 'web/js');
+  const graph = new Map();
+  for (const file of fs.readdirSync(dir).filter((f) => f.endsWith('.js'))) {
+    const text = fs.readFileSync(path.join(dir, file), 'utf8');
+    graph.set(file, [...text.matchAll(/from '\.\/([\w-]+\.js)'/g)].map((m) => m[1]));
+  }
+  return graph;
+}
+
 async function shot(name) {
   fs.mkdirSync(screenshotDir, { recursive: true });
   await page.screenshot({ path: path.join(screenshotDir, `${name}.png`), fullPage: true });
@@ -152,6 +163,18 @@ async function noHorizontalOverflow() {
   return page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth + 1);
 }
 
+test('the page\'s modules import no circle', () => {
+  const graph = webImports();
+  const done = new Set();
+  const visit = (file, trail) => {
+    assert.ok(!trail.includes(file), `import circle: ${[...trail, file].join(' -> ')}`);
+    if (done.has(file)) return;
+    for (const next of graph.get(file) || []) visit(next, [...trail, file]);
+    done.add(file);
+  };
+  for (const file of graph.keys()) visit(file, []);
+});
+
 describe('facetlight web page', { timeout: 900_000 }, () => {
   before(async () => {
     if (process.env.FACETLIGHT_BASE_URL) {
@@ -208,6 +231,16 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
       .filter((el) => !(el.labels && el.labels.length) && !el.getAttribute('aria-label'))
       .map((el) => el.name || el.id));
     assert.deepEqual(unnamed, []);
+    // The form starts from the server's defaults (what a job that leaves a setting out gets), not a copy.
+    const defaults = await (await fetch(`${baseUrl}/api/defaults`)).json();
+    assert.equal(await page.inputValue('#f-photons'), String(defaults.photons));
+    assert.equal(await page.inputValue('#f-threads'), String(defaults.threads));
+    assert.equal(await page.inputValue('#f-width'), String(defaults.render.width));
+    assert.equal(await page.inputValue('#f-map-photons'), String(defaults.render.map_photons));
+    assert.equal(await page.inputValue('#f-tilt-max'), String(defaults.tilt_series.max_deg));
+    assert.equal(await page.inputValue('#f-light-model'), defaults.light.model);
+    assert.equal(await page.isChecked('#f-dispersion'), defaults.dispersion);
+    assert.equal(await page.isChecked('#f-fire'), defaults.fire.enabled);
     await shot('01-home');
   });
 

@@ -46,6 +46,15 @@ StudySettings traceOnly(uint64_t photons) {
     return s;
 }
 
+// The job a launcher hands its child: `mesh` as the child reads it, traced with `settings`.
+StudySpec childJob(std::string mesh, std::string name, StudySettings settings) {
+    StudySpec spec;
+    spec.mesh = std::move(mesh);
+    spec.name = std::move(name);
+    spec.settings = std::move(settings);
+    return spec;
+}
+
 // Alive and not a zombie.
 bool running(pid_t pid) {
     std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
@@ -113,7 +122,7 @@ TEST(Launcher, FailedLauncherFailsTheJobWithItsMessage) {
     const auto launch =
         settingsWith({"sh", "-c", "echo 'There are not enough slots available' >&2; exit 3", "sh"});
     try {
-        runStudyInChild(launch, {kMesh, ""}, traceOnly(1000), control);
+        runStudyInChild(launch, childJob(kMesh, "", traceOnly(1000)), control);
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("exit code 3"), std::string::npos) << e.what();
@@ -124,8 +133,8 @@ TEST(Launcher, FailedLauncherFailsTheJobWithItsMessage) {
 TEST(Launcher, MissingLauncherFailsTheJob) {
     RunControl control;
     try {
-        runStudyInChild(settingsWith({"/nonexistent/mpirun", "-np", "2"}), {kMesh, ""}, traceOnly(1000),
-                        control);
+        runStudyInChild(settingsWith({"/nonexistent/mpirun", "-np", "2"}),
+                        childJob(kMesh, "", traceOnly(1000)), control);
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("cannot start '/nonexistent/mpirun'"), std::string::npos)
@@ -136,7 +145,7 @@ TEST(Launcher, MissingLauncherFailsTheJob) {
 TEST(Launcher, ChildErrorReachesTheJob) {
     RunControl control;
     try {
-        runStudyInChild(mpirun(2), {"/nonexistent/gem.asc", ""}, traceOnly(1000), control);
+        runStudyInChild(mpirun(2), childJob("/nonexistent/gem.asc", "", traceOnly(1000)), control);
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("/nonexistent/gem.asc"), std::string::npos) << e.what();
@@ -152,9 +161,9 @@ TEST(Launcher, CancelEndsTheWholeProcessGroupEvenWhenItIgnoresSigterm) {
                                "; echo '{\"phase\":\"tracing\",\"done\":1,\"total\":9}'; wait";
     RunControl control;
     std::thread canceller = cancelWhenTracing(control);
-    EXPECT_THROW(
-        runStudyInChild(settingsWith({"sh", "-c", script, "sh"}), {kMesh, ""}, traceOnly(1000), control),
-        Canceled);
+    EXPECT_THROW(runStudyInChild(settingsWith({"sh", "-c", script, "sh"}),
+                                 childJob(kMesh, "", traceOnly(1000)), control),
+                 Canceled);
     canceller.join();
     const pid_t grandchild = readPid(pidFile);
     ASSERT_GT(grandchild, 0);
@@ -168,7 +177,7 @@ TEST(Launcher, RunsAJobThroughMpirunAndMatchesTheInProcessResult) {
     ASSERT_TRUE(kRootAllowed);
     const StudySettings settings = traceOnly(100'000);
     RunControl control;
-    const StudyResult child = runStudyInChild(mpirun(2), {kMesh, "brilliant"}, settings, control);
+    const StudyResult child = runStudyInChild(mpirun(2), childJob(kMesh, "brilliant", settings), control);
     EXPECT_EQ(control.phase(), RunPhase::Done);  // the child's last progress line arrived
     EXPECT_EQ(child.stats["timing"]["ranks"], 2);
     EXPECT_EQ(child.stats["totals"]["photons"], 100'000);
@@ -189,7 +198,8 @@ TEST(Launcher, CancelsAJobRunningUnderMpirun) {
     fs::create_directories(launch.workDir);
     RunControl control;
     std::thread canceller = cancelWhenTracing(control);
-    EXPECT_THROW(runStudyInChild(launch, {kMesh, ""}, traceOnly(5'000'000'000ULL), control), Canceled);
+    EXPECT_THROW(runStudyInChild(launch, childJob(kMesh, "", traceOnly(5'000'000'000ULL)), control),
+                 Canceled);
     canceller.join();
     EXPECT_GT(control.total(), 0u);  // progress arrived before the cancel
     // The job folder is gone with the job, and no process still runs the job's command line.

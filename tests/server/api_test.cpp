@@ -179,6 +179,31 @@ TEST_F(ServiceTest, HealthAndOpenApiDescribeEveryRoute) {
     EXPECT_EQ(documented, served);
 }
 
+// The page's form starts from GET /api/defaults: exactly the settings a job that leaves them out gets.
+TEST_F(ServiceTest, DefaultsAreWhatAJobThatLeavesThemOutGets) {
+    auto r = client_->Get("/api/defaults");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200);
+    const json defaults = json::parse(r->body);
+    EXPECT_EQ(defaults["threads"], 2);  // the service's cores
+    EXPECT_FALSE(defaults.contains("mesh"));
+    for (const char* part : {"render", "aset", "tilt_series", "fire_picture"})
+        EXPECT_TRUE(defaults[part].is_object()) << part;
+    const json job = {
+        {"mesh", "round_brilliant"}, {"photons", defaults["photons"]}, {"render", true},
+        {"aset", json::object()},    {"tilt_series", json::object()},  {"fire_picture", json::object()}};
+    auto s = submit(job);
+    ASSERT_TRUE(s);
+    ASSERT_EQ(s->status, 202) << s->body;
+    const json status = json::parse(s->body);
+    client_->Post("/api/jobs/" + status["id"].get<std::string>() + "/cancel");
+    json settings = status["settings"];
+    EXPECT_EQ(settings["mesh"], "round_brilliant");
+    settings.erase("mesh");
+    EXPECT_EQ(settings, defaults);
+    EXPECT_EQ(waitFinished(status["id"])["state"], "canceled");
+}
+
 TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     json job = smallJob();
     job["render"] = {{"width", 32}, {"height", 24}, {"samples", 1}, {"map_photons", 5000}};
@@ -654,6 +679,32 @@ TEST_F(ServiceTest, QueuedAndInterruptedJobsSurviveARestart) {
     client_->Post("/api/jobs/" + running + "/cancel");
     EXPECT_EQ(waitFinished(running)["state"], "canceled");
     EXPECT_EQ(waitFinished(queued)["state"], "succeeded");
+}
+
+// A stored job that no longer reads as a job (a store another version wrote): it still lists with what was
+// stored, its points answer 500 with the reason, and it fails with that reason when its turn comes.
+TEST_F(ServiceTest, AStoredJobThatNoLongerReadsListsAndFailsWithTheReason) {
+    const std::string running = submitOk(longJob());
+    const std::string queued = submitOk(sweepJob(2, 1000));
+    waitState(running, "running");
+    json unreadable = status(queued)["settings"];
+    unreadable["photons"] = 0;
+    stopService();
+    {
+        Database db(dir_ / "data");
+        Statement s(db.handle(), "UPDATE jobs SET request = ? WHERE id = ?");
+        s.bind(1, unreadable.dump()).bind(2, queued);
+        s.step();
+    }
+    start();
+    const json listed = status(queued);
+    EXPECT_EQ(listed["state"], "queued");
+    EXPECT_EQ(listed["settings"], unreadable);
+    expectProblem(client_->Get("/api/jobs/" + queued + "/points"), 500);
+    client_->Post("/api/jobs/" + running + "/cancel");
+    const json failed = waitFinished(queued);
+    EXPECT_EQ(failed["state"], "failed");
+    EXPECT_NE(failed["error"].get<std::string>().find("photons"), std::string::npos) << failed.dump();
 }
 
 TEST_F(ServiceTest, SweepRunsToSuccessWithPointsAndResults) {

@@ -1,5 +1,6 @@
-// Small DOM helpers: $ (one element), h('p', {class: 'x'}, 'text', child) and svg(...) for SVG elements.
-// Text is always put in as text, never as HTML.
+// Small DOM helpers: $ (one element), h('p', {class: 'x'}, 'text', child) and svg(...) for SVG elements, and a
+// form field's error (the element err-<field> beside it: the field is named by the API's dotted path). Text is
+// always put in as text, never as HTML.
 
 export const $ = (selector, root = document) => root.querySelector(selector);
 
@@ -26,4 +27,33 @@ export function svg(tag, attrs = {}, ...children) {
   for (const [key, value] of Object.entries(attrs)) el.setAttribute(key, String(value));
   el.append(...children);
   return el;
+}
+
+export function fieldError(field) { return document.getElementById(`err-${field}`); }
+
+export function showFieldError(field, message) {
+  const err = fieldError(field);
+  if (!err) return false;
+  err.textContent = message;
+  err.hidden = false;
+  const wrapper = err.closest('.field');
+  if (wrapper) wrapper.classList.add('invalid');
+  const input = wrapper && wrapper.querySelector('input, select');
+  if (input) input.setAttribute('aria-invalid', 'true');
+  const details = err.closest('details');
+  if (details) details.open = true;
+  return true;
+}
+
+export function clearFieldError(field) {
+  const err = fieldError(field);
+  if (!err) return;
+  err.hidden = true;
+  err.textContent = '';
+  const wrapper = err.closest('.field');
+  if (wrapper) {
+    wrapper.classList.remove('invalid');
+    const input = wrapper.querySelector('input, select');
+    if (input) input.removeAttribute('aria-invalid');
+  }
 }

@@ -1,37 +1,36 @@
-// The job form: reading it into a job, showing the server's field errors, submitting.
+// The job form: its defaults from the server, reading it into a job, showing the server's field errors,
+// submitting.
 import { api } from './api.js';
-import { $ } from './dom.js';
+import { $, clearFieldError, fieldError, showFieldError } from './dom.js';
 import { shortId } from './format.js';
 import { jobsView, refreshJobs } from './jobs.js';
 import { displayMeshName } from './meshes.js';
 
-function fieldError(field) { return document.getElementById(`err-${field}`); }
-
-export function showFieldError(field, message) {
-  const err = fieldError(field);
-  if (!err) return false;
-  err.textContent = message;
-  err.hidden = false;
-  const wrapper = err.closest('.field');
-  if (wrapper) wrapper.classList.add('invalid');
-  const input = wrapper && wrapper.querySelector('input, select');
-  if (input) input.setAttribute('aria-invalid', 'true');
-  const details = err.closest('details');
-  if (details) details.open = true;
-  return true;
+function showFormError(message) {
+  const formError = $('#form-error');
+  formError.textContent = message;
+  formError.hidden = false;
 }
 
-export function clearFieldError(field) {
-  const err = fieldError(field);
-  if (!err) return;
-  err.hidden = true;
-  err.textContent = '';
-  const wrapper = err.closest('.field');
-  if (wrapper) {
-    wrapper.classList.remove('invalid');
-    const input = wrapper.querySelector('input, select');
-    if (input) input.removeAttribute('aria-invalid');
+// The form starts from the server's defaults (GET /api/defaults: what a job that leaves a setting out gets,
+// from the same tables that read a job), each field found by its name, the setting's dotted path. The parts
+// a job may add (render, aset, ...) are objects there: their boxes are the page's choice.
+export async function loadFormDefaults() {
+  let defaults;
+  try {
+    defaults = await api('/api/defaults');
+  } catch (e) {
+    showFormError(`The server's defaults could not be read: ${e.message}`);
+    return;
   }
+  for (const input of $('#job-form').elements) {
+    if (!input.name) continue;
+    const value = input.name.split('.').reduce((v, key) => (v == null ? undefined : v[key]), defaults);
+    if (value == null || typeof value === 'object') continue;
+    if (input.type === 'checkbox') input.checked = Boolean(value);
+    else input.value = String(value);
+  }
+  syncFormControls();
 }
 
 function clearFormErrors() {
@@ -104,9 +103,7 @@ function reportError(e) {
     if (input) input.focus();
     return;
   }
-  const formError = $('#form-error');
-  formError.textContent = e.field ? `${e.field}: ${e.message}` : e.message;
-  formError.hidden = false;
+  showFormError(e.field ? `${e.field}: ${e.message}` : e.message);
 }
 
 export async function submitJob(event) {

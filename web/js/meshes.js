@@ -1,8 +1,7 @@
 // The shapes a job may use: shipped and uploaded meshes, their descriptions and uploads. loadMeshes returns the
 // shipped ones.
 import { api } from './api.js';
-import { $, h } from './dom.js';
-import { clearFieldError, showFieldError } from './form.js';
+import { $, clearFieldError, h, showFieldError } from './dom.js';
 import { fmtNumber } from './format.js';
 
 const meshes = new Map();  // mesh name or id -> summary

@@ -2,10 +2,9 @@
 // varied quantity: the figure against it with a ±1σ band; two: a filled map with the best point marked.
 import { api, jobUrl } from './api.js';
 import { FIGURES, POLL_ACTIVE_MS } from './constants.js';
-import { $, h, svg } from './dom.js';
+import { $, clearFieldError, h, showFieldError, svg } from './dom.js';
 import { FIRE_FIGURES, fmtFire } from './fire.js';
 import { fmtNumber, humanize, shortId } from './format.js';
-import { clearFieldError, showFieldError } from './form.js';
 import { refreshJobs } from './jobs.js';
 
 // `compared`: the jobs of designs opened from sweeps, for the compare view.

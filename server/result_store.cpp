@@ -1,4 +1,4 @@
-#include "result_files.h"
+#include "result_store.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -71,7 +71,7 @@ void writeFileAtomically(const fs::path& path, std::string_view bytes) {
     syncDirectory(path.parent_path());
 }
 
-ResultFiles::ResultFiles(fs::path dir) : dir_(std::move(dir)) {
+ResultStore::ResultStore(fs::path dir) : dir_(std::move(dir)) {
     std::error_code ec;
     fs::create_directories(dir_, ec);
     if (ec) throw Error("cannot create result directory " + dir_.string() + ": " + ec.message());
@@ -87,26 +87,26 @@ void removeTemporaryFiles(const fs::path& dir) {
     for (const fs::path& p : leftovers) fs::remove(p, ec);  // a read-only disk keeps them: nothing to do
 }
 
-uint64_t ResultFiles::freeBytes() const {
+uint64_t ResultStore::freeBytes() const {
     if (simulatedFullDisk().files) return 0;
     std::error_code ec;
     const fs::space_info space = fs::space(dir_, ec);
     return ec ? 0 : space.available;
 }
 
-std::string ResultFiles::spaceShortage(uint64_t minFree) const {
+std::string ResultStore::spaceShortage(uint64_t minFree) const {
     const uint64_t free = freeBytes();
     if (free >= minFree) return {};
     return "the server's storage is nearly full (" + std::to_string(free >> 20) + " MiB free, " +
            std::to_string(minFree >> 20) + " MiB kept free)";
 }
 
-fs::path ResultFiles::jobDir(const std::string& jobId) const {
+fs::path ResultStore::jobDir(const std::string& jobId) const {
     if (!isId(jobId)) throw Error("invalid job id");
     return dir_ / jobId;
 }
 
-void ResultFiles::write(const std::string& jobId, const std::string& name, std::string_view bytes) {
+void ResultStore::write(const std::string& jobId, const std::string& name, std::string_view bytes) {
     const fs::path dir = jobDir(jobId);
     std::error_code ec;
     if (fs::create_directories(dir, ec)) syncDirectory(dir_);
@@ -117,7 +117,7 @@ void ResultFiles::write(const std::string& jobId, const std::string& name, std::
     writeFileAtomically(dir / name, bytes);
 }
 
-std::optional<std::string> ResultFiles::read(const std::string& jobId, const std::string& name) const {
+std::optional<std::string> ResultStore::read(const std::string& jobId, const std::string& name) const {
     std::ifstream in(jobDir(jobId) / name, std::ios::binary);
     if (!in) return std::nullopt;
     std::ostringstream ss;
@@ -125,7 +125,7 @@ std::optional<std::string> ResultFiles::read(const std::string& jobId, const std
     return std::move(ss).str();
 }
 
-std::vector<std::string> ResultFiles::names(const std::string& jobId, const std::string& prefix) const {
+std::vector<std::string> ResultStore::names(const std::string& jobId, const std::string& prefix) const {
     std::vector<std::string> found;
     std::error_code ec;
     for (auto it = fs::directory_iterator(jobDir(jobId), ec); !ec && it != fs::directory_iterator();
@@ -138,7 +138,7 @@ std::vector<std::string> ResultFiles::names(const std::string& jobId, const std:
     return found;
 }
 
-void ResultFiles::clear(const std::string& jobId) {
+void ResultStore::clear(const std::string& jobId) {
     std::error_code ec;
     fs::remove_all(jobDir(jobId), ec);
 }
@@ -149,7 +149,7 @@ std::string sweepPointFile(size_t round, size_t point) {
     return name;
 }
 
-SweepCheckpoint sweepCheckpoint(ResultFiles& files, const std::string& jobId) {
+SweepCheckpoint sweepCheckpoint(ResultStore& files, const std::string& jobId) {
     return {[&files, jobId](size_t round, size_t point) -> std::optional<nlohmann::json> {
                 const std::optional<std::string> bytes = files.read(jobId, sweepPointFile(round, point));
                 if (!bytes) return std::nullopt;

@@ -1,5 +1,6 @@
 #pragma once
-// A job's result files under <dir>/<job id>/. Each is written to a temporary name, flushed to the disk and
+// The service's store of result files on disk: a job's files under <dir>/<job id>/ (their names are core's
+// kResultFiles, study/result_files.h). Each is written to a temporary name, flushed to the disk and
 // renamed over its name, and the folder flushed after the rename: after a crash or a power cut a result is
 // there whole or not at all.
 #include <cstdint>
@@ -13,11 +14,11 @@
 
 namespace facetlight::server {
 
-class ResultFiles {
+class ResultStore {
   public:
     // `dir` holds one folder per job; created when missing. Temporary files left by a crash or a full disk
     // are removed.
-    explicit ResultFiles(std::filesystem::path dir);
+    explicit ResultStore(std::filesystem::path dir);
 
     void write(const std::string& jobId, const std::string& name, std::string_view bytes);
     std::optional<std::string> read(const std::string& jobId, const std::string& name) const;
@@ -41,7 +42,7 @@ void removeTemporaryFiles(const std::filesystem::path& dir);
 // sweep.json lists it), written as they finish and read back when an interrupted sweep resumes.
 std::string sweepPointFile(size_t round, size_t point);
 constexpr const char* kSweepPointPrefix = "point-";
-SweepCheckpoint sweepCheckpoint(ResultFiles& files, const std::string& jobId);
+SweepCheckpoint sweepCheckpoint(ResultStore& files, const std::string& jobId);
 
 // Writes bytes to path.tmp, fsyncs it, renames it over path and fsyncs path's folder (POSIX: the rename is
 // atomic, and durable once the folder is synced). Throws Error.

@@ -1,0 +1,62 @@
+#include "problem.h"
+
+#include <iostream>
+
+namespace facetlight::server {
+
+std::string_view reasonPhrase(int status) {
+    switch (status) {
+        case 400:
+            return "Bad Request";
+        case 404:
+            return "Not Found";
+        case 405:
+            return "Method Not Allowed";
+        case 409:
+            return "Conflict";
+        case 411:
+            return "Length Required";
+        case 413:
+            return "Payload Too Large";
+        case 414:
+            return "URI Too Long";
+        case 415:
+            return "Unsupported Media Type";
+        case 422:
+            return "Unprocessable Content";
+        case 500:
+            return "Internal Server Error";
+        case 503:
+            return "Service Unavailable";
+        case 507:
+            return "Insufficient Storage";
+        default:
+            return status >= 500 ? "Server Error" : "Client Error";
+    }
+}
+
+void problem(httplib::Response& res, int status, const std::string& detail, const std::string& field) {
+    nlohmann::json body = {
+        {"type", "about:blank"}, {"title", reasonPhrase(status)}, {"status", status}, {"detail", detail}};
+    if (!field.empty()) body["field"] = field;
+    res.status = status;
+    res.set_content(body.dump(), kProblemType);
+}
+
+void sendJson(httplib::Response& res, int status, const nlohmann::json& body) {
+    res.status = status;
+    res.set_content(body.dump(2) + "\n", kJsonType);
+}
+
+void storageProblem(httplib::Response& res, const StorageError& e, uint64_t freeBytes) {
+    std::cerr << "facetlight-server: storage: " << e.what() << "\n";
+    res.set_header("Retry-After", "60");
+    if (e.full() || freeBytes == 0)
+        return problem(
+            res, 507,
+            "the server's storage is full: nothing was stored; try again once space is freed, e.g. by "
+            "deleting finished jobs");
+    problem(res, 503, "the server's storage is failing: nothing was stored; the server log has the details");
+}
+
+}  // namespace facetlight::server
