@@ -11,7 +11,9 @@
 #include "io/mesh_io.h"
 #include "io/mesh_resolver.h"
 #include "io/obj_writer.h"
+#include "stone/proportions.h"
 #include "stone/stone.h"
+#include "stone/stone_json.h"
 #include "util/error.h"
 #include "util/number_text.h"
 
@@ -263,6 +265,26 @@ TEST(CutLibrary, AtLeastTenShapesWithSnakeCaseNames) {
             EXPECT_LE(p.defaultValue, p.max) << shape.name << " " << p.name;
         }
     }
+}
+
+TEST(CutLibrary, OneTableNamesEachProportionForTheTerminalAndTheJson) {
+    const Stone s = Stone::build(makeCut("round_brilliant"), "round_brilliant");
+    const nlohmann::json j = proportionsJson(s.proportions);
+    EXPECT_EQ(j.size(), kProportionFields.size() + 4);  // and length, width, diameter, length_to_width
+    for (size_t i = 0; i < kProportionFields.size(); ++i) {
+        const ProportionField& field = kProportionFields[i];
+        for (size_t k = 0; k < i; ++k) {
+            EXPECT_NE(field.key, kProportionFields[k].key);
+            EXPECT_NE(field.label, kProportionFields[k].label);
+            EXPECT_NE(field.member, kProportionFields[k].member);
+        }
+        ASSERT_TRUE(s.proportions.*field.member) << field.key;  // a round brilliant has every figure
+        EXPECT_EQ(j.at(std::string(field.key)).get<double>(), *(s.proportions.*field.member));
+    }
+    EXPECT_NEAR(j.at("table_pct").get<double>(), 57, 0.05);
+    EXPECT_NEAR(j.at("crown_angle_deg").get<double>(), 34, 1e-6);
+    EXPECT_NEAR(j.at("pavilion_angle_deg").get<double>(), 40.7, 1e-6);
+    EXPECT_NEAR(j.at("girdle_pct").get<double>(), 2.5, 1e-6);
 }
 
 struct RegionCounts {
