@@ -7,7 +7,9 @@
 #include <sstream>
 
 #include "cuts/cut_library.h"
+#include "cuts/fancy_cuts.h"
 #include "cuts/round_brilliant.h"
+#include "cuts/step_cuts.h"
 #include "io/mesh_io.h"
 #include "io/mesh_resolver.h"
 #include "io/obj_writer.h"
@@ -265,6 +267,27 @@ TEST(CutLibrary, AtLeastTenShapesWithSnakeCaseNames) {
             EXPECT_LE(p.defaultValue, p.max) << shape.name << " " << p.name;
         }
     }
+}
+
+TEST(CutLibrary, ParametersAreTheRowsOfTheDesignTables) {
+    // A shape's defaults are its design's own, and its build sets the member each row names.
+    const CutValues emerald = completeCutValues(findCutShape("emerald"), {});
+    EXPECT_EQ(emerald.at("ratio"), StepCutParams{}.ratio);
+    EXPECT_EQ(emerald.at("pavilion_step"), StepCutParams{}.pavilionStepDeg);
+    EXPECT_EQ(emerald.at("crown_steps"), StepCutParams{}.crownSteps);
+    StepCutParams step;
+    step.tablePct = 60, step.crownSteps = 2;
+    EXPECT_EQ(objText(makeCut("emerald", {{"table", 60}, {"crown_steps", 2}})), objText(makeStepCut(step)));
+    // The fancy shapes lay the faceters' halves on their outline.
+    FancyBrilliantParams pear;
+    pear.outline = FancyOutline::Pear, pear.ratio = 1.5, pear.tiers.halves = HalvesLayout::Faceter;
+    pear.tiers.starPct = 45;
+    EXPECT_EQ(objText(makeCut("pear", {{"star", 45}})), objText(makeFancyBrilliant(pear)));
+    const CutParameter& halves = findCutShape("round_brilliant").parameters.back();
+    EXPECT_EQ(halves.choices, (std::vector<std::string>{"trade", "faceter"}));
+    EXPECT_TRUE(halves.integer);
+    EXPECT_EQ(halves.max, 1);
+    EXPECT_EQ(cutFlag("girdle_facets"), "--girdle-facets");
 }
 
 TEST(CutLibrary, OneTableNamesEachProportionForTheTerminalAndTheJson) {
