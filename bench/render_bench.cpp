@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "bench_timing.h"
+#include "cuts/mesh_resolver.h"
 #include "intersect/scene.h"
-#include "io/mesh_resolver.h"
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
 #include "render/fire_picture.h"

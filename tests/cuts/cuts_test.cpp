@@ -8,10 +8,10 @@
 
 #include "cuts/cut_library.h"
 #include "cuts/fancy_cuts.h"
+#include "cuts/mesh_resolver.h"
 #include "cuts/round_brilliant.h"
 #include "cuts/step_cuts.h"
 #include "io/mesh_io.h"
-#include "io/mesh_resolver.h"
 #include "io/obj_writer.h"
 #include "stone/proportions.h"
 #include "stone/stone.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Fixtures shared by the test folders: stones built once per test binary.
-#include "io/mesh_resolver.h"
+#include "cuts/mesh_resolver.h"
 #include "stone/stone.h"
 
 namespace facetlight::test {
