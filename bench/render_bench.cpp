@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "bench_timing.h"
-#include "io/mesh_resolver.h"
+#include "cuts/mesh_resolver.h"
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
 #include "render/fire_picture.h"

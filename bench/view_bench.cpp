@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "bench_timing.h"
-#include "io/mesh_resolver.h"
+#include "cuts/mesh_resolver.h"
 #include "pictures/aset_picture.h"
 #include "pictures/tilt_chart.h"
 #include "pictures/webp_animation.h"

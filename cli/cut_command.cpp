@@ -23,13 +23,6 @@ struct CutOptions {
     CutValues values;
 };
 
-std::string flagOf(const std::string& name) {
-    std::string flag = name;
-    for (char& c : flag)
-        if (c == '_') c = '-';
-    return "--" + flag;
-}
-
 void printList() {
     for (const auto& shape : cutShapes()) {
         std::printf("%s: %s\n", shape.name.c_str(), shape.description.c_str());
@@ -39,8 +32,9 @@ void printList() {
                 range.clear();
                 for (const auto& c : p.choices) range += (range.empty() ? "" : "|") + c;
             }
-            std::printf("  %-17s %8s  %s %-4s %s\n", flagOf(p.name).c_str(),
-                        parameterText(p, p.defaultValue).c_str(), range.c_str(), p.unit.c_str(), p.help.c_str());
+            std::printf("  %-17s %8s  %s %-4s %s\n", cutFlag(p.name).c_str(),
+                        parameterText(p, p.defaultValue).c_str(), range.c_str(), p.unit.c_str(),
+                        p.help.c_str());
         }
     }
 }
@@ -69,7 +63,7 @@ void addCutCommand(CLI::App& app) {
             const std::string name = p.name;
             if (!p.choices.empty()) {
                 cmd->add_option_function<std::string>(
-                       flagOf(name),
+                       cutFlag(name),
                        [options, param = p](const std::string& v) {
                            options->values[param.name] = choiceIndex(param, v);
                        },
@@ -78,7 +72,7 @@ void addCutCommand(CLI::App& app) {
                 continue;
             }
             cmd->add_option_function<double>(
-                   flagOf(name), [options, name](const double& v) { options->values[name] = v; }, p.help)
+                   cutFlag(name), [options, name](const double& v) { options->values[name] = v; }, p.help)
                 ->type_name(p.unit.empty() ? "NUMBER" : p.unit);
         }
     cmd->callback([options] {

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "commands.h"
-#include "io/mesh_resolver.h"
+#include "cuts/mesh_resolver.h"
 #include "stone/stone_json.h"
 #include "terminal_output.h"
 

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "commands.h"
-#include "io/mesh_resolver.h"
+#include "cuts/mesh_resolver.h"
 #include "process_communicator.h"
 #include "result_folder.h"
 #include "study/study.h"

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "commands.h"
-#include "io/mesh_resolver.h"
+#include "cuts/mesh_resolver.h"
 #include "process_communicator.h"
 #include "progress_json.h"
 #include "result_folder.h"

@@ -15,7 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "stone/stone.h"
+#include "stone/proportions.h"
 #include "util/error.h"
 #include "util/run_control.h"
 
@@ -41,26 +41,14 @@ inline void printAsetShares(std::ostream& out, const nlohmann::json& aset) {
 // A stone's trade proportions, one per line ("-" where one does not apply), as `info` and `cut` print them
 // (scripts/make-meshes reads the figure after the label).
 inline void printProportions(const Proportions& p) {
-    auto line = [](const char* label, const std::optional<double>& v, const char* unit) {
-        if (v)
-            std::printf("  %-18s %8.2f %s\n", label, *v, unit);
-        else
-            std::printf("  %-18s %8s\n", label, "-");
-    };
     std::printf("  %-18s %8.3f\n", "length/width", p.length / p.width);
-    line("table", p.tablePct, "%");
-    line("crown height", p.crownHeightPct, "%");
-    line("girdle thinnest", p.girdlePct, "%");
-    line("girdle thickest", p.girdleThickestPct, "%");
-    line("pavilion depth", p.pavilionDepthPct, "%");
-    line("total depth", p.totalDepthPct, "%");
-    line("crown angle", p.crownAngleDeg, "deg");
-    line("pavilion angle", p.pavilionAngleDeg, "deg");
-    line("star angle", p.starAngleDeg, "deg");
-    line("upper half angle", p.upperHalfAngleDeg, "deg");
-    line("lower half angle", p.lowerHalfAngleDeg, "deg");
-    line("star length", p.starPct, "%");
-    line("lower half length", p.lowerHalfPct, "%");
+    for (const ProportionField& field : kProportionFields) {
+        const std::string label(field.label);
+        if (const std::optional<double>& v = p.*field.member)
+            std::printf("  %-18s %8.2f %s\n", label.c_str(), *v, std::string(field.unit).c_str());
+        else
+            std::printf("  %-18s %8s\n", label.c_str(), "-");
+    }
 }
 
 // Redraws the run's phase and a bar of its progress on stderr every 100 ms while it lives, only when stderr

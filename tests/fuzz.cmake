@@ -41,8 +41,10 @@ if(FACETLIGHT_FUZZ)
   # Comparison tracing guides mutations toward values compared with input bytes; the geometry compares
   # indices and computed coordinates, never input bytes, and its hooks took a quarter of fuzz_gemcad's time
   # (perf). Edge coverage and the sanitizers stay.
-  set_source_files_properties(${CMAKE_SOURCE_DIR}/core/geometry/halfspace.cpp
-    ${CMAKE_SOURCE_DIR}/core/geometry/self_intersection.cpp ${CMAKE_SOURCE_DIR}/core/stone/stone.cpp
+  set(untraced_sources geometry/halfspace.cpp geometry/self_intersection.cpp stone/stone.cpp stone/triangulation.cpp
+    stone/mesh_checks.cpp stone/standard_frame.cpp stone/girdle.cpp stone/proportions.cpp)
+  list(TRANSFORM untraced_sources PREPEND ${CMAKE_SOURCE_DIR}/core/)
+  set_source_files_properties(${untraced_sources}
     TARGET_DIRECTORY facetlight_core PROPERTIES COMPILE_OPTIONS -fno-sanitize-coverage=trace-cmp)
   target_link_options(facetlight_core INTERFACE ${fuzz_flags})
   foreach(kind ${FACETLIGHT_FUZZ_TARGETS})

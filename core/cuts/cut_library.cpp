@@ -1,5 +1,6 @@
 #include "cuts/cut_library.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cuts/facet_design.h"
@@ -7,12 +8,13 @@
 #include "cuts/round_brilliant.h"
 #include "cuts/step_cuts.h"
 #include "util/error.h"
+#include "util/settings_schema.h"
 
 namespace facetlight {
 
 namespace {
 
-using Params = std::vector<CutParameter>;
+using settings::Field;
 
 std::string choiceList(const CutParameter& param) {
     std::string out;
@@ -20,45 +22,94 @@ std::string choiceList(const CutParameter& param) {
     return out;
 }
 
-// The round brilliant's tiers, with defaults from `d`; fancy shapes and presets share them.
-Params brilliantParameters(const RoundBrilliantParams& d) {
+// A design's parameters are the rows of a settings table over its params struct (util/settings_schema.h):
+// each row names the member it sets, its range, help and unit (the flag is --key with '-' for '_'). The
+// parameters' list, defaults and checks, and the build, all follow from the rows.
+settings::Doc about(std::string help, std::string unit = "") {
+    return {"", std::move(help), std::move(unit)};
+}
+
+// The parameter a row describes, with the default the design's defaults give it (`value`, as the row writes
+// it); a choice's value is the index of its name.
+CutParameter cutParameter(const settings::FieldInfo& field, const nlohmann::json& value) {
+    CutParameter p{field.key, field.doc.unit, field.doc.help};
+    p.integer = field.type != settings::FieldType::Number;
+    if (field.type == settings::FieldType::Number) {
+        p.min = field.range.lo, p.max = field.range.hi, p.defaultValue = value.get<double>();
+    } else if (field.type == settings::FieldType::Integer) {
+        p.min = double(field.minCount), p.max = double(field.maxCount), p.defaultValue = value.get<double>();
+    } else {
+        p.choices = field.choices;
+        p.min = 0, p.max = double(field.choices.size() - 1);
+        p.defaultValue = choiceIndex(p, value.get<std::string>());
+    }
+    return p;
+}
+
+// Checked values as the rows read them: numbers, and a choice's name for its index.
+nlohmann::json rowValues(const std::vector<CutParameter>& parameters, const CutValues& values) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const CutParameter& p : parameters) {
+        const double v = values.at(p.name);
+        j[p.name] = p.choices.empty() ? nlohmann::json(v) : nlohmann::json(p.choices[size_t(v)]);
+    }
+    return j;
+}
+
+// A shape of the library: its design's defaults, the rows of its parameters, and what makes the mesh.
+template <class P>
+CutShape tableShape(std::string name, std::string description, const P& defaults, std::vector<Field<P>> rows,
+                    PolygonMesh (*make)(const P&)) {
+    const settings::Schema<P> schema(std::move(rows));
+    const nlohmann::json given = schema.write(defaults);
+    std::vector<CutParameter> parameters;
+    for (const settings::FieldInfo& field : schema.fields())
+        parameters.push_back(cutParameter(field, given.at(field.key)));
+    return {std::move(name), std::move(description), parameters,
+            [schema, defaults, parameters, make](const CutValues& v) {
+                P p = defaults;
+                schema.read(p, rowValues(parameters, v));
+                return make(p);
+            }};
+}
+
+// The round brilliant's tiers; fancy shapes and presets share them.
+std::vector<Field<RoundBrilliantParams>> brilliantRows() {
+    using P = RoundBrilliantParams;
     return {
-        {"table", "%", "table, corner to corner (fancy shapes: across the width)", d.tablePct, 20, 90},
-        {"crown", "deg", "crown angle (bezels)", d.crownAngleDeg, 10, 60},
-        {"pavilion", "deg", "pavilion angle (mains)", d.pavilionAngleDeg, 20, 60},
-        {"girdle", "%", "girdle thickness where thinnest (the middle of each half); 0 = knife edge", d.girdlePct,
-         0, 10},
-        {"star", "%", "star length, table edge to girdle", d.starPct, 10, 90},
-        {"lower_half", "%", "lower-half length, girdle to centre", d.lowerHalfPct, 10, 95},
-        {"culet", "%", "culet, flat to flat; 0 = pointed", d.culetPct, 0, 30},
-        {"girdle_facets", "", "0 = smooth (64 sides), else a multiple of 16", double(d.girdleFacets), 0, 400,
-         true},
+        settings::number("table", &P::tablePct, {20, 90},
+                         about("table, corner to corner (fancy shapes: across the width)", "%")),
+        settings::number("crown", &P::crownAngleDeg, {10, 60}, about("crown angle (bezels)", "deg")),
+        settings::number("pavilion", &P::pavilionAngleDeg, {20, 60}, about("pavilion angle (mains)", "deg")),
+        settings::number(
+            "girdle", &P::girdlePct, {0, 10},
+            about("girdle thickness where thinnest (the middle of each half); 0 = knife edge", "%")),
+        settings::number("star", &P::starPct, {10, 90}, about("star length, table edge to girdle", "%")),
+        settings::number("lower_half", &P::lowerHalfPct, {10, 95},
+                         about("lower-half length, girdle to centre", "%")),
+        settings::number("culet", &P::culetPct, {0, 30}, about("culet, flat to flat; 0 = pointed", "%")),
+        settings::count("girdle_facets", &P::girdleFacets, 0, 400,
+                        about("0 = smooth (64 sides), else a multiple of 16")),
     };
 }
 
-// Round outlines only: the fancy shapes keep the faceters' halves, which stay in place when their planes are
-// laid on a pointed outline (the trade's construction is defined on the circle).
-Params roundParameters(const RoundBrilliantParams& d) {
-    Params params = brilliantParameters(d);
-    params.push_back({"halves", "",
-                      "trade: the trade's halves (DiamCalc, GIA reports); faceter: 3.75 deg off the mains, "
-                      "another stone",
-                      double(d.halves), 0, 1, true, {"trade", "faceter"}});
-    return params;
+// A row of the tiers as a row of a fancy shape, which holds them.
+Field<FancyBrilliantParams> ofTiers(Field<RoundBrilliantParams> row) {
+    return {row.info,
+            [read = row.read](FancyBrilliantParams& p, const nlohmann::json& j, const std::string& path) {
+                read(p.tiers, j, path);
+            },
+            [write = row.write](const FancyBrilliantParams& p) { return write(p.tiers); }};
 }
 
-RoundBrilliantParams brilliantValues(const CutValues& v) {
-    RoundBrilliantParams p;
-    p.tablePct = v.at("table");
-    p.crownAngleDeg = v.at("crown");
-    p.pavilionAngleDeg = v.at("pavilion");
-    p.girdlePct = v.at("girdle");
-    p.starPct = v.at("star");
-    p.lowerHalfPct = v.at("lower_half");
-    p.culetPct = v.at("culet");
-    p.girdleFacets = int(v.at("girdle_facets"));
-    p.halves = v.count("halves") ? HalvesLayout(int(v.at("halves"))) : HalvesLayout::Faceter;
-    return p;
+template <class P>
+Field<P> ratioRow(double P::*member) {
+    return settings::number("ratio", member, {1, 3}, about("length / width"));
+}
+
+template <class P>
+Field<P> cornerRow(double P::*member, std::string help) {
+    return settings::number("corner", member, {1, 45}, about(std::move(help), "%"));
 }
 
 RoundBrilliantParams withValues(double table, double crown, double pavilion, double girdle, double star,
@@ -69,54 +120,89 @@ RoundBrilliantParams withValues(double table, double crown, double pavilion, dou
     return p;
 }
 
+// Round outlines only choose the halves: the fancy shapes keep the faceters' halves, which stay in place when
+// their planes are laid on a pointed outline (the trade's construction is defined on the circle).
 CutShape roundShape(std::string name, std::string description, const RoundBrilliantParams& defaults) {
-    return {std::move(name), std::move(description), roundParameters(defaults),
-            [](const CutValues& v) { return makeRoundBrilliant(brilliantValues(v)); }};
+    std::vector<Field<RoundBrilliantParams>> rows = brilliantRows();
+    rows.push_back(
+        settings::choice("halves", &RoundBrilliantParams::halves, kHalvesLayoutNames,
+                         about("trade: the trade's halves (DiamCalc, GIA reports); faceter: 3.75 deg "
+                               "off the mains, another stone")));
+    return tableShape(std::move(name), std::move(description), defaults, std::move(rows), makeRoundBrilliant);
 }
 
 CutShape fancyShape(std::string name, std::string description, FancyOutline outline, double ratio,
                     const RoundBrilliantParams& tiers, double corner = 0) {
-    Params params = brilliantParameters(tiers);
-    params.push_back({"ratio", "", "length / width", ratio, 1, 3});
-    if (corner > 0)
-        params.push_back({"corner", "%",
-                          outline == FancyOutline::Cushion ? "corner radius, % of the width"
-                                                           : "corner cut, % of the width",
-                          corner, 1, 45});
-    return {std::move(name), std::move(description), std::move(params), [outline](const CutValues& v) {
-                FancyBrilliantParams p;
-                p.outline = outline;
-                p.tiers = brilliantValues(v);
-                p.ratio = v.at("ratio");
-                if (v.count("corner")) p.cornerPct = v.at("corner");
-                return makeFancyBrilliant(p);
-            }};
+    FancyBrilliantParams defaults;
+    defaults.outline = outline, defaults.tiers = tiers, defaults.ratio = ratio;
+    defaults.tiers.halves = HalvesLayout::Faceter;
+    std::vector<Field<FancyBrilliantParams>> rows;
+    for (auto& row : brilliantRows()) rows.push_back(ofTiers(std::move(row)));
+    rows.push_back(ratioRow(&FancyBrilliantParams::ratio));
+    if (corner > 0) {
+        defaults.cornerPct = corner;
+        rows.push_back(cornerRow(&FancyBrilliantParams::cornerPct, outline == FancyOutline::Cushion
+                                                                       ? "corner radius, % of the width"
+                                                                       : "corner cut, % of the width"));
+    }
+    return tableShape(std::move(name), std::move(description), defaults, std::move(rows), makeFancyBrilliant);
 }
 
-CutShape stepShape(std::string name, std::string description, const StepCutParams& d) {
-    Params params{
-        {"ratio", "", "length / width", d.ratio, 1, 3},
-        {"corner", "%", "corner cut, % of the width", d.cornerPct, 1, 45},
-        {"table", "%", "table, % of the width", d.tablePct, 20, 90},
-        {"crown", "deg", "crown angle of the step at the girdle", d.crownAngleDeg, 10, 70},
-        {"pavilion", "deg", "pavilion angle of the step at the girdle", d.pavilionAngleDeg, 20, 80},
-        {"girdle", "%", "girdle thickness", d.girdlePct, 0, 10},
-        {"crown_step", "deg", "each crown step is this much flatter than the one outside it", d.crownStepDeg,
-         0, 20},
-        {"pavilion_step", "deg", "each pavilion step is this much flatter than the one outside it",
-         d.pavilionStepDeg, 0, 20},
-        {"crown_steps", "", "number of crown steps", double(d.crownSteps), 1, 6, true},
-        {"pavilion_steps", "", "number of pavilion steps", double(d.pavilionSteps), 1, 6, true},
-    };
-    return {std::move(name), std::move(description), std::move(params), [](const CutValues& v) {
-                StepCutParams p;
-                p.ratio = v.at("ratio"), p.cornerPct = v.at("corner"), p.tablePct = v.at("table");
-                p.crownAngleDeg = v.at("crown"), p.pavilionAngleDeg = v.at("pavilion"),
-                p.girdlePct = v.at("girdle");
-                p.crownStepDeg = v.at("crown_step"), p.pavilionStepDeg = v.at("pavilion_step");
-                p.crownSteps = int(v.at("crown_steps")), p.pavilionSteps = int(v.at("pavilion_steps"));
-                return makeStepCut(p);
-            }};
+CutShape stepShape(std::string name, std::string description, const StepCutParams& defaults) {
+    using P = StepCutParams;
+    return tableShape(
+        std::move(name), std::move(description), defaults,
+        {
+            ratioRow(&P::ratio),
+            cornerRow(&P::cornerPct, "corner cut, % of the width"),
+            settings::number("table", &P::tablePct, {20, 90}, about("table, % of the width", "%")),
+            settings::number("crown", &P::crownAngleDeg, {10, 70},
+                             about("crown angle of the step at the girdle", "deg")),
+            settings::number("pavilion", &P::pavilionAngleDeg, {20, 80},
+                             about("pavilion angle of the step at the girdle", "deg")),
+            settings::number("girdle", &P::girdlePct, {0, 10}, about("girdle thickness", "%")),
+            settings::number("crown_step", &P::crownStepDeg, {0, 20},
+                             about("each crown step is this much flatter than the one outside it", "deg")),
+            settings::number("pavilion_step", &P::pavilionStepDeg, {0, 20},
+                             about("each pavilion step is this much flatter than the one outside it", "deg")),
+            settings::count("crown_steps", &P::crownSteps, 1, 6, about("number of crown steps")),
+            settings::count("pavilion_steps", &P::pavilionSteps, 1, 6, about("number of pavilion steps")),
+        },
+        makeStepCut);
+}
+
+CutShape singleShape() {
+    using P = SingleCutParams;
+    return tableShape(
+        "single_cut", "single cut: table, 8 crown and 8 pavilion facets", P{},
+        {
+            settings::number("table", &P::tablePct, {20, 90}, about("table, corner to corner", "%")),
+            settings::number("crown", &P::crownAngleDeg, {10, 60}, about("crown angle", "deg")),
+            settings::number("pavilion", &P::pavilionAngleDeg, {20, 60}, about("pavilion angle", "deg")),
+            settings::number("girdle", &P::girdlePct, {0.1, 10}, about("girdle thickness", "%")),
+            settings::number("culet", &P::culetPct, {0, 30}, about("culet, flat to flat; 0 = pointed", "%")),
+            settings::count("girdle_facets", &P::girdleFacets, 8, 400,
+                            about("girdle sides, a multiple of 8")),
+        },
+        makeSingleCut);
+}
+
+CutShape roseShape() {
+    using P = RoseCutParams;
+    return tableShape(
+        "rose_cut", "Dutch rose: a dome of 24 triangles on a flat base", P{},
+        {
+            settings::number("lower", &P::lowerAngleDeg, {10, 80},
+                             about("slope of the 12 facets at the girdle", "deg")),
+            settings::number("middle", &P::middleAngleDeg, {5, 75},
+                             about("slope of the 6 middle facets", "deg")),
+            settings::number("top", &P::topAngleDeg, {2, 70},
+                             about("slope of the 6 facets meeting at the top", "deg")),
+            settings::number("girdle", &P::girdlePct, {0.1, 10}, about("girdle thickness", "%")),
+            settings::count("girdle_facets", &P::girdleFacets, 12, 396,
+                            about("girdle sides, a multiple of 12")),
+        },
+        makeRoseCut);
 }
 
 std::vector<CutShape> buildLibrary() {
@@ -154,39 +240,8 @@ std::vector<CutShape> buildLibrary() {
     StepCutParams asscher;
     asscher.ratio = 1.0, asscher.cornerPct = 25, asscher.tablePct = 55, asscher.crownAngleDeg = 40;
     shapes.push_back(stepShape("asscher", "Asscher: square step cut with wide corners", asscher));
-    const SingleCutParams single;
-    shapes.push_back(
-        {"single_cut",
-         "single cut: table, 8 crown and 8 pavilion facets",
-         {{"table", "%", "table, corner to corner", single.tablePct, 20, 90},
-          {"crown", "deg", "crown angle", single.crownAngleDeg, 10, 60},
-          {"pavilion", "deg", "pavilion angle", single.pavilionAngleDeg, 20, 60},
-          {"girdle", "%", "girdle thickness", single.girdlePct, 0.1, 10},
-          {"culet", "%", "culet, flat to flat; 0 = pointed", single.culetPct, 0, 30},
-          {"girdle_facets", "", "girdle sides, a multiple of 8", double(single.girdleFacets), 8, 400, true}},
-         [](const CutValues& v) {
-             SingleCutParams p;
-             p.tablePct = v.at("table"), p.crownAngleDeg = v.at("crown");
-             p.pavilionAngleDeg = v.at("pavilion"), p.girdlePct = v.at("girdle");
-             p.culetPct = v.at("culet"), p.girdleFacets = int(v.at("girdle_facets"));
-             return makeSingleCut(p);
-         }});
-    const RoseCutParams rose;
-    shapes.push_back(
-        {"rose_cut",
-         "Dutch rose: a dome of 24 triangles on a flat base",
-         {{"lower", "deg", "slope of the 12 facets at the girdle", rose.lowerAngleDeg, 10, 80},
-          {"middle", "deg", "slope of the 6 middle facets", rose.middleAngleDeg, 5, 75},
-          {"top", "deg", "slope of the 6 facets meeting at the top", rose.topAngleDeg, 2, 70},
-          {"girdle", "%", "girdle thickness", rose.girdlePct, 0.1, 10},
-          {"girdle_facets", "", "girdle sides, a multiple of 12", double(rose.girdleFacets), 12, 396, true}},
-         [](const CutValues& v) {
-             RoseCutParams p;
-             p.lowerAngleDeg = v.at("lower"), p.middleAngleDeg = v.at("middle");
-             p.topAngleDeg = v.at("top"), p.girdlePct = v.at("girdle");
-             p.girdleFacets = int(v.at("girdle_facets"));
-             return makeRoseCut(p);
-         }});
+    shapes.push_back(singleShape());
+    shapes.push_back(roseShape());
     return shapes;
 }
 
@@ -252,14 +307,16 @@ PolygonMesh makeCut(const std::string& shape, const CutValues& values) {
     return s.build(completeCutValues(s, values));
 }
 
+std::string cutFlag(const std::string& name) {
+    std::string flag = "--" + name;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    return flag;
+}
+
 std::string cutCommandLine(const CutShape& shape, const CutValues& completeValues) {
     std::string out = shape.name;
-    for (const auto& p : shape.parameters) {
-        std::string flag = p.name;
-        for (char& c : flag)
-            if (c == '_') c = '-';
-        out += " --" + flag + " " + parameterText(p, completeValues.at(p.name));
-    }
+    for (const auto& p : shape.parameters)
+        out += " " + cutFlag(p.name) + " " + parameterText(p, completeValues.at(p.name));
     return out;
 }
 

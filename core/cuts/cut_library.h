@@ -43,6 +43,9 @@ double choiceIndex(const CutParameter& param, const std::string& name);
 // A parameter's value as the command line writes it: a choice's name, else the number.
 std::string parameterText(const CutParameter& param, double value);
 
+// "--lower-half" for lower_half: a parameter's command-line flag.
+std::string cutFlag(const std::string& name);
+
 // "round_brilliant --table 57 --crown 34 ...": the command-line arguments that build this design.
 std::string cutCommandLine(const CutShape& shape, const CutValues& completeValues);
 

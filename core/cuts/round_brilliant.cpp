@@ -69,10 +69,6 @@ double girdleBulge(int sides, double a) {
 
 }  // namespace
 
-std::string_view halvesLayoutName(HalvesLayout layout) {
-    return layout == HalvesLayout::Trade ? "trade" : "faceter";
-}
-
 int girdleSideCount(const RoundBrilliantParams& p) {
     if (p.girdlePct == 0) return 0;
     return p.girdleFacets == 0 ? 64 : p.girdleFacets;

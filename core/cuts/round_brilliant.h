@@ -1,11 +1,11 @@
 #pragma once
 // The round brilliant built from the proportions the trade grades: every facet a plane (azimuth, slope,
 // offset), the stone their intersection. Conventions in docs/optics.md, "Round brilliant".
-#include <string_view>
 #include <vector>
 
 #include "geometry/halfspace.h"
 #include "geometry/polygon_mesh.h"
+#include "util/name_table.h"
 
 namespace facetlight {
 
@@ -14,6 +14,9 @@ namespace facetlight {
 // neighbour, and the mains' (bezels') meeting point at the lower-half (star) length. Faceter: a GemCad-style
 // diagram, each half one index of a 96 gear (3.75 deg) off its main: a different stone.
 enum class HalvesLayout { Trade, Faceter };
+// The layouts' names, as the cut library's `halves` takes them.
+inline constexpr NameTable<HalvesLayout, 2> kHalvesLayoutNames{
+    {{{HalvesLayout::Trade, "trade"}, {HalvesLayout::Faceter, "faceter"}}}};
 
 struct RoundBrilliantParams {
     double tablePct = 57;            // corner to corner, % of the girdle diameter
@@ -26,8 +29,6 @@ struct RoundBrilliantParams {
     int girdleFacets = 0;            // 0 = smooth girdle (64 flat sides); else a multiple of 16
     HalvesLayout halves = HalvesLayout::Trade;
 };
-
-std::string_view halvesLayoutName(HalvesLayout layout);  // "trade", "faceter"
 
 // The facet planes of the stone with girdle diameter 1, girdle centred on z = 0. Throws Error naming the
 // input when the proportions cannot make this stone.

@@ -1,5 +1,9 @@
 #include "stone/stone_json.h"
 
+#include <string>
+
+#include "stone/proportions.h"
+
 namespace facetlight {
 
 namespace {
@@ -11,23 +15,13 @@ nlohmann::json vec3Json(const Vec3& v) { return nlohmann::json::array({v.x, v.y,
 }  // namespace
 
 nlohmann::json proportionsJson(const Proportions& p) {
-    return {{"length", p.length},
-            {"width", p.width},
-            {"diameter", p.diameter},
-            {"length_to_width", p.width > 0 ? p.length / p.width : 0.0},
-            {"table_pct", optionalNumber(p.tablePct)},
-            {"crown_height_pct", optionalNumber(p.crownHeightPct)},
-            {"pavilion_depth_pct", optionalNumber(p.pavilionDepthPct)},
-            {"girdle_pct", optionalNumber(p.girdlePct)},
-            {"girdle_thickest_pct", optionalNumber(p.girdleThickestPct)},
-            {"total_depth_pct", optionalNumber(p.totalDepthPct)},
-            {"crown_angle_deg", optionalNumber(p.crownAngleDeg)},
-            {"pavilion_angle_deg", optionalNumber(p.pavilionAngleDeg)},
-            {"star_angle_deg", optionalNumber(p.starAngleDeg)},
-            {"upper_half_angle_deg", optionalNumber(p.upperHalfAngleDeg)},
-            {"lower_half_angle_deg", optionalNumber(p.lowerHalfAngleDeg)},
-            {"star_pct", optionalNumber(p.starPct)},
-            {"lower_half_pct", optionalNumber(p.lowerHalfPct)}};
+    nlohmann::json j = {{"length", p.length},
+                        {"width", p.width},
+                        {"diameter", p.diameter},
+                        {"length_to_width", p.width > 0 ? p.length / p.width : 0.0}};
+    for (const ProportionField& field : kProportionFields)
+        j[std::string(field.key)] = optionalNumber(p.*field.member);
+    return j;
 }
 
 nlohmann::json stoneSummaryJson(const Stone& stone) {

@@ -7,11 +7,15 @@
 #include <sstream>
 
 #include "cuts/cut_library.h"
+#include "cuts/fancy_cuts.h"
+#include "cuts/mesh_resolver.h"
 #include "cuts/round_brilliant.h"
+#include "cuts/step_cuts.h"
 #include "io/mesh_io.h"
-#include "io/mesh_resolver.h"
 #include "io/obj_writer.h"
+#include "stone/proportions.h"
 #include "stone/stone.h"
+#include "stone/stone_json.h"
 #include "util/error.h"
 #include "util/number_text.h"
 
@@ -263,6 +267,47 @@ TEST(CutLibrary, AtLeastTenShapesWithSnakeCaseNames) {
             EXPECT_LE(p.defaultValue, p.max) << shape.name << " " << p.name;
         }
     }
+}
+
+TEST(CutLibrary, ParametersAreTheRowsOfTheDesignTables) {
+    // A shape's defaults are its design's own, and its build sets the member each row names.
+    const CutValues emerald = completeCutValues(findCutShape("emerald"), {});
+    EXPECT_EQ(emerald.at("ratio"), StepCutParams{}.ratio);
+    EXPECT_EQ(emerald.at("pavilion_step"), StepCutParams{}.pavilionStepDeg);
+    EXPECT_EQ(emerald.at("crown_steps"), StepCutParams{}.crownSteps);
+    StepCutParams step;
+    step.tablePct = 60, step.crownSteps = 2;
+    EXPECT_EQ(objText(makeCut("emerald", {{"table", 60}, {"crown_steps", 2}})), objText(makeStepCut(step)));
+    // The fancy shapes lay the faceters' halves on their outline.
+    FancyBrilliantParams pear;
+    pear.outline = FancyOutline::Pear, pear.ratio = 1.5, pear.tiers.halves = HalvesLayout::Faceter;
+    pear.tiers.starPct = 45;
+    EXPECT_EQ(objText(makeCut("pear", {{"star", 45}})), objText(makeFancyBrilliant(pear)));
+    const CutParameter& halves = findCutShape("round_brilliant").parameters.back();
+    EXPECT_EQ(halves.choices, (std::vector<std::string>{"trade", "faceter"}));
+    EXPECT_TRUE(halves.integer);
+    EXPECT_EQ(halves.max, 1);
+    EXPECT_EQ(cutFlag("girdle_facets"), "--girdle-facets");
+}
+
+TEST(CutLibrary, OneTableNamesEachProportionForTheTerminalAndTheJson) {
+    const Stone s = Stone::build(makeCut("round_brilliant"), "round_brilliant");
+    const nlohmann::json j = proportionsJson(s.proportions);
+    EXPECT_EQ(j.size(), kProportionFields.size() + 4);  // and length, width, diameter, length_to_width
+    for (size_t i = 0; i < kProportionFields.size(); ++i) {
+        const ProportionField& field = kProportionFields[i];
+        for (size_t k = 0; k < i; ++k) {
+            EXPECT_NE(field.key, kProportionFields[k].key);
+            EXPECT_NE(field.label, kProportionFields[k].label);
+            EXPECT_NE(field.member, kProportionFields[k].member);
+        }
+        ASSERT_TRUE(s.proportions.*field.member) << field.key;  // a round brilliant has every figure
+        EXPECT_EQ(j.at(std::string(field.key)).get<double>(), *(s.proportions.*field.member));
+    }
+    EXPECT_NEAR(j.at("table_pct").get<double>(), 57, 0.05);
+    EXPECT_NEAR(j.at("crown_angle_deg").get<double>(), 34, 1e-6);
+    EXPECT_NEAR(j.at("pavilion_angle_deg").get<double>(), 40.7, 1e-6);
+    EXPECT_NEAR(j.at("girdle_pct").get<double>(), 2.5, 1e-6);
 }
 
 struct RegionCounts {

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <thread>
 
-#include "io/mesh_resolver.h"
+#include "cuts/mesh_resolver.h"
 #include "study/study.h"
 #include "util/error.h"
 

@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include "io/mesh_resolver.h"
+#include "cuts/mesh_resolver.h"
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
 #include "render/renderer.h"

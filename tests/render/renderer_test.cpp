@@ -7,8 +7,8 @@
 #include <cmath>
 #include <random>
 
+#include "cuts/mesh_resolver.h"
 #include "image/image.h"
-#include "io/mesh_resolver.h"
 #include "optics/spectrum.h"
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"

@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "geometry/halfspace.h"
+#include "stone/mesh_checks.h"
+#include "stone/proportions.h"
 #include "stone/stone.h"
 #include "util/error.h"
 
@@ -188,6 +192,22 @@ TEST(Stone, NonConvexIsDetected) {
     EXPECT_FALSE(s.convex);
     EXPECT_EQ(s.facets.size(), 8u);
     EXPECT_NEAR(s.volume(), 3.0, 1e-12);
+}
+
+TEST(Stone, MeasuredAgainFromItsSteps) {
+    // The tolerances scale with the mesh's extent, which the input check returns; measuring the built stone
+    // again gives the proportions it holds.
+    const PolygonMesh cube = unitCube();
+    const double scale = checkMeshInput(cube, {});
+    EXPECT_DOUBLE_EQ(scale, std::sqrt(3.0));
+    const Stone s = Stone::build(cube, "cube");
+    const Proportions again = measureProportions(s, scale);
+    EXPECT_EQ(again.diameter, s.proportions.diameter);
+    for (const ProportionField& field : kProportionFields)
+        EXPECT_EQ(again.*field.member, s.proportions.*field.member) << field.key;
+    EXPECT_NEAR(*s.proportions.tablePct, 100, 1e-9);  // the top is the table, the sides the girdle
+    EXPECT_NEAR(*s.proportions.girdlePct, 100, 1e-9);
+    EXPECT_FALSE(s.proportions.crownAngleDeg);
 }
 
 TEST(HalfSpace, OctahedronFromEightPlanes) {

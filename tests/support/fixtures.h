@@ -1,6 +1,6 @@
 #pragma once
 // Fixtures shared by the test folders: stones built once per test binary, a whole trace of a stone.
-#include "io/mesh_resolver.h"
+#include "cuts/mesh_resolver.h"
 #include "scene/scene.h"
 #include "stone/stone.h"
 #include "trace/photon_tracer.h"

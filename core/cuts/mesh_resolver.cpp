@@ -1,4 +1,4 @@
-#include "io/mesh_resolver.h"
+#include "cuts/mesh_resolver.h"
 
 #include <filesystem>
 
