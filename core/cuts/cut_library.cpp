@@ -8,7 +8,7 @@
 #include "cuts/round_brilliant.h"
 #include "cuts/step_cuts.h"
 #include "util/error.h"
-#include "util/settings_schema.h"
+#include "settings/settings_schema.h"
 
 namespace facetlight {
 
@@ -22,7 +22,7 @@ std::string choiceList(const CutParameter& param) {
     return out;
 }
 
-// A design's parameters are the rows of a settings table over its params struct (util/settings_schema.h):
+// A design's parameters are the rows of a settings table over its params struct (settings/settings_schema.h):
 // each row names the member it sets, its range, help and unit (the flag is --key with '-' for '_'). The
 // parameters' list, defaults and checks, and the build, all follow from the rows.
 settings::Doc about(std::string help, std::string unit = "") {
