@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "study/sweep.h"
+#include "sweep/sweep_run.h"
 
 using namespace facetlight;
 

@@ -6,8 +6,8 @@
 
 #include "commands.h"
 #include "io/obj_writer.h"
-#include "study/optimizer.h"
-#include "study/sweep_job.h"
+#include "sweep/optimizer.h"
+#include "sweep/sweep_job.h"
 #include "terminal_output.h"
 #include "trace_options.h"
 #include "util/error.h"

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "study/sweep_job.h"
+#include "sweep/sweep_job.h"
 
 namespace facetlight::server {
 

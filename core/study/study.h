@@ -10,7 +10,7 @@
 #include "render/render_settings.h"
 #include "render/view_settings.h"
 #include "stone/stone.h"
-#include "study/sweep_job.h"
+#include "sweep/sweep_job.h"
 #include "trace/trace_settings.h"
 #include "util/distributed.h"
 #include "util/run_control.h"
@@ -60,10 +60,5 @@ StudyResult runSweepJob(const std::string& shape, const StudySettings& settings,
                         Communicator& comm, const SweepCheckpoint& checkpoint = {});
 // The units of a phase of the whole study, over every rank: its photons or pixels (0 for the others).
 uint64_t studyUnits(const StudySettings& settings, RunPhase phase);
-
-class Canceled : public std::exception {
-  public:
-    const char* what() const noexcept override { return "canceled"; }
-};
 
 }  // namespace facetlight

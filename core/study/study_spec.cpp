@@ -1,5 +1,6 @@
 #include "study/study_spec.h"
 
+#include "sweep/sweep_request.h"
 #include "util/error.h"
 
 namespace facetlight {

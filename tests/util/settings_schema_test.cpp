@@ -11,7 +11,7 @@
 #include "render/render_settings.h"
 #include "render/view_settings.h"
 #include "study/study_spec.h"
-#include "study/sweep_job.h"
+#include "sweep/sweep_request.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -304,7 +304,7 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     EXPECT_EQ(documented, keys);
 }
 
-// A sweep's object (core/study/sweep_job.h) has the keys its table reads, no more.
+// A sweep's object (core/sweep/sweep_request.h) has the keys its table reads, no more.
 TEST(SettingsSchema, OpenApiSweepAgreesWithItsTable) {
     std::ifstream in(FACETLIGHT_SOURCE_DIR "/server/openapi.json");
     const json api = json::parse(in);

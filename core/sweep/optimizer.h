@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "study/sweep.h"
+#include "sweep/sweep_run.h"
 
 namespace facetlight {
 

@@ -1,4 +1,4 @@
-#include "study/sweep.h"
+#include "sweep/sweep_run.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,9 @@
 
 #include "intersect/scene.h"
 #include "stats/fire_stats.h"
-#include "study/study.h"
+#include "sweep/canceled.h"
+#include "sweep/sweep_figures.h"
+#include "sweep/sweep_files.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
 

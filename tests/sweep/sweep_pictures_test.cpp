@@ -1,4 +1,4 @@
-#include "study/sweep_pictures.h"
+#include "sweep/sweep_pictures.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,9 @@
-#include "study/optimizer.h"
+#include "sweep/optimizer.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "sweep/sweep_figures.h"
 #include "util/error.h"
 #include "util/number_text.h"
 

@@ -1,8 +1,9 @@
-#include "study/sweep_pictures.h"
+#include "sweep/sweep_pictures.h"
 
 #include <cstdio>
 
 #include "pictures/sweep_plot.h"
+#include "sweep/sweep_figures.h"
 #include "util/error.h"
 
 namespace facetlight {

@@ -1,4 +1,4 @@
-#include "study/optimizer.h"
+#include "sweep/optimizer.h"
 
 #include <gtest/gtest.h>
 
