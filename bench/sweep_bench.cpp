@@ -14,7 +14,7 @@ using namespace facetlight;
 
 int main(int argc, char** argv) {
     const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
-    SweepSpec spec;
+    SweepPlan spec;
     spec.shape = "round_brilliant";
     spec.axes = {parseSweepAxis("pavilion=37:45:0.5"), parseSweepAxis("crown=25:40:1")};
     spec.trace.photons = 200000;

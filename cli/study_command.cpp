@@ -10,7 +10,7 @@
 #include "process_communicator.h"
 #include "progress_json.h"
 #include "result_folder.h"
-#include "study/study_spec.h"
+#include "study/job_request.h"
 #include "terminal_output.h"
 #include "util/bounded_read.h"
 #include "util/error.h"
@@ -36,7 +36,7 @@ nlohmann::json readJob(const std::string& path) {
 
 void runStudyCommand(const StudyOptions& options) {
     Communicator& comm = processCommunicator();
-    StudySpec spec;
+    JobRequest spec;
     try {
         nlohmann::json job = readJob(options.job);
         // Job files of earlier versions hold the trace settings under "trace", as scripts/same-results
@@ -46,7 +46,7 @@ void runStudyCommand(const StudyOptions& options) {
             job.erase("trace");
             job.update(trace);
         }
-        spec = StudySpec::fromJson(job);
+        spec = JobRequest::fromJson(job);
     } catch (const Error& e) {
         throw Error(e.field(), "job file " + options.job + ": " + e.what());
     }

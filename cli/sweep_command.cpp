@@ -56,7 +56,7 @@ void runSweepCommand(const SweepOptions& o) {
     request.refineRounds = o.refineRounds;
     const TraceSettings trace = toTraceSettings(o.trace);
     checkSweepFigures(request, trace, {"--figure", "--maximize", "--constraint", false});
-    const SweepSpec spec = sweepSpec(o.shape, request, trace);
+    const SweepPlan spec = planSweep(o.shape, request, trace);
     const fs::path out(o.out);
     std::error_code ec;
     fs::create_directories(out, ec);

@@ -340,7 +340,7 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
         return problem(res, 400, e.what());
     }
     if (!j.is_object()) return problem(res, 400, "the job must be a JSON object");
-    StudySpec spec;
+    JobRequest spec;
     try {
         spec = parseJobSpec(j, queue_.cores(), &limits_);
     } catch (const Error& e) {
@@ -491,11 +491,11 @@ void Api::getSweepPoints(const Request& req, Response& res) {
     const std::string id = req.matches[1];
     const auto job = queue_.job(id);
     if (!job) return problem(res, 404, "no job with this id");
-    SweepSpec spec;
+    SweepPlan spec;
     try {
-        const StudySpec study = parseJobSpec(job->request, queue_.cores());
+        const JobRequest study = parseJobSpec(job->request, queue_.cores());
         if (!study.settings.sweep) return problem(res, 404, "this job is not a sweep");
-        spec = sweepSpec(study.mesh, *study.settings.sweep, study.settings.trace);
+        spec = planSweep(study.mesh, *study.settings.sweep, study.settings.trace);
     } catch (const Error& e) {
         return problem(res, 500, std::string("the stored job no longer reads: ") + e.what());
     }

@@ -247,7 +247,7 @@ void JobQueue::runJob(JobRecord job, RunControl& control) {
         // A job whose results cannot fit fails now with the reason, rather than after its work.
         if (const std::string shortage = results_.spaceShortage(minFreeBytes_); !shortage.empty())
             return finish(JobState::Failed, shortage + ": the job was not run");
-        StudySpec spec = parseJobSpec(job.request, cores_);
+        JobRequest spec = parseJobSpec(job.request, cores_);
         const int threads = std::min(spec.settings.trace.threads, cores_);
         spec.settings.trace.threads = threads;
         job.state = JobState::Running;
@@ -266,7 +266,7 @@ void JobQueue::runJob(JobRecord job, RunControl& control) {
             runner_.run(spec, control, sweep ? sweepCheckpoint(results_, id) : SweepCheckpoint{});
         try {
             for (const ResultFile& f : kResultFiles)
-                if (std::string bytes = f.bytes(result); !bytes.empty())
+                if (std::string bytes = result.bytes(f); !bytes.empty())
                     results_.write(id, std::string(f.name), bytes);
         } catch (const std::exception& e) {
             // A full or failing disk: the detail (with paths) goes to the log, the job gets a reason a

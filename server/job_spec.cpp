@@ -6,7 +6,7 @@ namespace facetlight::server {
 
 namespace {
 
-void checkRenderLimits(const StudySpec& spec, const ServiceLimits& limits) {
+void checkRenderLimits(const JobRequest& spec, const ServiceLimits& limits) {
     const auto& r = spec.settings.render;
     if (!r) return;
     const std::string side = std::to_string(limits.maxImageSide);
@@ -22,13 +22,13 @@ void checkRenderLimits(const StudySpec& spec, const ServiceLimits& limits) {
 
 }  // namespace
 
-StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits) {
+JobRequest parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits) {
     // This server's cap, not only the core's, names the range a user may ask for.
     if (limits && body.is_object() && body.contains("photons"))
         settings::readCount(body["photons"], "photons", 1, limits->maxPhotons);
-    StudySpec defaults;
+    JobRequest defaults;
     defaults.settings.trace.threads = defaultThreads;
-    const StudySpec spec = StudySpec::fromJson(body, defaults);
+    const JobRequest spec = JobRequest::fromJson(body, defaults);
     if (!body.contains("photons")) throw Error("photons", "photons is required");
     if (limits) checkRenderLimits(spec, *limits);
     if (limits && spec.settings.sweep) {

@@ -1,5 +1,5 @@
 #pragma once
-// What a client may ask of the service: a StudySpec (core's one job format), read strictly from untrusted
+// What a client may ask of the service: a JobRequest (core's one job format), read strictly from untrusted
 // JSON and checked against the service's limits.
 #include <cstddef>
 #include <cstdint>
@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "study/study_spec.h"
+#include "study/job_request.h"
 
 namespace facetlight::server {
 
@@ -24,6 +24,7 @@ struct ServiceLimits {
 
 // Throws Error naming the field, also when it exceeds a limit of this service (with `limits`: new jobs;
 // without: jobs already accepted). Missing `threads` means `defaultThreads`.
-StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits = nullptr);
+JobRequest parseJobSpec(const nlohmann::json& body, int defaultThreads,
+                        const ServiceLimits* limits = nullptr);
 
 }  // namespace facetlight::server

@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "study/job_request.h"
 #include "study/result_files.h"
-#include "study/study_spec.h"
 #include "util/error.h"
 
 namespace facetlight::server {
@@ -119,7 +119,7 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
     const fs::path jobFile = folder.path() / "job.json";
     {
         std::ofstream out(jobFile);
-        out << toJson(StudySpec{mesh.source, mesh.name, settings, mesh.cut}).dump(2);
+        out << toJson(JobRequest{mesh.source, mesh.name, settings, mesh.cut}).dump(2);
         if (!(out << std::flush)) throw Error("launcher: cannot write " + jobFile.string());
     }
 
@@ -148,7 +148,7 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const ChildMesh& mesh,
                     " (is it a directory every node shares?): " + exit.tail);
     StudyResult result;
     for (const ResultFile& f : kResultFiles)
-        if (auto bytes = readFile(folder.path() / f.name)) f.load(result, std::move(*bytes));
+        if (auto bytes = readFile(folder.path() / f.name)) result.load(f, std::move(*bytes));
     return result;
 }
 

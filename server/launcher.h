@@ -36,7 +36,7 @@ bool useLauncher(const LaunchSettings& launch, const StudySettings& settings);
 struct ChildMesh {
     std::string source;
     std::string name;
-    CutValues cut = {};  // with a shape of the cut library: its parameters (StudySpec::cut)
+    CutValues cut = {};  // with a shape of the cut library: its parameters (JobRequest::cut)
 };
 
 // Runs the study in a child and returns its results. Follows the child's progress into `control`; when

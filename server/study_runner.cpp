@@ -2,7 +2,7 @@
 
 namespace facetlight::server {
 
-StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control,
+StudyResult InProcessRunner::run(const JobRequest& spec, RunControl& control,
                                  const SweepCheckpoint& checkpoint) {
     if (spec.settings.sweep) {
         SerialCommunicator serial;
@@ -16,7 +16,7 @@ StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control,
     return runStudy(named, spec.settings, control);
 }
 
-StudyResult LauncherRunner::run(const StudySpec& spec, RunControl& control,
+StudyResult LauncherRunner::run(const JobRequest& spec, RunControl& control,
                                 const SweepCheckpoint& checkpoint) {
     if (!useLauncher(launch_, spec.settings)) return inProcess_.run(spec, control, checkpoint);
     // A sweep's designs, and a design of the cut library, are built by the child.

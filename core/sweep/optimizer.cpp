@@ -122,7 +122,7 @@ SweepConstraint parseSweepConstraint(const std::string& text) {
     return c;
 }
 
-GridObjective sweepObjective(const SweepSpec& base, const std::string& figure,
+GridObjective sweepObjective(const SweepPlan& base, const std::string& figure,
                              const std::vector<SweepConstraint>& constraints, RunControl& control,
                              std::vector<SweepResult>& rounds, Communicator& comm,
                              const SweepRoundHooks& hooks) {
@@ -130,7 +130,7 @@ GridObjective sweepObjective(const SweepSpec& base, const std::string& figure,
     return
         [base, figure, constraints, &control, &rounds, &comm, hooks](const std::vector<SweepAxis>& axes,
                                                                      uint64_t photons) {
-            SweepSpec spec = base;
+            SweepPlan spec = base;
             spec.axes = axes;
             spec.trace.photons = photons;
             rounds.push_back(

@@ -8,7 +8,7 @@
 
 namespace facetlight {
 
-nlohmann::json sweepPointJson(const SweepSpec& spec, const SweepPoint& p) {
+nlohmann::json sweepPointJson(const SweepPlan& spec, const SweepPoint& p) {
     nlohmann::json values = nlohmann::json::object();
     for (size_t a = 0; a < spec.axes.size(); ++a) {
         const SweepAxis& axis = spec.axes[a];
@@ -42,7 +42,7 @@ void restoreSweepPoint(const nlohmann::json& j, SweepPoint& point) {
     if (point.trace.fire.enabled) point.fire = j.at("fire");
 }
 
-nlohmann::json sweepAxesJson(const SweepSpec& spec) {
+nlohmann::json sweepAxesJson(const SweepPlan& spec) {
     nlohmann::json axes = nlohmann::json::array();
     for (const SweepAxis& a : spec.axes) {
         nlohmann::json axis = {{"name", a.name}, {"unit", spec.unit(a)}};
@@ -57,7 +57,7 @@ nlohmann::json sweepAxesJson(const SweepSpec& spec) {
 }
 
 nlohmann::json sweepToJson(const SweepResult& result) {
-    const SweepSpec& spec = result.spec;
+    const SweepPlan& spec = result.plan;
     nlohmann::json fixed = nlohmann::json::object();
     // A named pair, not a structured binding: clang 14 (the fuzz build) cannot capture bindings in lambdas.
     for (const auto& parameter : completeCutValues(findCutShape(spec.shape), spec.fixed)) {
@@ -80,7 +80,7 @@ nlohmann::json sweepToJson(const SweepResult& result) {
 }
 
 std::string sweepCsv(const SweepResult& result) {
-    const SweepSpec& spec = result.spec;
+    const SweepPlan& spec = result.plan;
     static const std::vector<std::string> depths{"crown_height_pct", "pavilion_depth_pct", "total_depth_pct"};
     std::ostringstream out;
     out.precision(9);

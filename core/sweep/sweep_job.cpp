@@ -23,11 +23,11 @@ json designJson(const std::vector<SweepAxis>& axes, const RatedDesign& d, double
 
 }  // namespace
 
-SweepOutputs runSweepRequest(const SweepSpec& spec, const SweepRequest& request, RunControl& control,
+SweepOutputs runSweepRequest(const SweepPlan& spec, const SweepRequest& request, RunControl& control,
                              Communicator& comm, const SweepCheckpoint& checkpoint) {
     const int rounds = request.rounds();
     const bool keep = comm.isRoot() && checkpoint.store;
-    const SweepRoundHooks hooks = [&](size_t round, const SweepSpec& s) {
+    const SweepRoundHooks hooks = [&](size_t round, const SweepPlan& s) {
         control.startStage(int(round) + 1, rounds, s.pointCount());
         SweepPointHooks h;
         if (checkpoint.restore)
@@ -62,10 +62,10 @@ SweepOutputs runSweepRequest(const SweepSpec& spec, const SweepRequest& request,
         out.pictures.emplace_back(name, encodePng(image));
     if (!best) return out;
 
-    SweepSpec bestSpec = spec;
-    for (size_t a = 0; a < spec.axes.size(); ++a) bestSpec.axes[a].values = {best->best.values[a]};
+    SweepPlan bestPlan = spec;
+    for (size_t a = 0; a < spec.axes.size(); ++a) bestPlan.axes[a].values = {best->best.values[a]};
     const CutShape& shape = findCutShape(spec.shape);
-    const CutValues cut = sweepPoints(bestSpec)[0].cut;
+    const CutValues cut = sweepPoints(bestPlan)[0].cut;
     const std::string command = "facetlight cut " + cutCommandLine(shape, cut);
     out.bestObj = objText(shape.build(cut), command);
 
@@ -74,8 +74,8 @@ SweepOutputs runSweepRequest(const SweepSpec& spec, const SweepRequest& request,
     json roundsJson = json::array();
     for (const SweepResult& r : results) {
         json axes = json::object();
-        for (const SweepAxis& a : r.spec.axes) axes[a.name] = a.values;
-        roundsJson.push_back({{"photons", r.spec.trace.photons}, {"axes", axes}, {"seconds", r.seconds}});
+        for (const SweepAxis& a : r.plan.axes) axes[a.name] = a.values;
+        roundsJson.push_back({{"photons", r.plan.trace.photons}, {"axes", axes}, {"seconds", r.seconds}});
     }
     json bestJson = designJson(best->lastAxes, best->best, settings.z);
     bestJson["photons"] = best->photons;

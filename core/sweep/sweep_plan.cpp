@@ -33,13 +33,13 @@ void applyAxis(const SweepAxis& axis, size_t i, CutValues& cut, TraceSettings& t
 
 }  // namespace
 
-size_t SweepSpec::pointCount() const {
+size_t SweepPlan::pointCount() const {
     size_t n = axes.empty() ? 0 : 1;
     for (const SweepAxis& a : axes) n *= a.size();
     return n;
 }
 
-std::string SweepSpec::unit(const SweepAxis& axis) const {
+std::string SweepPlan::unit(const SweepAxis& axis) const {
     if (axis.name == "tilt" || axis.name == "head_shadow") return "deg";
     if (isTraceAxis(axis.name)) return "";
     for (const CutParameter& p : findCutShape(shape).parameters)
@@ -47,7 +47,7 @@ std::string SweepSpec::unit(const SweepAxis& axis) const {
     return "";
 }
 
-void SweepSpec::validate() const {
+void SweepPlan::validate() const {
     const CutShape& s = findCutShape(shape);
     completeCutValues(s, fixed);
     checkTraceSettings(trace);
@@ -85,7 +85,7 @@ void SweepSpec::validate() const {
                     std::to_string(kMaxSweepPoints) + " are allowed");
 }
 
-std::vector<SweepPoint> sweepPoints(const SweepSpec& spec) {
+std::vector<SweepPoint> sweepPoints(const SweepPlan& spec) {
     const CutShape& shape = findCutShape(spec.shape);
     std::vector<SweepPoint> points(spec.pointCount());
     for (size_t k = 0; k < points.size(); ++k) {

@@ -16,7 +16,10 @@
 
 namespace facetlight {
 
-struct SweepSpec {
+// A sweep resolved into what runs: the shape, every parameter held, the axes and every point's trace
+// settings, checked by validate(). planSweep makes it from a SweepRequest (what the user asked for); the
+// tests and benchmarks build one directly.
+struct SweepPlan {
     std::string shape;
     CutValues fixed;  // the shape's other parameters; defaults for those not given
     std::vector<SweepAxis> axes;
@@ -53,6 +56,6 @@ struct SweepPoint {
 };
 
 // Every point of the grid with its design and settings, none traced: the first axis varies slowest.
-std::vector<SweepPoint> sweepPoints(const SweepSpec& spec);
+std::vector<SweepPoint> sweepPoints(const SweepPlan& spec);
 
 }  // namespace facetlight

@@ -163,8 +163,8 @@ const settings::Schema<SweepRequest>& sweepRequestSchema() {
     return schema;
 }
 
-SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const TraceSettings& trace) {
-    SweepSpec spec{shape, request.set, request.axes, trace};
+SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace) {
+    SweepPlan spec{shape, request.set, request.axes, trace};
     const CutShape* cut = nullptr;
     try {
         cut = &findCutShape(shape);
@@ -177,7 +177,7 @@ SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const
         throw Error("sweep.set", e.what());
     }
     for (size_t i = 0; i < request.axes.size(); ++i) {
-        SweepSpec one = spec;
+        SweepPlan one = spec;
         one.axes = {request.axes[i]};
         try {
             one.validate();

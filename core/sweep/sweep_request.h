@@ -1,6 +1,6 @@
 #pragma once
 // A sweep as a job asks for it (docs/sweeps.md): the `sweep` object of the one job format
-// (study/study_spec.h), read through its settings table, and the checked plan made from it.
+// (study/job_request.h), read through its settings table, and the checked plan made from it.
 #include <string>
 #include <vector>
 
@@ -12,6 +12,9 @@
 
 namespace facetlight {
 
+// A sweep as its user asked for it (the job's `sweep` object, `SweepRequest` in server/openapi.json, or the
+// CLI's options): the axes, the parameters held, the figures and the search. It names no shape and holds no
+// trace settings; planSweep resolves it with the job's into the SweepPlan that runs.
 struct SweepRequest {
     std::vector<SweepAxis> axes;
     CutValues set;  // parameters of the shape held at values other than their defaults
@@ -32,9 +35,9 @@ inline nlohmann::json toJson(const SweepRequest& r) {
     return sweepRequestSchema().write(r);
 }
 
-// The sweep of `shape` the request asks for, with every point's trace settings; checked, throwing Error
-// naming the field ("mesh" for a shape the cut library lacks, "sweep.axes[1]", "sweep.set", ...).
-SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const TraceSettings& trace);
+// The plan of the sweep of `shape` the request asks for, with every point's trace settings; checked, throwing
+// Error naming the field ("mesh" for a shape the cut library lacks, "sweep.axes[1]", "sweep.set", ...).
+SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace);
 
 // What a request's figures are called in its errors: the job's fields, or the CLI's options.
 struct SweepFigureFields {

@@ -16,12 +16,12 @@
 
 namespace facetlight {
 
-SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPointHooks& hooks) {
+SweepResult runSweep(const SweepPlan& spec, RunControl& control, const SweepPointHooks& hooks) {
     SerialCommunicator serial;
     return runSweep(spec, control, hooks, serial);
 }
 
-SweepResult runSweep(const SweepSpec& spec, RunControl& control, const SweepPointHooks& hooks,
+SweepResult runSweep(const SweepPlan& spec, RunControl& control, const SweepPointHooks& hooks,
                      Communicator& comm) {
     spec.validate();
     const auto start = std::chrono::steady_clock::now();

@@ -179,8 +179,8 @@ TEST(Launcher, RunsAJobThroughMpirunAndMatchesTheInProcessResult) {
     RunControl local;
     const StudyResult inProcess = runStudy(stone, settings, local);
     EXPECT_EQ(withoutTiming(child.stats), withoutTiming(inProcess.stats));
-    EXPECT_EQ(child.statsCsv, inProcess.statsCsv);
-    EXPECT_EQ(child.heatmapPng, inProcess.heatmapPng);
+    EXPECT_EQ(child.file("stats.csv"), inProcess.file("stats.csv"));
+    EXPECT_EQ(child.file("heatmap.png"), inProcess.file("heatmap.png"));
 }
 
 TEST(Launcher, CancelsAJobRunningUnderMpirun) {

@@ -12,7 +12,7 @@ using namespace facetlight;
 namespace {
 
 SweepResult smallSweep(std::vector<std::string> axes) {
-    SweepSpec spec;
+    SweepPlan spec;
     spec.shape = "round_brilliant";
     for (const std::string& a : axes) spec.axes.push_back(parseSweepAxis(a));
     spec.trace.photons = 3000;
@@ -83,7 +83,7 @@ TEST(SweepPictures, CurvesCarryEachFigureAndAxes) {
 // A fire figure is drawn like any other: a map, and curves with their bands beside a share.
 TEST(SweepPictures, FireFiguresAreDrawnWhenFireIsTraced) {
     const auto fireSweep = [](std::vector<std::string> axes) {
-        SweepSpec spec;
+        SweepPlan spec;
         spec.shape = "round_brilliant";
         for (const std::string& a : axes) spec.axes.push_back(parseSweepAxis(a));
         spec.trace.photons = 2000;

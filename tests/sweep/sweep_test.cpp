@@ -19,8 +19,8 @@ using namespace facetlight;
 
 namespace {
 
-SweepSpec pavilionSweep(const std::string& range, uint64_t photons, int threads) {
-    SweepSpec spec;
+SweepPlan pavilionSweep(const std::string& range, uint64_t photons, int threads) {
+    SweepPlan spec;
     spec.shape = "round_brilliant";
     spec.axes = {parseSweepAxis("pavilion=" + range)};
     spec.trace.photons = photons;
@@ -30,7 +30,7 @@ SweepSpec pavilionSweep(const std::string& range, uint64_t photons, int threads)
 
 // Runs the sweep resumed from the kept points `restored` picks; returns it and the points it traced, in
 // order.
-std::pair<SweepResult, std::vector<size_t>> resumeSweep(const SweepSpec& spec, RunControl& control,
+std::pair<SweepResult, std::vector<size_t>> resumeSweep(const SweepPlan& spec, RunControl& control,
                                                         const std::vector<nlohmann::json>& kept,
                                                         const std::function<bool(size_t)>& restored) {
     std::vector<size_t> traced;
@@ -74,7 +74,7 @@ TEST(Sweep, RefusesBadAxes) {
     EXPECT_THROW(parseSweepAxis("pavilion=a:45:1"), Error);
     EXPECT_THROW(parseSweepAxis("pavilion=0:1:1e-6"), Error);  // too many values
 
-    SweepSpec spec = pavilionSweep("37:45:1", 1000, 1);
+    SweepPlan spec = pavilionSweep("37:45:1", 1000, 1);
     EXPECT_NO_THROW(spec.validate());
     spec.axes = {parseSweepAxis("pavillion=37:45:1")};
     EXPECT_THROW(spec.validate(), Error);  // not a parameter
@@ -93,7 +93,7 @@ TEST(Sweep, RefusesBadAxes) {
 // A point of a sweep is an ordinary trace: a design traced alone with the point's settings gives the same
 // tallies, bit for bit, whether its stone is shared with other points (the tilt axis) or not.
 TEST(Sweep, PointEqualsSingleTrace) {
-    SweepSpec spec = pavilionSweep("39.5,41.25", 20000, 2);
+    SweepPlan spec = pavilionSweep("39.5,41.25", 20000, 2);
     spec.axes.push_back(parseSweepAxis("tilt=0,10"));
     spec.fixed = {{"crown", 33}};
     RunControl control;
@@ -138,7 +138,7 @@ TEST(Sweep, PavilionSweepPeaksBetweenFishEyeAndNailHead) {
         w.push_back(p.figure("weighted_return"));
     }
     const size_t peak = size_t(std::max_element(w.begin(), w.end()) - w.begin());
-    const double peakPavilion = result.spec.axes[0].values[peak];
+    const double peakPavilion = result.plan.axes[0].values[peak];
     EXPECT_GE(peakPavilion, 38);
     EXPECT_LE(peakPavilion, 43);
     const double sigma = result.points[peak].stderrOf("weighted_return");
@@ -147,7 +147,7 @@ TEST(Sweep, PavilionSweepPeaksBetweenFishEyeAndNailHead) {
 }
 
 TEST(Sweep, SameBitsAtAnyThreadCount) {
-    SweepSpec spec = pavilionSweep("39:42:1.5", 10000, 1);
+    SweepPlan spec = pavilionSweep("39:42:1.5", 10000, 1);
     spec.axes.push_back(parseSweepAxis("material=diamond,cubic_zirconia"));
     RunControl one, two, five;
     const SweepResult a = runSweep(spec, one);
@@ -162,7 +162,7 @@ TEST(Sweep, SameBitsAtAnyThreadCount) {
 }
 
 TEST(Sweep, JsonAndCsvCarryEveryPointWithErrors) {
-    SweepSpec spec = pavilionSweep("40,41", 5000, 1);
+    SweepPlan spec = pavilionSweep("40,41", 5000, 1);
     RunControl control;
     const SweepResult result = runSweep(spec, control);
     const nlohmann::json j = sweepToJson(result);
@@ -197,7 +197,7 @@ TEST(Sweep, CancelStopsIt) {
 // A sweep resumed from some of its points (as the service keeps them) traces only the others and ends with
 // the same sweep.json points as one that ran whole.
 TEST(Sweep, ResumedFromKeptPointsGivesTheSameBits) {
-    const SweepSpec spec = pavilionSweep("38:42:1", 5000, 2);
+    const SweepPlan spec = pavilionSweep("38:42:1", 5000, 2);
     RunControl whole;
     std::vector<nlohmann::json> kept(spec.pointCount());
     SweepPointHooks keep;
@@ -218,7 +218,7 @@ TEST(Sweep, ResumedFromKeptPointsGivesTheSameBits) {
 // sweep.json and sweep.csv; a sweep resumed from kept points gives the same bits, and a point kept without
 // them (by a build that reported none) is traced again. With fire off, none of it appears.
 TEST(Sweep, FireFiguresAtEveryPointAndResumed) {
-    SweepSpec spec = pavilionSweep("39,40.5,42", 3000, 2);
+    SweepPlan spec = pavilionSweep("39,40.5,42", 3000, 2);
     spec.trace.fire.enabled = true;
     RunControl whole;
     std::vector<nlohmann::json> kept(spec.pointCount());
