@@ -56,7 +56,7 @@ void runSweepCommand(const SweepOptions& o) {
     request.refineRounds = o.refineRounds;
     const TraceSettings trace = toTraceSettings(o.trace);
     checkSweepFigures(request, trace, {"--figure", "--maximize", "--constraint", false});
-    const SweepPlan spec = planSweep(o.shape, request, trace);
+    const SweepPlan plan = planSweep(o.shape, request, trace);
     const fs::path out(o.out);
     std::error_code ec;
     fs::create_directories(out, ec);
@@ -67,7 +67,7 @@ void runSweepCommand(const SweepOptions& o) {
     SweepOutputs result;
     {
         ProgressLine bar(true, control);
-        result = runSweepRequest(spec, request, control, serial);
+        result = runSweepRequest(plan, request, control, serial);
     }
     writeFile(out / "sweep.csv", result.csv());
     writeFile(out / "sweep.json", result.json());

@@ -33,6 +33,7 @@ inline constexpr std::array<ResultFile, 16> kResultFiles{{
     {"render.png", "image/png", "render.png", "render", "render"},
     {"fire.png", "image/png", "fire.png", "fire_picture", "fire_picture"},
     {"heatmap.png", "image/png", "heatmap.png", "heatmap", "render"},
+    // heatmap.png's facets in pixels (docs/stats-schema.md); the heat-map comes with every study.
     {"heatmap.json", "application/json", "heatmap.json", "heatmap_layout", "render"},
     {"heatmap_fire.png", "image/png", "heatmap_fire.png", "heatmap_fire", "fire"},
     {"angular.png", "image/png", "angular.png", "angular", "render"},

@@ -130,11 +130,11 @@ GridObjective sweepObjective(const SweepPlan& base, const std::string& figure,
     return
         [base, figure, constraints, &control, &rounds, &comm, hooks](const std::vector<SweepAxis>& axes,
                                                                      uint64_t photons) {
-            SweepPlan spec = base;
-            spec.axes = axes;
-            spec.trace.photons = photons;
+            SweepPlan plan = base;
+            plan.axes = axes;
+            plan.trace.photons = photons;
             rounds.push_back(
-                runSweep(spec, control, hooks ? hooks(rounds.size(), spec) : SweepPointHooks{}, comm));
+                runSweep(plan, control, hooks ? hooks(rounds.size(), plan) : SweepPointHooks{}, comm));
             std::vector<DesignEstimate> out;
             for (const SweepPoint& p : rounds.back().points) {
                 DesignEstimate e;

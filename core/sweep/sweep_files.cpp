@@ -8,10 +8,10 @@
 
 namespace facetlight {
 
-nlohmann::json sweepPointJson(const SweepPlan& spec, const SweepPoint& p) {
+nlohmann::json sweepPointJson(const SweepPlan& plan, const SweepPoint& p) {
     nlohmann::json values = nlohmann::json::object();
-    for (size_t a = 0; a < spec.axes.size(); ++a) {
-        const SweepAxis& axis = spec.axes[a];
+    for (size_t a = 0; a < plan.axes.size(); ++a) {
+        const SweepAxis& axis = plan.axes[a];
         values[axis.name] =
             axis.numeric() ? nlohmann::json(axis.values[p.at[a]]) : nlohmann::json(axis.choices[p.at[a]]);
     }
@@ -42,10 +42,10 @@ void restoreSweepPoint(const nlohmann::json& j, SweepPoint& point) {
     if (point.trace.fire.enabled) point.fire = j.at("fire");
 }
 
-nlohmann::json sweepAxesJson(const SweepPlan& spec) {
+nlohmann::json sweepAxesJson(const SweepPlan& plan) {
     nlohmann::json axes = nlohmann::json::array();
-    for (const SweepAxis& a : spec.axes) {
-        nlohmann::json axis = {{"name", a.name}, {"unit", spec.unit(a)}};
+    for (const SweepAxis& a : plan.axes) {
+        nlohmann::json axis = {{"name", a.name}, {"unit", plan.unit(a)}};
         if (a.numeric()) {
             axis["values"] = a.values;
         } else {
@@ -57,41 +57,41 @@ nlohmann::json sweepAxesJson(const SweepPlan& spec) {
 }
 
 nlohmann::json sweepToJson(const SweepResult& result) {
-    const SweepPlan& spec = result.plan;
+    const SweepPlan& plan = result.plan;
     nlohmann::json fixed = nlohmann::json::object();
     // A named pair, not a structured binding: clang 14 (the fuzz build) cannot capture bindings in lambdas.
-    for (const auto& parameter : completeCutValues(findCutShape(spec.shape), spec.fixed)) {
-        const bool varied = std::any_of(spec.axes.begin(), spec.axes.end(),
+    for (const auto& parameter : completeCutValues(findCutShape(plan.shape), plan.fixed)) {
+        const bool varied = std::any_of(plan.axes.begin(), plan.axes.end(),
                                         [&](const SweepAxis& a) { return a.name == parameter.first; });
         if (!varied) fixed[parameter.first] = parameter.second;
     }
     nlohmann::json points = nlohmann::json::array();
-    for (const SweepPoint& p : result.points) points.push_back(sweepPointJson(spec, p));
-    return {{"shape", spec.shape},
+    for (const SweepPoint& p : result.points) points.push_back(sweepPointJson(plan, p));
+    return {{"shape", plan.shape},
             {"fixed", fixed},
-            {"settings", toJson(spec.trace)},
-            {"axes", sweepAxesJson(spec)},
-            {"figures", sweepFigureNames(spec.trace)},
+            {"settings", toJson(plan.trace)},
+            {"axes", sweepAxesJson(plan)},
+            {"figures", sweepFigureNames(plan.trace)},
             {"points", points},
             {"timing",
              {{"seconds", result.seconds},
               {"points_per_second", result.seconds > 0 ? double(result.points.size()) / result.seconds : 0.0},
-              {"threads", spec.trace.threads}}}};
+              {"threads", plan.trace.threads}}}};
 }
 
 std::string sweepCsv(const SweepResult& result) {
-    const SweepPlan& spec = result.plan;
+    const SweepPlan& plan = result.plan;
     static const std::vector<std::string> depths{"crown_height_pct", "pavilion_depth_pct", "total_depth_pct"};
     std::ostringstream out;
     out.precision(9);
-    for (const SweepAxis& a : spec.axes) out << a.name << ',';
+    for (const SweepAxis& a : plan.axes) out << a.name << ',';
     for (const std::string& d : depths) out << d << ',';
     out << "hit";
-    const std::vector<std::string> figures = sweepFigureNames(spec.trace);
+    const std::vector<std::string> figures = sweepFigureNames(plan.trace);
     for (const std::string& f : figures) out << ',' << f << ',' << f << "_stderr";
     out << ",error\n";
     for (const SweepPoint& p : result.points) {
-        for (size_t a = 0; a < spec.axes.size(); ++a) out << spec.axes[a].label(p.at[a]) << ',';
+        for (size_t a = 0; a < plan.axes.size(); ++a) out << plan.axes[a].label(p.at[a]) << ',';
         for (const std::string& d : depths) {
             if (p.ok() && p.proportions[d].is_number()) out << p.proportions[d].get<double>();
             out << ',';

@@ -23,7 +23,7 @@ json designJson(const std::vector<SweepAxis>& axes, const RatedDesign& d, double
 
 }  // namespace
 
-SweepOutputs runSweepRequest(const SweepPlan& spec, const SweepRequest& request, RunControl& control,
+SweepOutputs runSweepRequest(const SweepPlan& plan, const SweepRequest& request, RunControl& control,
                              Communicator& comm, const SweepCheckpoint& checkpoint) {
     const int rounds = request.rounds();
     const bool keep = comm.isRoot() && checkpoint.store;
@@ -44,12 +44,12 @@ SweepOutputs runSweepRequest(const SweepPlan& spec, const SweepRequest& request,
     settings.refineRounds = request.refineRounds;
     std::vector<SweepResult> results;
     if (request.maximize.empty()) {
-        out.sweep = runSweep(spec, control, hooks(0, spec), comm);
+        out.sweep = runSweep(plan, control, hooks(0, plan), comm);
     } else {
         std::vector<SweepConstraint> constraints;
         for (const std::string& text : request.constraints) constraints.push_back(parseSweepConstraint(text));
-        best = maximize(spec.axes, spec.trace.photons,
-                        sweepObjective(spec, request.maximize, constraints, control, results, comm, hooks),
+        best = maximize(plan.axes, plan.trace.photons,
+                        sweepObjective(plan, request.maximize, constraints, control, results, comm, hooks),
                         settings);
         out.sweep = results.front();
     }
@@ -62,9 +62,9 @@ SweepOutputs runSweepRequest(const SweepPlan& spec, const SweepRequest& request,
         out.pictures.emplace_back(name, encodePng(image));
     if (!best) return out;
 
-    SweepPlan bestPlan = spec;
-    for (size_t a = 0; a < spec.axes.size(); ++a) bestPlan.axes[a].values = {best->best.values[a]};
-    const CutShape& shape = findCutShape(spec.shape);
+    SweepPlan bestPlan = plan;
+    for (size_t a = 0; a < plan.axes.size(); ++a) bestPlan.axes[a].values = {best->best.values[a]};
+    const CutShape& shape = findCutShape(plan.shape);
     const CutValues cut = sweepPoints(bestPlan)[0].cut;
     const std::string command = "facetlight cut " + cutCommandLine(shape, cut);
     out.bestObj = objText(shape.build(cut), command);

@@ -38,7 +38,7 @@ struct SweepOutputs {
 // Runs the sweep (and the search) on every rank of `comm`; rank 0 returns the outputs, the others only
 // `sweep`. Round r is stage r + 1 of request.rounds() in control (control.stage(), itemsDone()). Throws
 // Error when no point could be traced, Canceled when control.cancel() stops it.
-SweepOutputs runSweepRequest(const SweepPlan& spec, const SweepRequest& request, RunControl& control,
+SweepOutputs runSweepRequest(const SweepPlan& plan, const SweepRequest& request, RunControl& control,
                              Communicator& comm, const SweepCheckpoint& checkpoint = {});
 
 }  // namespace facetlight

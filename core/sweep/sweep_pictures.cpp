@@ -15,16 +15,16 @@ std::string spaced(std::string name) {
     return name;
 }
 
-PlotAxis plotAxis(const SweepPlan& spec, const SweepAxis& axis) {
-    const std::string unit = spec.unit(axis);
+PlotAxis plotAxis(const SweepPlan& plan, const SweepAxis& axis) {
+    const std::string unit = plan.unit(axis);
     return {spaced(axis.name) + (unit.empty() ? "" : " (" + unit + ")"), axis.values, axis.choices};
 }
 
 // The axes that take more than one value.
-std::vector<size_t> variedAxes(const SweepPlan& spec) {
+std::vector<size_t> variedAxes(const SweepPlan& plan) {
     std::vector<size_t> out;
-    for (size_t a = 0; a < spec.axes.size(); ++a)
-        if (spec.axes[a].size() > 1) out.push_back(a);
+    for (size_t a = 0; a < plan.axes.size(); ++a)
+        if (plan.axes[a].size() > 1) out.push_back(a);
     return out;
 }
 
@@ -73,15 +73,15 @@ Image sweepCurves(const SweepResult& result, const std::vector<std::string>& fig
 }
 
 Image sweepMap(const SweepResult& result, const std::string& figure) {
-    const SweepPlan& spec = result.plan;
-    if (spec.axes.size() != 2) throw Error("a map needs a sweep over two quantities");
-    const SweepAxis &ax = spec.axes[0], &ay = spec.axes[1];
+    const SweepPlan& plan = result.plan;
+    if (plan.axes.size() != 2) throw Error("a map needs a sweep over two quantities");
+    const SweepAxis &ax = plan.axes[0], &ay = plan.axes[1];
     std::vector<PlotMarker> markers;
     if (const std::optional<size_t> best = highestPoint(result, figure)) {
         const SweepPoint& p = result.points[*best];
         char value[64];
         std::snprintf(value, sizeof value, "%.4f +- %.4f", p.figure(figure), p.stderrOf(figure));
-        markers.push_back({plotAxis(spec, ax).position(p.at[0]), plotAxis(spec, ay).position(p.at[1]),
+        markers.push_back({plotAxis(plan, ax).position(p.at[0]), plotAxis(plan, ay).position(p.at[1]),
                            "highest " + std::string(value) + " at " + ax.name + " " + ax.label(p.at[0]) +
                                ", " + ay.name + " " + ay.label(p.at[1]),
                            true});
@@ -94,7 +94,7 @@ Image sweepMap(const SweepResult& result, const std::string& figure) {
             if (values.count(ax.name) && values.count(ay.name))
                 markers.push_back({values.at(ax.name), values.at(ay.name), label, false});
         }
-    return contourMap(plotAxis(spec, ax), plotAxis(spec, ay), figureSeries(result, figure), spaced(figure),
+    return contourMap(plotAxis(plan, ax), plotAxis(plan, ay), figureSeries(result, figure), spaced(figure),
                       markers, spaced(figure) + ", " + settingsLine(result));
 }
 

@@ -85,20 +85,20 @@ void SweepPlan::validate() const {
                     std::to_string(kMaxSweepPoints) + " are allowed");
 }
 
-std::vector<SweepPoint> sweepPoints(const SweepPlan& spec) {
-    const CutShape& shape = findCutShape(spec.shape);
-    std::vector<SweepPoint> points(spec.pointCount());
+std::vector<SweepPoint> sweepPoints(const SweepPlan& plan) {
+    const CutShape& shape = findCutShape(plan.shape);
+    std::vector<SweepPoint> points(plan.pointCount());
     for (size_t k = 0; k < points.size(); ++k) {
         SweepPoint& p = points[k];
-        p.at.resize(spec.axes.size());
+        p.at.resize(plan.axes.size());
         size_t rest = k;
-        for (size_t a = spec.axes.size(); a-- > 0;) {
-            p.at[a] = rest % spec.axes[a].size();
-            rest /= spec.axes[a].size();
+        for (size_t a = plan.axes.size(); a-- > 0;) {
+            p.at[a] = rest % plan.axes[a].size();
+            rest /= plan.axes[a].size();
         }
-        CutValues cut = spec.fixed;
-        p.trace = spec.trace;
-        for (size_t a = 0; a < spec.axes.size(); ++a) applyAxis(spec.axes[a], p.at[a], cut, p.trace);
+        CutValues cut = plan.fixed;
+        p.trace = plan.trace;
+        for (size_t a = 0; a < plan.axes.size(); ++a) applyAxis(plan.axes[a], p.at[a], cut, p.trace);
         p.cut = completeCutValues(shape, cut);
     }
     return points;

@@ -56,6 +56,6 @@ struct SweepPoint {
 };
 
 // Every point of the grid with its design and settings, none traced: the first axis varies slowest.
-std::vector<SweepPoint> sweepPoints(const SweepPlan& spec);
+std::vector<SweepPoint> sweepPoints(const SweepPlan& plan);
 
 }  // namespace facetlight

@@ -164,7 +164,7 @@ const settings::Schema<SweepRequest>& sweepRequestSchema() {
 }
 
 SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace) {
-    SweepPlan spec{shape, request.set, request.axes, trace};
+    SweepPlan plan{shape, request.set, request.axes, trace};
     const CutShape* cut = nullptr;
     try {
         cut = &findCutShape(shape);
@@ -177,7 +177,7 @@ SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const
         throw Error("sweep.set", e.what());
     }
     for (size_t i = 0; i < request.axes.size(); ++i) {
-        SweepPlan one = spec;
+        SweepPlan one = plan;
         one.axes = {request.axes[i]};
         try {
             one.validate();
@@ -189,12 +189,12 @@ SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const
                         "the best design is searched over numbers; " + request.axes[i].name + " takes names");
     }
     try {
-        spec.validate();
+        plan.validate();
     } catch (const Error& e) {
         throw Error("sweep.axes", e.what());
     }
     checkSweepFigures(request, trace);
-    return spec;
+    return plan;
 }
 
 void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace,

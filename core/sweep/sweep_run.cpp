@@ -16,18 +16,18 @@
 
 namespace facetlight {
 
-SweepResult runSweep(const SweepPlan& spec, RunControl& control, const SweepPointHooks& hooks) {
+SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPointHooks& hooks) {
     SerialCommunicator serial;
-    return runSweep(spec, control, hooks, serial);
+    return runSweep(plan, control, hooks, serial);
 }
 
-SweepResult runSweep(const SweepPlan& spec, RunControl& control, const SweepPointHooks& hooks,
+SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPointHooks& hooks,
                      Communicator& comm) {
-    spec.validate();
+    plan.validate();
     const auto start = std::chrono::steady_clock::now();
-    SweepResult result{spec, sweepPoints(spec), 0};
-    const CutShape& shape = findCutShape(spec.shape);
-    const int threads = spec.trace.threads;
+    SweepResult result{plan, sweepPoints(plan), 0};
+    const CutShape& shape = findCutShape(plan.shape);
+    const int threads = plan.trace.threads;
     const size_t count = result.points.size();
 
     // Points finished before, read on rank 0 and handed to every rank.
@@ -72,7 +72,7 @@ SweepResult runSweep(const SweepPlan& spec, RunControl& control, const SweepPoin
     parallelForBlocks({0, designs.size(), 1, threads}, &control, [&](int, uint64_t first, uint64_t last) {
         for (uint64_t d = first; d < last; ++d) {
             try {
-                stones[d] = Stone::build(shape.build(*designs[d]), spec.shape);
+                stones[d] = Stone::build(shape.build(*designs[d]), plan.shape);
             } catch (const Error& e) {
                 designError[d] = e.what();
             }
@@ -83,7 +83,7 @@ SweepResult runSweep(const SweepPlan& spec, RunControl& control, const SweepPoin
 
     // Several points at once; the threads left over trace within each (a trace's bits do not depend on them).
     // Progress counts photons, so that a cancel stops a point within a block of them.
-    control.startPhase(RunPhase::Tracing, mine.size() * spec.trace.photons);
+    control.startPhase(RunPhase::Tracing, mine.size() * plan.trace.photons);
     for (size_t k = 0; k < count; ++k)
         if (!pending[k]) control.finishItem();
     const BlockLoop loop{0, mine.size(), 1, threads};
@@ -125,7 +125,7 @@ SweepResult runSweep(const SweepPlan& spec, RunControl& control, const SweepPoin
 
     if (comm.size() > 1) {
         nlohmann::json traced = nlohmann::json::object();
-        for (const size_t k : mine) traced[std::to_string(k)] = sweepPointJson(spec, result.points[k]);
+        for (const size_t k : mine) traced[std::to_string(k)] = sweepPointJson(plan, result.points[k]);
         for (const std::string& bytes : comm.allGather(traced.dump())) {
             const nlohmann::json points = nlohmann::json::parse(bytes);
             for (const auto& [key, j] : points.items()) {

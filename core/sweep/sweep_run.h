@@ -30,15 +30,15 @@ struct SweepPointHooks {
     std::function<void(size_t point, const SweepPoint&)> onPoint;
 };
 
-// Builds each design once, then traces the points on spec.trace.threads workers (several points at once, the
+// Builds each design once, then traces the points on plan.trace.threads workers (several points at once, the
 // threads left over shared within each point), reporting to `control` in photons over all points
 // (RunPhase::Tracing, then Done) and in points (control.finishItem). Throws Canceled when control.cancel()
-// stops it, Error on a bad spec.
-SweepResult runSweep(const SweepPlan& spec, RunControl& control, const SweepPointHooks& hooks = {});
+// stops it, Error on a bad plan.
+SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPointHooks& hooks = {});
 // The same on every rank of `comm`: rank r traces the points k with k mod size = r, and every rank returns
 // every point, bit for bit those of a single process (the gathered points travel as their JSON, whose numbers
 // read back exactly). Restored points come from rank 0.
-SweepResult runSweep(const SweepPlan& spec, RunControl& control, const SweepPointHooks& hooks,
+SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPointHooks& hooks,
                      Communicator& comm);
 
 }  // namespace facetlight

@@ -42,11 +42,11 @@ std::vector<SweepAxis> coarseGrid() {
 
 // The round brilliant's sweep with `photons` a point on 2 threads, its axes for the search to set.
 SweepPlan roundBrilliantSweep(uint64_t photons) {
-    SweepPlan spec;
-    spec.shape = "round_brilliant";
-    spec.trace.photons = photons;
-    spec.trace.threads = 2;
-    return spec;
+    SweepPlan plan;
+    plan.shape = "round_brilliant";
+    plan.trace.photons = photons;
+    plan.trace.threads = 2;
+    return plan;
 }
 
 // Searches `figure` over the pavilion angles of `range` within `limits`, each round appended to `rounds`.
@@ -121,14 +121,14 @@ TEST(Optimizer, SearchesASweepWithinADepthLimit) {
 
 // A fire figure is searched like any other, within a limit on another figure, once fire is traced.
 TEST(Optimizer, SearchesAFireFigure) {
-    SweepPlan spec = roundBrilliantSweep(3000);
+    SweepPlan plan = roundBrilliantSweep(3000);
     RunControl control;
     std::vector<SweepResult> rounds;
     SerialCommunicator serial;
     const std::vector<SweepConstraint> limits{parseSweepConstraint("weighted_return>=0.55")};
-    EXPECT_THROW(sweepObjective(spec, "coloured_share", limits, control, rounds, serial), Error);  // fire off
-    spec.trace.fire.enabled = true;
-    const OptimizeResult r = searchPavilion(spec, "38:43:1", "coloured_share", limits, 0, rounds);
+    EXPECT_THROW(sweepObjective(plan, "coloured_share", limits, control, rounds, serial), Error);  // fire off
+    plan.trace.fire.enabled = true;
+    const OptimizeResult r = searchPavilion(plan, "38:43:1", "coloured_share", limits, 0, rounds);
     ASSERT_EQ(rounds.size(), 1u);
     const std::vector<SweepPoint>& points = rounds[0].points;
     double highest = 0;
