@@ -13,7 +13,7 @@ namespace facetlight::cli {
 inline std::string writeResultFiles(const std::filesystem::path& out, const StudyResult& result) {
     std::string names;
     for (const ResultFile& f : kResultFiles) {
-        const std::string bytes = f.bytes(result);
+        const std::string bytes = result.bytes(f);
         if (bytes.empty()) continue;
         writeFile(out / f.name, bytes);
         names += (names.empty() ? "" : ", ") + std::string(f.name);

@@ -10,7 +10,7 @@
 #include "process_communicator.h"
 #include "progress_json.h"
 #include "result_folder.h"
-#include "study/study_spec.h"
+#include "study/job_request.h"
 #include "terminal_output.h"
 #include "util/bounded_read.h"
 #include "util/error.h"
@@ -36,9 +36,9 @@ nlohmann::json readJob(const std::string& path) {
 
 void runStudyCommand(const StudyOptions& options) {
     Communicator& comm = processCommunicator();
-    StudySpec spec;
-    // The service's launcher writes the file from the job's typed spec (its canonical JSON, toJson): this
-    // process cannot share the spec, so reading it back here is the one parse it needs.
+    JobRequest spec;
+    // The service's launcher writes the file from the job's typed request (its canonical JSON, toJson): this
+    // process cannot share it, so reading it back here is the one parse it needs.
     try {
         nlohmann::json job = readJob(options.job);
         // Job files of earlier versions hold the trace settings under "trace", as scripts/same-results
@@ -48,7 +48,7 @@ void runStudyCommand(const StudyOptions& options) {
             job.erase("trace");
             job.update(trace);
         }
-        spec = StudySpec::fromJson(job);
+        spec = JobRequest::fromJson(job);
     } catch (const Error& e) {
         throw Error(e.field(), "job file " + options.job + ": " + e.what());
     }

@@ -6,8 +6,8 @@
 
 #include "commands.h"
 #include "io/obj_writer.h"
-#include "study/optimizer.h"
-#include "study/sweep_job.h"
+#include "sweep/optimizer.h"
+#include "sweep/sweep_job.h"
 #include "terminal_output.h"
 #include "trace_options.h"
 #include "util/error.h"
@@ -56,7 +56,7 @@ void runSweepCommand(const SweepOptions& o) {
     request.refineRounds = o.refineRounds;
     const TraceSettings trace = toTraceSettings(o.trace);
     checkSweepFigures(request, trace, {"--figure", "--maximize", "--constraint", false});
-    const SweepSpec spec = sweepSpec(o.shape, request, trace);
+    const SweepPlan plan = planSweep(o.shape, request, trace);
     const fs::path out(o.out);
     std::error_code ec;
     fs::create_directories(out, ec);
@@ -67,7 +67,7 @@ void runSweepCommand(const SweepOptions& o) {
     SweepOutputs result;
     {
         ProgressLine bar(true, control);
-        result = runSweepRequest(spec, request, control, serial);
+        result = runSweepRequest(plan, request, control, serial);
     }
     writeFile(out / "sweep.csv", result.csv());
     writeFile(out / "sweep.json", result.json());

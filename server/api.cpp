@@ -112,7 +112,7 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
         return problem(res, 400, e.what());
     }
     if (!j.is_object()) return problem(res, 400, "the job must be a JSON object");
-    StudySpec spec;
+    JobRequest spec;
     try {
         spec = parseJobSpec(j, queue_.cores(), &limits_);
     } catch (const Error& e) {
@@ -126,7 +126,7 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     }
     JobRecord job;
     job.id = newId();
-    job.spec = std::make_shared<const StudySpec>(std::move(spec));  // the one parse of this job
+    job.spec = std::make_shared<const JobRequest>(std::move(spec));  // the one parse of this job
     job.request = toJson(*job.spec);
     job.createdAt = nowIso8601();
     bool queued;
@@ -266,11 +266,11 @@ void Api::getSweepPoints(const Request& req, Response& res) {
     if (!job) return problem(res, 404, "no job with this id");
     const std::string unread = "the stored job no longer reads: ";
     if (!job->spec) return problem(res, 500, unread + job->specError);
-    const StudySpec& study = *job->spec;
+    const JobRequest& study = *job->spec;
     if (!study.settings.sweep) return problem(res, 404, "this job is not a sweep");
-    SweepSpec spec;
+    SweepPlan spec;
     try {
-        spec = sweepSpec(study.mesh, *study.settings.sweep, study.settings.trace);
+        spec = planSweep(study.mesh, *study.settings.sweep, study.settings.trace);
     } catch (const Error& e) {
         return problem(res, 500, unread + e.what());
     }

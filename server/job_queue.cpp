@@ -251,7 +251,7 @@ void JobQueue::runJob(JobRecord job, RunControl& control) {
             return finish(JobState::Failed, job.specError);
         }
         // Parsed when the job was accepted (or read back from the store); a copy runs with its threads.
-        StudySpec spec = *job.spec;
+        JobRequest spec = *job.spec;
         const int threads = std::min(spec.settings.trace.threads, cores_);
         spec.settings.trace.threads = threads;
         job.state = JobState::Running;
@@ -270,7 +270,7 @@ void JobQueue::runJob(JobRecord job, RunControl& control) {
             runner_.run(spec, control, sweep ? sweepCheckpoint(results_, id) : SweepCheckpoint{});
         try {
             for (const ResultFile& f : kResultFiles)
-                if (std::string bytes = f.bytes(result); !bytes.empty())
+                if (std::string bytes = result.bytes(f); !bytes.empty())
                     results_.write(id, std::string(f.name), bytes);
         } catch (const std::exception& e) {
             // A full or failing disk: the detail (with paths) goes to the log, the job gets a reason a

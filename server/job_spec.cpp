@@ -6,7 +6,7 @@ namespace facetlight::server {
 
 namespace {
 
-void checkRenderLimits(const StudySpec& spec, const ServiceLimits& limits) {
+void checkRenderLimits(const JobRequest& spec, const ServiceLimits& limits) {
     const auto& r = spec.settings.render;
     if (!r) return;
     const std::string side = std::to_string(limits.maxImageSide);
@@ -21,19 +21,19 @@ void checkRenderLimits(const StudySpec& spec, const ServiceLimits& limits) {
 }
 
 // What a job leaves out: core's defaults, but every core of the machine unless it asks for fewer.
-StudySpec serviceDefaults(int defaultThreads) {
-    StudySpec defaults;
+JobRequest serviceDefaults(int defaultThreads) {
+    JobRequest defaults;
     defaults.settings.trace.threads = defaultThreads;
     return defaults;
 }
 
 }  // namespace
 
-StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits) {
+JobRequest parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits) {
     // This server's cap, not only the core's, names the range a user may ask for.
     if (limits && body.is_object() && body.contains("photons"))
         settings::readCount(body["photons"], "photons", 1, limits->maxPhotons);
-    const StudySpec spec = StudySpec::fromJson(body, serviceDefaults(defaultThreads));
+    const JobRequest spec = JobRequest::fromJson(body, serviceDefaults(defaultThreads));
     if (!body.contains("photons")) throw Error("photons", "photons is required");
     if (limits) checkRenderLimits(spec, *limits);
     if (limits && spec.settings.sweep) {
@@ -48,7 +48,7 @@ StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const Ser
 }
 
 nlohmann::json jobDefaults(int defaultThreads) {
-    StudySpec spec = serviceDefaults(defaultThreads);
+    JobRequest spec = serviceDefaults(defaultThreads);
     spec.settings.render = RenderSettings{};
     spec.settings.aset = AsetSettings{};
     spec.settings.tiltSeries = TiltSeriesSettings{};
@@ -58,8 +58,8 @@ nlohmann::json jobDefaults(int defaultThreads) {
     return j;
 }
 
-StudySpec storedJobSpec(const nlohmann::json& request) {
-    return StudySpec::fromJson(request);
+JobRequest storedJobSpec(const nlohmann::json& request) {
+    return JobRequest::fromJson(request);
 }
 
 }  // namespace facetlight::server

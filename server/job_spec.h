@@ -1,5 +1,5 @@
 #pragma once
-// What a client may ask of the service: a StudySpec (core's one job format), read strictly from untrusted
+// What a client may ask of the service: a JobRequest (core's one job format), read strictly from untrusted
 // JSON and checked against the service's limits.
 #include <cstddef>
 #include <cstdint>
@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "study/study_spec.h"
+#include "study/job_request.h"
 
 namespace facetlight::server {
 
@@ -24,7 +24,8 @@ struct ServiceLimits {
 
 // Throws Error naming the field, also when it exceeds a limit of this service (with `limits`: new jobs;
 // without: jobs already accepted). Missing `threads` means `defaultThreads`.
-StudySpec parseJobSpec(const nlohmann::json& body, int defaultThreads, const ServiceLimits* limits = nullptr);
+JobRequest parseJobSpec(const nlohmann::json& body, int defaultThreads,
+                        const ServiceLimits* limits = nullptr);
 
 // The job a client's form starts from (GET /api/defaults): every setting at the value a job that leaves it
 // out gets here (threads: `defaultThreads`), and render, aset, tilt_series and fire_picture at their own; the
@@ -33,6 +34,6 @@ nlohmann::json jobDefaults(int defaultThreads);
 
 // A job the store kept, read back when its record is loaded: the text is the canonical JSON written from its
 // spec when it was accepted (toJson), so it holds every setting. Throws Error when it no longer reads.
-StudySpec storedJobSpec(const nlohmann::json& request);
+JobRequest storedJobSpec(const nlohmann::json& request);
 
 }  // namespace facetlight::server

@@ -25,8 +25,8 @@ json progressJson(const JobProgress& p) {
 }
 
 // A stored job that no longer reads as one (it fails if run) is shown with a default job's steps.
-const StudySpec& specOf(const JobRecord& job) {
-    static const StudySpec unread;
+const JobRequest& specOf(const JobRecord& job) {
+    static const JobRequest unread;
     return job.spec ? *job.spec : unread;
 }
 
@@ -38,7 +38,7 @@ std::string jobPath(const std::string& id) {
 
 json jobStatusJson(const JobRecord& job, const JobQueue& queue) {
     const std::string self = jobPath(job.id);
-    const StudySpec& spec = specOf(job);
+    const JobRequest& spec = specOf(job);
     const int requested = spec.settings.trace.threads;
     json threads = {{"requested", requested}, {"cores", queue.cores()}};
     const int used = job.threadsUsed > 0 ? job.threadsUsed : std::min(requested, queue.cores());

@@ -18,7 +18,7 @@ JobRecord readJob(const Statement& s) {
     j.state = parseJobState(s.text(2));
     j.request = nlohmann::json::parse(s.text(3));
     try {
-        j.spec = std::make_shared<const StudySpec>(storedJobSpec(j.request));
+        j.spec = std::make_shared<const JobRequest>(storedJobSpec(j.request));
     } catch (const std::exception& e) {  // the job still lists; it fails if run
         j.specError = e.what();
     }

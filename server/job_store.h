@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "database.h"
-#include "study/study_spec.h"
+#include "study/job_request.h"
 
 namespace facetlight::server {
 
@@ -28,7 +28,7 @@ struct JobRecord {
     JobState state = JobState::Queued;
     // The job, parsed once: on submission, or from the store's text when its record is read back. Null when
     // the stored text no longer reads as a job (`specError` says why).
-    std::shared_ptr<const StudySpec> spec;
+    std::shared_ptr<const JobRequest> spec;
     nlohmann::json request;  // the spec's canonical JSON (toJson, every default written out), as stored
     std::string specError;
     std::string createdAt, startedAt, finishedAt;  // ISO 8601 UTC; empty until it happens

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "study/job_request.h"
 #include "study/result_files.h"
 #include "util/error.h"
 
@@ -112,7 +113,7 @@ bool applyProgressLine(std::string_view line, RunControl& control) {
     return true;
 }
 
-StudyResult runStudyInChild(const LaunchSettings& launch, const StudySpec& spec, RunControl& control) {
+StudyResult runStudyInChild(const LaunchSettings& launch, const JobRequest& spec, RunControl& control) {
     const JobFolder folder(launch.workDir);
     const fs::path jobFile = folder.path() / "job.json";
     {
@@ -148,7 +149,7 @@ StudyResult runStudyInChild(const LaunchSettings& launch, const StudySpec& spec,
                     " (is it a directory every node shares?): " + exit.tail);
     StudyResult result;
     for (const ResultFile& f : kResultFiles)
-        if (auto bytes = readFile(folder.path() / f.name)) f.load(result, std::move(*bytes));
+        if (auto bytes = readFile(folder.path() / f.name)) result.load(f, std::move(*bytes));
     return result;
 }
 

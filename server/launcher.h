@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "child_process.h"
-#include "study/study_spec.h"
+#include "study/job_request.h"
 
 namespace facetlight::server {
 
@@ -42,7 +42,7 @@ struct ChildMesh {
 // source, or a shape of the cut library). Follows the child's progress into `control`; when control.cancel()
 // is called, ends the child's process group (SIGTERM, then SIGKILL after the grace period) and throws
 // Canceled. A launch that fails or exits non-zero throws Error with the end of the child's output.
-StudyResult runStudyInChild(const LaunchSettings& launch, const StudySpec& spec, RunControl& control);
+StudyResult runStudyInChild(const LaunchSettings& launch, const JobRequest& spec, RunControl& control);
 
 // Reads a progress line {"phase": "tracing", "done": 1, "total": 2} into control; false if it is not one.
 bool applyProgressLine(std::string_view line, RunControl& control);

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "study/sweep_job.h"
+#include "sweep/sweep_job.h"
 
 namespace facetlight::server {
 

@@ -2,7 +2,7 @@
 
 namespace facetlight::server {
 
-StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control,
+StudyResult InProcessRunner::run(const JobRequest& spec, RunControl& control,
                                  const SweepCheckpoint& checkpoint) {
     if (spec.settings.sweep) {
         SerialCommunicator serial;
@@ -16,14 +16,14 @@ StudyResult InProcessRunner::run(const StudySpec& spec, RunControl& control,
     return runStudy(named, spec.settings, control);
 }
 
-StudyResult LauncherRunner::run(const StudySpec& spec, RunControl& control,
+StudyResult LauncherRunner::run(const JobRequest& spec, RunControl& control,
                                 const SweepCheckpoint& checkpoint) {
     if (!useLauncher(launch_, spec.settings)) return inProcess_.run(spec, control, checkpoint);
     // A sweep's designs, and a design of the cut library, are built by the child.
     if (spec.settings.sweep || !spec.cut.empty()) return runStudyInChild(launch_, spec, control);
     catalog_.resolve(spec.mesh);  // a mesh that does not build fails here, as it would in-process
     const ChildMesh child = catalog_.locate(spec.mesh);
-    StudySpec located = spec;  // the same job, its mesh named as the child reads it
+    JobRequest located = spec;  // the same job, its mesh named as the child reads it
     located.mesh = child.source;
     if (located.name.empty()) located.name = child.name;
     return runStudyInChild(launch_, located, control);

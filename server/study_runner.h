@@ -16,7 +16,7 @@ namespace facetlight::server {
 class StudyRunner {
   public:
     virtual ~StudyRunner() = default;
-    virtual StudyResult run(const StudySpec& spec, RunControl& control,
+    virtual StudyResult run(const JobRequest& spec, RunControl& control,
                             const SweepCheckpoint& checkpoint) = 0;
 };
 
@@ -24,7 +24,7 @@ class StudyRunner {
 class InProcessRunner final : public StudyRunner {
   public:
     explicit InProcessRunner(const MeshCatalog& catalog) : catalog_(catalog) {}
-    StudyResult run(const StudySpec& spec, RunControl& control, const SweepCheckpoint& checkpoint) override;
+    StudyResult run(const JobRequest& spec, RunControl& control, const SweepCheckpoint& checkpoint) override;
 
   private:
     const MeshCatalog& catalog_;
@@ -37,7 +37,7 @@ class LauncherRunner final : public StudyRunner {
   public:
     LauncherRunner(const MeshCatalog& catalog, LaunchSettings launch)
         : catalog_(catalog), launch_(std::move(launch)), inProcess_(catalog) {}
-    StudyResult run(const StudySpec& spec, RunControl& control, const SweepCheckpoint& checkpoint) override;
+    StudyResult run(const JobRequest& spec, RunControl& control, const SweepCheckpoint& checkpoint) override;
 
   private:
     const MeshCatalog& catalog_;

@@ -62,15 +62,15 @@ StudyResult runSweepJob(const std::string& shape, const StudySettings& settings,
     if (!settings.sweep) throw Error("sweep", "the job is not a sweep");
     const SweepRequest& request = *settings.sweep;
     const SweepOutputs out =
-        runSweepRequest(sweepSpec(shape, request, settings.trace), request, control, comm, checkpoint);
+        runSweepRequest(planSweep(shape, request, settings.trace), request, control, comm, checkpoint);
     StudyResult result;
     if (!comm.isRoot()) return result;
-    result.sweepJson = out.json();
-    result.sweepCsv = out.csv();
-    result.sweepPng = out.pictures.front().second;
+    result.file("sweep.json") = out.json();
+    result.file("sweep.csv") = out.csv();
+    result.file("sweep.png") = out.pictures.front().second;
     if (!out.best.is_null()) {
-        result.bestJson = out.best.dump(2) + "\n";
-        result.bestObj = out.bestObj;
+        result.file("best.json") = out.best.dump(2) + "\n";
+        result.file("best.obj") = out.bestObj;
     }
     return result;
 }
@@ -107,11 +107,11 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
         result.stats = traceReport(traced, stone, settings.trace);
         std::ostringstream csv;
         writeFacetCsv(csv, traced.stats, stone);
-        result.statsCsv = csv.str();
-        result.heatmapPng = encodePng(facetHeatmap(stone, traced.stats));
-        result.heatmapLayout = toJson(heatmapLayout(stone), stone).dump();
+        result.file("stats.csv") = csv.str();
+        result.file("heatmap.png") = encodePng(facetHeatmap(stone, traced.stats));
+        result.file("heatmap.json") = toJson(heatmapLayout(stone), stone).dump();
         if (traced.fire) {
-            result.fireHeatmapPng = encodePng(fireHeatmap(stone, *traced.fire));
+            result.file("heatmap_fire.png") = encodePng(fireHeatmap(stone, *traced.fire));
         }
     }
 
@@ -127,7 +127,7 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
     if (photons.cancelled || control.cancelled()) throw Canceled();
     const PhotonMap caustics(std::move(photons.caustic), threads);
     if (comm.isRoot()) {
-        result.angularPng = encodePng(angularPlot(
+        result.file("angular.png") = encodePng(angularPlot(
             photons.crownExits, std::to_string(photons.crownExits.total) + " of " +
                                     std::to_string(r.mapPhotons) + " photons (" +
                                     std::string(kLightModelNames.name(settings.trace.light.model)) +
@@ -141,13 +141,13 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
     const RenderedImage image = render(comm, scene, caustics, r, threads, settings.trace.seed, &control);
     if (image.cancelled || control.cancelled()) throw Canceled();
     if (!comm.isRoot()) return result;
-    result.renderPng = encodePng(toDisplay(image));
+    result.file("render.png") = encodePng(toDisplay(image));
     if (settings.firePicture) {
         // Rank 0 alone, like the views below.
         const FirePicture fire =
             firePicture(scene, r, *settings.firePicture, threads, settings.trace.seed, &control);
         if (fire.cancelled || control.cancelled()) throw Canceled();
-        result.firePng = encodePng(toDisplay(fire));
+        result.file("fire.png") = encodePng(toDisplay(fire));
     }
     if (settings.aset) {
         // Rank 0 alone: a few view rays per pixel, far cheaper than the render.
@@ -155,7 +155,7 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
                                        settings.trace.seed, &control);
         if (view.cancelled || control.cancelled()) throw Canceled();
         result.stats["aset"] = toJson(view, *settings.aset);
-        result.asetPng = encodePng(asetPicture(view, *settings.aset, "ASET view of " + stone.name));
+        result.file("aset.png") = encodePng(asetPicture(view, *settings.aset, "ASET view of " + stone.name));
     }
     if (settings.tiltSeries) {
         const AsetSettings aset = settings.aset.value_or(AsetSettings{});
@@ -170,8 +170,8 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
             std::snprintf(tilt, sizeof tilt, " tilted %+.1f deg about ", f.tiltDeg);
             frames.push_back(asetPicture(f.view, aset, stone.name + tilt + axis));
         }
-        result.tiltWebp = encodeAnimatedWebp(frames, kTiltFrameMs);
-        result.tiltChartPng = encodePng(tiltChart(series, "Light return against tilt: " + stone.name));
+        result.file("tilt.webp") = encodeAnimatedWebp(frames, kTiltFrameMs);
+        result.file("tilt.png") = encodePng(tiltChart(series, "Light return against tilt: " + stone.name));
     }
     enterPhase(control, RunPhase::Done, 0);
     return result;

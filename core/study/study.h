@@ -10,7 +10,8 @@
 #include "render/render_settings.h"
 #include "render/view_settings.h"
 #include "stone/stone.h"
-#include "study/sweep_job.h"
+#include "study/result_files.h"
+#include "sweep/sweep_job.h"
 #include "trace/trace_settings.h"
 #include "util/distributed.h"
 #include "util/run_control.h"
@@ -32,19 +33,6 @@ struct StudySettings {
     std::optional<SweepRequest> sweep;
 };
 
-struct StudyResult {
-    nlohmann::json stats;                           // the statistics document (docs/stats-schema.md)
-    std::string statsCsv;                           // the facet table
-    std::string renderPng, heatmapPng, angularPng;  // empty without a render (the heat-map: always)
-    std::string heatmapLayout;  // heatmap.png's facets in pixels (JSON, docs/stats-schema.md), with it
-    std::string asetPng;        // with an ASET view
-    std::string fireHeatmapPng;          // with a fire trace: each facet's share of the fire
-    std::string tiltWebp, tiltChartPng;  // with a tilt series: the animation and light return against tilt
-    std::string firePng;                 // with a fire picture
-    // A sweep's files: sweep.json, sweep.csv, its figure's picture; with a search best.json and best.obj.
-    std::string sweepJson, sweepCsv, sweepPng, bestJson, bestObj;
-};
-
 // Builds one Scene for every phase and runs them, each reporting to `control` (RunPhase::Tracing, PhotonMap,
 // Rendering, then Done; done() and total() in photons or pixels). Throws Canceled when control.cancel() is
 // called while it runs, Error on bad settings.
@@ -55,15 +43,10 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunControl& control,
                      Communicator& comm);
 // A sweep job (settings.sweep) of the cut library's shape `shape` on every rank of `comm`: rank 0's result
-// holds its files (sweepJson, sweepCsv, sweepPng of the first figure; with a search bestJson, bestObj).
+// holds its files (sweep.json, sweep.csv, sweep.png of the first figure; with a search best.json, best.obj).
 StudyResult runSweepJob(const std::string& shape, const StudySettings& settings, RunControl& control,
                         Communicator& comm, const SweepCheckpoint& checkpoint = {});
 // The units of a phase of the whole study, over every rank: its photons or pixels (0 for the others).
 uint64_t studyUnits(const StudySettings& settings, RunPhase phase);
-
-class Canceled : public std::exception {
-  public:
-    const char* what() const noexcept override { return "canceled"; }
-};
 
 }  // namespace facetlight

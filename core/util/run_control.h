@@ -5,6 +5,7 @@
 // checked before each block.
 #include <atomic>
 #include <cstdint>
+#include <exception>
 #include <optional>
 #include <string_view>
 
@@ -14,6 +15,13 @@ enum class RunPhase : uint8_t { Queued, Tracing, PhotonMap, Rendering, Done };
 std::string_view runPhaseName(RunPhase phase);
 // The phase runPhaseName gives `name`; none for any other name.
 std::optional<RunPhase> runPhaseNamed(std::string_view name);
+
+// What a sweep or a study throws when its RunControl's cancel stops it (the phases below them return a
+// `cancelled` flag instead); caught where the job is run.
+class Canceled : public std::exception {
+  public:
+    const char* what() const noexcept override { return "canceled"; }
+};
 
 class RunControl {
   public:

@@ -47,8 +47,8 @@ StudySettings traceOnly(uint64_t photons) {
 }
 
 // The job a launcher hands its child: `mesh` as the child reads it, traced with `settings`.
-StudySpec childJob(std::string mesh, std::string name, StudySettings settings) {
-    StudySpec spec;
+JobRequest childJob(std::string mesh, std::string name, StudySettings settings) {
+    JobRequest spec;
     spec.mesh = std::move(mesh);
     spec.name = std::move(name);
     spec.settings = std::move(settings);
@@ -188,8 +188,8 @@ TEST(Launcher, RunsAJobThroughMpirunAndMatchesTheInProcessResult) {
     RunControl local;
     const StudyResult inProcess = runStudy(stone, settings, local);
     EXPECT_EQ(withoutTiming(child.stats), withoutTiming(inProcess.stats));
-    EXPECT_EQ(child.statsCsv, inProcess.statsCsv);
-    EXPECT_EQ(child.heatmapPng, inProcess.heatmapPng);
+    EXPECT_EQ(child.file("stats.csv"), inProcess.file("stats.csv"));
+    EXPECT_EQ(child.file("heatmap.png"), inProcess.file("heatmap.png"));
 }
 
 TEST(Launcher, CancelsAJobRunningUnderMpirun) {

@@ -189,14 +189,14 @@ TEST(FirePicture, StudyWritesFirePng) {
     s.firePicture = fewWavelengths();
     RunControl control;
     const StudyResult result = runStudy(roundBrilliant(), s, control);
-    const Decoded d = decodePng(result.firePng);
+    const Decoded d = decodePng(result.file("fire.png"));
     EXPECT_EQ(d.width, 96);
     EXPECT_EQ(d.height, 80);
     const auto file = std::find_if(kResultFiles.begin(), kResultFiles.end(),
                                    [](const ResultFile& f) { return f.name == "fire.png"; });
     ASSERT_NE(file, kResultFiles.end());
     EXPECT_EQ(file->needs, "fire_picture");
-    EXPECT_EQ(file->bytes(result), result.firePng);
+    EXPECT_EQ(result.bytes(*file), result.file("fire.png"));
 
     s.render.reset();
     EXPECT_THROW(runStudy(roundBrilliant(), s, control), Error);

@@ -126,11 +126,11 @@ TEST(Study, WritesThreePicturesOfTheStatedSizes) {
     s.render = smallRender();
     RunControl control;
     const StudyResult result = runStudy(roundBrilliant(), s, control);
-    EXPECT_EQ(pngSize(result.renderPng), std::make_pair(64u, 48u));
-    EXPECT_GT(pngSize(result.heatmapPng).first, 0u);
-    EXPECT_GT(pngSize(result.angularPng).first, 0u);
+    EXPECT_EQ(pngSize(result.file("render.png")), std::make_pair(64u, 48u));
+    EXPECT_GT(pngSize(result.file("heatmap.png")).first, 0u);
+    EXPECT_GT(pngSize(result.file("angular.png")).first, 0u);
     EXPECT_EQ(result.stats["totals"]["photons"], 20'000);
-    EXPECT_NE(result.statsCsv.find("leaving_share"), std::string::npos);
+    EXPECT_NE(result.file("stats.csv").find("leaving_share"), std::string::npos);
     EXPECT_EQ(control.phase(), RunPhase::Done);
 }
 
@@ -139,9 +139,9 @@ TEST(Study, StatisticsOnlyWithoutRender) {
     s.trace = smallTrace(1);
     RunControl control;
     const StudyResult result = runStudy(roundBrilliant(), s, control);
-    EXPECT_TRUE(result.renderPng.empty());
-    EXPECT_TRUE(result.angularPng.empty());
-    EXPECT_FALSE(result.heatmapPng.empty());
+    EXPECT_TRUE(result.file("render.png").empty());
+    EXPECT_TRUE(result.file("angular.png").empty());
+    EXPECT_FALSE(result.file("heatmap.png").empty());
 }
 
 TEST(Study, CancelThrowsCanceled) {

@@ -159,13 +159,13 @@ TEST(TiltSeries, StudyWritesAnAnimationThatDecodes) {
     settings.tiltSeries->stepDeg = 1.5;
     RunControl control;
     const StudyResult result = runStudy(test::roundBrilliant(), settings, control);
-    const Decoded d = decode(result.tiltWebp);
+    const Decoded d = decode(result.file("tilt.webp"));
     EXPECT_EQ(d.frames, 5);
     EXPECT_GE(d.width, 48);
     EXPECT_EQ(result.stats["tilt_series"]["frames"].size(), 5u);
     EXPECT_EQ(result.stats["aset"]["shares"].size(), 5u);
-    EXPECT_FALSE(result.asetPng.empty());
-    EXPECT_FALSE(result.tiltChartPng.empty());
+    EXPECT_FALSE(result.file("aset.png").empty());
+    EXPECT_FALSE(result.file("tilt.png").empty());
     EXPECT_EQ(control.done(), control.total());
 
     settings.render.reset();

@@ -18,7 +18,7 @@
 #include <httplib.h>
 
 #include "service.h"
-#include "study/sweep.h"
+#include "sweep/sweep_figures.h"
 #include "util/simd_target.h"
 
 namespace facetlight::server {

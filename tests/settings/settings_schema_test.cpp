@@ -10,8 +10,8 @@
 #include "cli/trace_options.h"
 #include "render/render_settings.h"
 #include "render/view_settings.h"
-#include "study/study_spec.h"
-#include "study/sweep_job.h"
+#include "study/job_request.h"
+#include "sweep/sweep_request.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -74,7 +74,7 @@ std::vector<json> badValues(const FieldInfo& f) {
 
 std::string errorField(const json& job) {
     try {
-        StudySpec::fromJson(job);
+        JobRequest::fromJson(job);
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find(e.field()), std::string::npos) << e.what();
         return e.field();
@@ -121,14 +121,14 @@ TEST(SettingsSchema, IntegerRangesAreExact) {
     EXPECT_EQ(seed(1e300), "seed");
     EXPECT_EQ(seed(-0.5), "seed");
     EXPECT_EQ(seed(json(UINT64_MAX)), "no error");
-    EXPECT_EQ(StudySpec::fromJson({{"mesh", "m"}, {"seed", UINT64_MAX}}).settings.trace.seed, UINT64_MAX);
-    EXPECT_EQ(StudySpec::fromJson({{"mesh", "m"}, {"photons", 1e10}}).settings.trace.photons, kMaxPhotons);
+    EXPECT_EQ(JobRequest::fromJson({{"mesh", "m"}, {"seed", UINT64_MAX}}).settings.trace.seed, UINT64_MAX);
+    EXPECT_EQ(JobRequest::fromJson({{"mesh", "m"}, {"photons", 1e10}}).settings.trace.photons, kMaxPhotons);
     EXPECT_EQ(errorField({{"mesh", "m"}, {"photons", kMaxPhotons + 1}}), "photons");
     EXPECT_EQ(errorField({{"mesh", "m"}, {"threads", int64_t(-1)}}), "threads");
 }
 
 TEST(SettingsSchema, JsonRoundTrip) {
-    StudySpec spec;
+    JobRequest spec;
     spec.mesh = "round_brilliant";
     spec.name = "test stone";
     TraceSettings& t = spec.settings.trace;
@@ -147,14 +147,14 @@ TEST(SettingsSchema, JsonRoundTrip) {
     spec.settings.tiltSeries = TiltSeriesSettings{5, 0.5, 90};
     spec.settings.firePicture = FirePictureSettings{7, 35, 2.5, 0.1};
     const json written = toJson(spec);
-    const StudySpec back = StudySpec::fromJson(written);
+    const JobRequest back = JobRequest::fromJson(written);
     EXPECT_EQ(toJson(back), written);
     EXPECT_EQ(back.settings.trace.seed, UINT64_MAX);
     EXPECT_EQ(back.settings.render->camera.fovDeg, 33);
     // Every field is written, and each differs from its default, so none is lost on the way.
     forEachJobField([&](const std::string& path, const FieldInfo&) {
         ASSERT_TRUE(written.contains(pointer(path))) << path;
-        StudySpec defaults;
+        JobRequest defaults;
         defaults.settings.render.emplace();
         defaults.settings.aset.emplace();
         defaults.settings.tiltSeries.emplace();
@@ -165,7 +165,7 @@ TEST(SettingsSchema, JsonRoundTrip) {
     spec.settings.aset.reset();
     spec.settings.tiltSeries.reset();
     spec.settings.firePicture.reset();
-    EXPECT_EQ(toJson(StudySpec::fromJson(toJson(spec))), toJson(spec));
+    EXPECT_EQ(toJson(JobRequest::fromJson(toJson(spec))), toJson(spec));
 }
 
 TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
@@ -304,7 +304,7 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     EXPECT_EQ(documented, keys);
 }
 
-// A sweep's object (core/study/sweep_job.h) has the keys its table reads, no more.
+// A sweep's object (core/sweep/sweep_request.h) has the keys its table reads, no more.
 TEST(SettingsSchema, OpenApiSweepAgreesWithItsTable) {
     std::ifstream in(FACETLIGHT_SOURCE_DIR "/server/openapi.json");
     const json api = json::parse(in);

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "study/sweep.h"
+#include "sweep/sweep_run.h"
 
 namespace facetlight {
 
@@ -61,9 +61,9 @@ SweepConstraint parseSweepConstraint(const std::string& text);
 
 // The objective of a sweep: `figure` at each point of `base` with the grid's axes and photons, infeasible
 // where the point could not be traced or breaks a constraint. Each round's result is appended to `rounds`;
-// each round runs on every rank of `comm` with the hooks `hooks` gives for it (its index from 0, its spec).
-using SweepRoundHooks = std::function<SweepPointHooks(size_t round, const SweepSpec& spec)>;
-GridObjective sweepObjective(const SweepSpec& base, const std::string& figure,
+// each round runs on every rank of `comm` with the hooks `hooks` gives for it (its index from 0, its plan).
+using SweepRoundHooks = std::function<SweepPointHooks(size_t round, const SweepPlan& plan)>;
+GridObjective sweepObjective(const SweepPlan& base, const std::string& figure,
                              const std::vector<SweepConstraint>& constraints, RunControl& control,
                              std::vector<SweepResult>& rounds, Communicator& comm,
                              const SweepRoundHooks& hooks = {});

@@ -1,4 +1,4 @@
-#include "study/optimizer.h"
+#include "sweep/optimizer.h"
 
 #include <gtest/gtest.h>
 
@@ -41,12 +41,24 @@ std::vector<SweepAxis> coarseGrid() {
 }
 
 // The round brilliant's sweep with `photons` a point on 2 threads, its axes for the search to set.
-SweepSpec roundBrilliantSweep(uint64_t photons) {
-    SweepSpec spec;
-    spec.shape = "round_brilliant";
-    spec.trace.photons = photons;
-    spec.trace.threads = 2;
-    return spec;
+SweepPlan roundBrilliantSweep(uint64_t photons) {
+    SweepPlan plan;
+    plan.shape = "round_brilliant";
+    plan.trace.photons = photons;
+    plan.trace.threads = 2;
+    return plan;
+}
+
+// Searches `figure` over the pavilion angles of `range` within `limits`, each round appended to `rounds`.
+OptimizeResult searchPavilion(const SweepPlan& plan, const std::string& range, const std::string& figure,
+                              const std::vector<SweepConstraint>& limits, int refineRounds,
+                              std::vector<SweepResult>& rounds) {
+    RunControl control;
+    SerialCommunicator serial;
+    OptimizeSettings settings;
+    settings.refineRounds = refineRounds;
+    return maximize({parseSweepAxis("pavilion=" + range)}, plan.trace.photons,
+                    sweepObjective(plan, figure, limits, control, rounds, serial), settings);
 }
 
 }  // namespace
@@ -94,18 +106,11 @@ TEST(Optimizer, RefusesNamesAndImpossibleConstraints) {
 // The real objective: a pavilion search under light straight down keeps to the depth limit, and its rounds
 // are ordinary sweeps with more photons each.
 TEST(Optimizer, SearchesASweepWithinADepthLimit) {
-    const SweepSpec spec = roundBrilliantSweep(4000);
-    RunControl control;
     std::vector<SweepResult> rounds;
-    SerialCommunicator serial;
-    const std::vector<SweepConstraint> limits{parseSweepConstraint("total_depth<=60")};
-    OptimizeSettings settings;
-    settings.refineRounds = 1;
-    const OptimizeResult r =
-        maximize({parseSweepAxis("pavilion=38:44:1")}, spec.trace.photons,
-                 sweepObjective(spec, "weighted_return", limits, control, rounds, serial), settings);
+    const OptimizeResult r = searchPavilion(roundBrilliantSweep(4000), "38:44:1", "weighted_return",
+                                            {parseSweepConstraint("total_depth<=60")}, 1, rounds);
     ASSERT_EQ(rounds.size(), 2u);
-    EXPECT_EQ(rounds[1].spec.trace.photons, 16000u);
+    EXPECT_EQ(rounds[1].plan.trace.photons, 16000u);
     for (const SweepPoint& p : rounds[1].points)
         if (p.cut.at("pavilion") == r.best.values[0]) {
             EXPECT_LE(p.proportions["total_depth_pct"].get<double>(), 60);
@@ -116,18 +121,14 @@ TEST(Optimizer, SearchesASweepWithinADepthLimit) {
 
 // A fire figure is searched like any other, within a limit on another figure, once fire is traced.
 TEST(Optimizer, SearchesAFireFigure) {
-    SweepSpec spec = roundBrilliantSweep(3000);
+    SweepPlan plan = roundBrilliantSweep(3000);
     RunControl control;
     std::vector<SweepResult> rounds;
     SerialCommunicator serial;
     const std::vector<SweepConstraint> limits{parseSweepConstraint("weighted_return>=0.55")};
-    EXPECT_THROW(sweepObjective(spec, "coloured_share", limits, control, rounds, serial), Error);  // fire off
-    spec.trace.fire.enabled = true;
-    OptimizeSettings settings;
-    settings.refineRounds = 0;
-    const OptimizeResult r =
-        maximize({parseSweepAxis("pavilion=38:43:1")}, spec.trace.photons,
-                 sweepObjective(spec, "coloured_share", limits, control, rounds, serial), settings);
+    EXPECT_THROW(sweepObjective(plan, "coloured_share", limits, control, rounds, serial), Error);  // fire off
+    plan.trace.fire.enabled = true;
+    const OptimizeResult r = searchPavilion(plan, "38:43:1", "coloured_share", limits, 0, rounds);
     ASSERT_EQ(rounds.size(), 1u);
     const std::vector<SweepPoint>& points = rounds[0].points;
     double highest = 0;

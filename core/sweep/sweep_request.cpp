@@ -1,11 +1,7 @@
-#include "study/sweep_job.h"
+#include "sweep/sweep_request.h"
 
-#include "cuts/cut_library.h"
-#include "image/image.h"
-#include "io/obj_writer.h"
-#include "study/optimizer.h"
-#include "study/study.h"
-#include "study/sweep_pictures.h"
+#include "sweep/optimizer.h"
+#include "sweep/sweep_figures.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -147,15 +143,6 @@ settings::Field<SweepRequest> constraintsField() {
             [](const SweepRequest& r) { return json(r.constraints); }};
 }
 
-json designJson(const std::vector<SweepAxis>& axes, const RatedDesign& d, double z) {
-    json values = json::object();
-    for (size_t a = 0; a < axes.size(); ++a) values[axes[a].name] = d.values[a];
-    return {{"values", values},
-            {"value", d.estimate.value},
-            {"stderr", d.estimate.sigma},
-            {"interval", {d.estimate.value - z * d.estimate.sigma, d.estimate.value + z * d.estimate.sigma}}};
-}
-
 }  // namespace
 
 const settings::Schema<SweepRequest>& sweepRequestSchema() {
@@ -176,8 +163,8 @@ const settings::Schema<SweepRequest>& sweepRequestSchema() {
     return schema;
 }
 
-SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const TraceSettings& trace) {
-    SweepSpec spec{shape, request.set, request.axes, trace};
+SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace) {
+    SweepPlan plan{shape, request.set, request.axes, trace};
     const CutShape* cut = nullptr;
     try {
         cut = &findCutShape(shape);
@@ -190,7 +177,7 @@ SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const
         throw Error("sweep.set", e.what());
     }
     for (size_t i = 0; i < request.axes.size(); ++i) {
-        SweepSpec one = spec;
+        SweepPlan one = plan;
         one.axes = {request.axes[i]};
         try {
             one.validate();
@@ -202,12 +189,12 @@ SweepSpec sweepSpec(const std::string& shape, const SweepRequest& request, const
                         "the best design is searched over numbers; " + request.axes[i].name + " takes names");
     }
     try {
-        spec.validate();
+        plan.validate();
     } catch (const Error& e) {
         throw Error("sweep.axes", e.what());
     }
     checkSweepFigures(request, trace);
-    return spec;
+    return plan;
 }
 
 void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace,
@@ -226,74 +213,6 @@ void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace,
         if (!quantity.ends_with("_pct"))
             check(quantity, fields.indexed ? itemPath(fields.constraints, i) : fields.constraints);
     }
-}
-
-SweepOutputs runSweepRequest(const SweepSpec& spec, const SweepRequest& request, RunControl& control,
-                             Communicator& comm, const SweepCheckpoint& checkpoint) {
-    const int rounds = request.rounds();
-    const bool keep = comm.isRoot() && checkpoint.store;
-    const SweepRoundHooks hooks = [&](size_t round, const SweepSpec& s) {
-        control.startStage(int(round) + 1, rounds, s.pointCount());
-        SweepPointHooks h;
-        if (checkpoint.restore)
-            h.restore = [&checkpoint, round](size_t k) { return checkpoint.restore(round, k); };
-        if (keep)
-            h.onPoint = [&checkpoint, round, s](size_t k, const SweepPoint& p) {
-                checkpoint.store(round, k, sweepPointJson(s, p));
-            };
-        return h;
-    };
-    SweepOutputs out;
-    std::optional<OptimizeResult> best;
-    OptimizeSettings settings;
-    settings.refineRounds = request.refineRounds;
-    std::vector<SweepResult> results;
-    if (request.maximize.empty()) {
-        out.sweep = runSweep(spec, control, hooks(0, spec), comm);
-    } else {
-        std::vector<SweepConstraint> constraints;
-        for (const std::string& text : request.constraints) constraints.push_back(parseSweepConstraint(text));
-        best = maximize(spec.axes, spec.trace.photons,
-                        sweepObjective(spec, request.maximize, constraints, control, results, comm, hooks),
-                        settings);
-        out.sweep = results.front();
-    }
-    if (!comm.isRoot()) return out;
-    size_t failed = 0;
-    for (const SweepPoint& p : out.sweep.points) failed += !p.ok();
-    if (failed == out.sweep.points.size())
-        throw Error("no point of the sweep could be traced: " + out.sweep.points[0].error);
-    for (const auto& [name, image] : sweepPictures(out.sweep, request.figures))
-        out.pictures.emplace_back(name, encodePng(image));
-    if (!best) return out;
-
-    SweepSpec bestSpec = spec;
-    for (size_t a = 0; a < spec.axes.size(); ++a) bestSpec.axes[a].values = {best->best.values[a]};
-    const CutShape& shape = findCutShape(spec.shape);
-    const CutValues cut = sweepPoints(bestSpec)[0].cut;
-    const std::string command = "facetlight cut " + cutCommandLine(shape, cut);
-    out.bestObj = objText(shape.build(cut), command);
-
-    json ties = json::array();
-    for (const RatedDesign& t : best->ties) ties.push_back(designJson(best->lastAxes, t, settings.z));
-    json roundsJson = json::array();
-    for (const SweepResult& r : results) {
-        json axes = json::object();
-        for (const SweepAxis& a : r.spec.axes) axes[a.name] = a.values;
-        roundsJson.push_back({{"photons", r.spec.trace.photons}, {"axes", axes}, {"seconds", r.seconds}});
-    }
-    json bestJson = designJson(best->lastAxes, best->best, settings.z);
-    bestJson["photons"] = best->photons;
-    bestJson["cut"] = cut;
-    bestJson["command"] = command;
-    out.best = {{"figure", request.maximize},
-                {"confidence", 0.95},
-                {"constraints", request.constraints},
-                {"best", bestJson},
-                {"ties", ties},
-                {"rounds", roundsJson},
-                {"evaluations", best->evaluations}};
-    return out;
 }
 
 }  // namespace facetlight

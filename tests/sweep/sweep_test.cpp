@@ -1,4 +1,4 @@
-#include "study/sweep.h"
+#include "sweep/sweep_run.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,9 @@
 
 #include "scene/scene.h"
 #include "stats/fire_stats.h"
-#include "study/study.h"
+#include "util/run_control.h"
+#include "sweep/sweep_figures.h"
+#include "sweep/sweep_files.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
 
@@ -17,18 +19,18 @@ using namespace facetlight;
 
 namespace {
 
-SweepSpec pavilionSweep(const std::string& range, uint64_t photons, int threads) {
-    SweepSpec spec;
-    spec.shape = "round_brilliant";
-    spec.axes = {parseSweepAxis("pavilion=" + range)};
-    spec.trace.photons = photons;
-    spec.trace.threads = threads;
-    return spec;
+SweepPlan pavilionSweep(const std::string& range, uint64_t photons, int threads) {
+    SweepPlan plan;
+    plan.shape = "round_brilliant";
+    plan.axes = {parseSweepAxis("pavilion=" + range)};
+    plan.trace.photons = photons;
+    plan.trace.threads = threads;
+    return plan;
 }
 
 // Runs the sweep resumed from the kept points `restored` picks; returns it and the points it traced, in
 // order.
-std::pair<SweepResult, std::vector<size_t>> resumeSweep(const SweepSpec& spec, RunControl& control,
+std::pair<SweepResult, std::vector<size_t>> resumeSweep(const SweepPlan& plan, RunControl& control,
                                                         const std::vector<nlohmann::json>& kept,
                                                         const std::function<bool(size_t)>& restored) {
     std::vector<size_t> traced;
@@ -39,7 +41,7 @@ std::pair<SweepResult, std::vector<size_t>> resumeSweep(const SweepSpec& spec, R
         std::lock_guard lock(mutex);
         traced.push_back(k);
     };
-    SweepResult result = runSweep(spec, control, hooks);
+    SweepResult result = runSweep(plan, control, hooks);
     std::sort(traced.begin(), traced.end());
     return {std::move(result), traced};
 }
@@ -72,36 +74,36 @@ TEST(Sweep, RefusesBadAxes) {
     EXPECT_THROW(parseSweepAxis("pavilion=a:45:1"), Error);
     EXPECT_THROW(parseSweepAxis("pavilion=0:1:1e-6"), Error);  // too many values
 
-    SweepSpec spec = pavilionSweep("37:45:1", 1000, 1);
-    EXPECT_NO_THROW(spec.validate());
-    spec.axes = {parseSweepAxis("pavillion=37:45:1")};
-    EXPECT_THROW(spec.validate(), Error);  // not a parameter
-    spec.axes = {parseSweepAxis("pavilion=10:45:1")};
-    EXPECT_THROW(spec.validate(), Error);  // below the parameter's range
-    spec.axes = {parseSweepAxis("pavilion=37:45:1"), parseSweepAxis("pavilion=38,39")};
-    EXPECT_THROW(spec.validate(), Error);  // twice
-    spec.axes = {parseSweepAxis("pavilion=30:59:0.01"), parseSweepAxis("crown=10:59:0.01")};
-    EXPECT_THROW(spec.validate(), Error);  // too many points
-    spec.axes = {parseSweepAxis("material=diamond,unobtainium")};
-    EXPECT_THROW(spec.validate(), Error);
-    spec.shape = "round_brillant";
-    EXPECT_THROW(spec.validate(), Error);
+    SweepPlan plan = pavilionSweep("37:45:1", 1000, 1);
+    EXPECT_NO_THROW(plan.validate());
+    plan.axes = {parseSweepAxis("pavillion=37:45:1")};
+    EXPECT_THROW(plan.validate(), Error);  // not a parameter
+    plan.axes = {parseSweepAxis("pavilion=10:45:1")};
+    EXPECT_THROW(plan.validate(), Error);  // below the parameter's range
+    plan.axes = {parseSweepAxis("pavilion=37:45:1"), parseSweepAxis("pavilion=38,39")};
+    EXPECT_THROW(plan.validate(), Error);  // twice
+    plan.axes = {parseSweepAxis("pavilion=30:59:0.01"), parseSweepAxis("crown=10:59:0.01")};
+    EXPECT_THROW(plan.validate(), Error);  // too many points
+    plan.axes = {parseSweepAxis("material=diamond,unobtainium")};
+    EXPECT_THROW(plan.validate(), Error);
+    plan.shape = "round_brillant";
+    EXPECT_THROW(plan.validate(), Error);
 }
 
 // A point of a sweep is an ordinary trace: a design traced alone with the point's settings gives the same
 // tallies, bit for bit, whether its stone is shared with other points (the tilt axis) or not.
 TEST(Sweep, PointEqualsSingleTrace) {
-    SweepSpec spec = pavilionSweep("39.5,41.25", 20000, 2);
-    spec.axes.push_back(parseSweepAxis("tilt=0,10"));
-    spec.fixed = {{"crown", 33}};
+    SweepPlan plan = pavilionSweep("39.5,41.25", 20000, 2);
+    plan.axes.push_back(parseSweepAxis("tilt=0,10"));
+    plan.fixed = {{"crown", 33}};
     RunControl control;
     std::atomic<int> finished{0};
     SweepPointHooks hooks;
     hooks.onPoint = [&](size_t, const SweepPoint&) {
         ++finished;
-        EXPECT_EQ(control.total(), 4 * spec.trace.photons);  // progress in photons over all points
+        EXPECT_EQ(control.total(), 4 * plan.trace.photons);  // progress in photons over all points
     };
-    const SweepResult result = runSweep(spec, control, hooks);
+    const SweepResult result = runSweep(plan, control, hooks);
     ASSERT_EQ(result.points.size(), 4u);
     EXPECT_EQ(finished, 4);
     EXPECT_EQ(control.itemsDone(), 4u);
@@ -114,7 +116,7 @@ TEST(Sweep, PointEqualsSingleTrace) {
 
     const Stone stone =
         Stone::build(makeCut("round_brilliant", {{"pavilion", 41.25}, {"crown", 33}}), "alone");
-    TraceSettings settings = spec.trace;
+    TraceSettings settings = plan.trace;
     settings.light.tiltDeg = 10;
     settings.threads = 1;
     const Scene scene(stone, settings);
@@ -136,7 +138,7 @@ TEST(Sweep, PavilionSweepPeaksBetweenFishEyeAndNailHead) {
         w.push_back(p.figure("weighted_return"));
     }
     const size_t peak = size_t(std::max_element(w.begin(), w.end()) - w.begin());
-    const double peakPavilion = result.spec.axes[0].values[peak];
+    const double peakPavilion = result.plan.axes[0].values[peak];
     EXPECT_GE(peakPavilion, 38);
     EXPECT_LE(peakPavilion, 43);
     const double sigma = result.points[peak].stderrOf("weighted_return");
@@ -145,24 +147,24 @@ TEST(Sweep, PavilionSweepPeaksBetweenFishEyeAndNailHead) {
 }
 
 TEST(Sweep, SameBitsAtAnyThreadCount) {
-    SweepSpec spec = pavilionSweep("39:42:1.5", 10000, 1);
-    spec.axes.push_back(parseSweepAxis("material=diamond,cubic_zirconia"));
+    SweepPlan plan = pavilionSweep("39:42:1.5", 10000, 1);
+    plan.axes.push_back(parseSweepAxis("material=diamond,cubic_zirconia"));
     RunControl one, two, five;
-    const SweepResult a = runSweep(spec, one);
-    spec.trace.threads = 2;
-    const SweepResult b = runSweep(spec, two);
-    spec.trace.threads = 5;  // fewer points than threads: the rest trace within points
-    spec.axes.pop_back();
-    const SweepResult c = runSweep(spec, five);
+    const SweepResult a = runSweep(plan, one);
+    plan.trace.threads = 2;
+    const SweepResult b = runSweep(plan, two);
+    plan.trace.threads = 5;  // fewer points than threads: the rest trace within points
+    plan.axes.pop_back();
+    const SweepResult c = runSweep(plan, five);
     EXPECT_EQ(withoutTiming(a), withoutTiming(b));
     EXPECT_EQ(sweepCsv(a), sweepCsv(b));
     for (size_t k = 0; k < c.points.size(); ++k) EXPECT_TRUE(c.points[k].stats == a.points[2 * k].stats);
 }
 
 TEST(Sweep, JsonAndCsvCarryEveryPointWithErrors) {
-    SweepSpec spec = pavilionSweep("40,41", 5000, 1);
+    SweepPlan plan = pavilionSweep("40,41", 5000, 1);
     RunControl control;
-    const SweepResult result = runSweep(spec, control);
+    const SweepResult result = runSweep(plan, control);
     const nlohmann::json j = sweepToJson(result);
     EXPECT_EQ(j["axes"][0]["unit"], "deg");
     EXPECT_EQ(j["points"].size(), 2u);
@@ -195,20 +197,20 @@ TEST(Sweep, CancelStopsIt) {
 // A sweep resumed from some of its points (as the service keeps them) traces only the others and ends with
 // the same sweep.json points as one that ran whole.
 TEST(Sweep, ResumedFromKeptPointsGivesTheSameBits) {
-    const SweepSpec spec = pavilionSweep("38:42:1", 5000, 2);
+    const SweepPlan plan = pavilionSweep("38:42:1", 5000, 2);
     RunControl whole;
-    std::vector<nlohmann::json> kept(spec.pointCount());
+    std::vector<nlohmann::json> kept(plan.pointCount());
     SweepPointHooks keep;
-    keep.onPoint = [&](size_t k, const SweepPoint& p) { kept[k] = sweepPointJson(spec, p); };
-    const nlohmann::json expected = sweepToJson(runSweep(spec, whole, keep))["points"];
+    keep.onPoint = [&](size_t k, const SweepPoint& p) { kept[k] = sweepPointJson(plan, p); };
+    const nlohmann::json expected = sweepToJson(runSweep(plan, whole, keep))["points"];
 
     RunControl resumed;
-    const auto [result, traced] = resumeSweep(spec, resumed, kept, [](size_t k) { return k % 2 == 0; });
+    const auto [result, traced] = resumeSweep(plan, resumed, kept, [](size_t k) { return k % 2 == 0; });
     EXPECT_EQ(traced, (std::vector<size_t>{1, 3}));
     EXPECT_EQ(resumed.itemsDone(), 5u);
     EXPECT_EQ(sweepToJson(result)["points"].dump(), expected.dump());
 
-    SweepPoint other = sweepPoints(spec)[1];
+    SweepPoint other = sweepPoints(plan)[1];
     EXPECT_THROW(restoreSweepPoint(kept[0], other), Error);  // a point of another place in the grid
 }
 
@@ -216,13 +218,13 @@ TEST(Sweep, ResumedFromKeptPointsGivesTheSameBits) {
 // sweep.json and sweep.csv; a sweep resumed from kept points gives the same bits, and a point kept without
 // them (by a build that reported none) is traced again. With fire off, none of it appears.
 TEST(Sweep, FireFiguresAtEveryPointAndResumed) {
-    SweepSpec spec = pavilionSweep("39,40.5,42", 3000, 2);
-    spec.trace.fire.enabled = true;
+    SweepPlan plan = pavilionSweep("39,40.5,42", 3000, 2);
+    plan.trace.fire.enabled = true;
     RunControl whole;
-    std::vector<nlohmann::json> kept(spec.pointCount());
+    std::vector<nlohmann::json> kept(plan.pointCount());
     SweepPointHooks keep;
-    keep.onPoint = [&](size_t k, const SweepPoint& p) { kept[k] = sweepPointJson(spec, p); };
-    const SweepResult result = runSweep(spec, whole, keep);
+    keep.onPoint = [&](size_t k, const SweepPoint& p) { kept[k] = sweepPointJson(plan, p); };
+    const SweepResult result = runSweep(plan, whole, keep);
     const nlohmann::json j = sweepToJson(result);
     const std::vector<std::string> figures = j["figures"];
     EXPECT_EQ(figures, sweepFigureNames());  // the plain figures, then the fire ones
@@ -236,7 +238,7 @@ TEST(Sweep, FireFiguresAtEveryPointAndResumed) {
 
     const SweepPoint& p = result.points[1];
     const Stone stone = Stone::build(makeCut("round_brilliant", {{"pavilion", 40.5}}), "alone");
-    TraceSettings settings = spec.trace;
+    TraceSettings settings = plan.trace;
     settings.threads = 1;
     const Scene scene(stone, settings);
     const TraceResult alone = trace(TraceBase(scene, settings));
@@ -251,17 +253,17 @@ TEST(Sweep, FireFiguresAtEveryPointAndResumed) {
 
     kept[0].erase("fire");  // kept by a build without fire figures
     RunControl resumed;
-    const auto [again, traced] = resumeSweep(spec, resumed, kept, [](size_t k) { return k != 1; });
+    const auto [again, traced] = resumeSweep(plan, resumed, kept, [](size_t k) { return k != 1; });
     EXPECT_EQ(traced, (std::vector<size_t>{0, 1}));
     EXPECT_EQ(sweepToJson(again)["points"].dump(), j["points"].dump());
     EXPECT_EQ(sweepCsv(again), csv);
 
-    spec.trace.fire.enabled = false;
+    plan.trace.fire.enabled = false;
     RunControl plain;
-    const SweepResult dark = runSweep(spec, plain);
+    const SweepResult dark = runSweep(plan, plain);
     const nlohmann::json d = sweepToJson(dark);
     EXPECT_FALSE(d["points"][0].contains("fire"));
-    EXPECT_EQ(d["figures"], nlohmann::json(sweepFigureNames(spec.trace)));
+    EXPECT_EQ(d["figures"], nlohmann::json(sweepFigureNames(plan.trace)));
     EXPECT_EQ(d["figures"].size(), sweepFigureNames().size() - sweepFireFigureNames().size());
     EXPECT_EQ(sweepCsv(dark).find("coloured"), std::string::npos);
 }

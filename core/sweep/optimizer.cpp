@@ -1,8 +1,9 @@
-#include "study/optimizer.h"
+#include "sweep/optimizer.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "sweep/sweep_figures.h"
 #include "util/error.h"
 #include "util/number_text.h"
 
@@ -121,7 +122,7 @@ SweepConstraint parseSweepConstraint(const std::string& text) {
     return c;
 }
 
-GridObjective sweepObjective(const SweepSpec& base, const std::string& figure,
+GridObjective sweepObjective(const SweepPlan& base, const std::string& figure,
                              const std::vector<SweepConstraint>& constraints, RunControl& control,
                              std::vector<SweepResult>& rounds, Communicator& comm,
                              const SweepRoundHooks& hooks) {
@@ -129,11 +130,11 @@ GridObjective sweepObjective(const SweepSpec& base, const std::string& figure,
     return
         [base, figure, constraints, &control, &rounds, &comm, hooks](const std::vector<SweepAxis>& axes,
                                                                      uint64_t photons) {
-            SweepSpec spec = base;
-            spec.axes = axes;
-            spec.trace.photons = photons;
+            SweepPlan plan = base;
+            plan.axes = axes;
+            plan.trace.photons = photons;
             rounds.push_back(
-                runSweep(spec, control, hooks ? hooks(rounds.size(), spec) : SweepPointHooks{}, comm));
+                runSweep(plan, control, hooks ? hooks(rounds.size(), plan) : SweepPointHooks{}, comm));
             std::vector<DesignEstimate> out;
             for (const SweepPoint& p : rounds.back().points) {
                 DesignEstimate e;

@@ -1,4 +1,4 @@
-#include "study/sweep_pictures.h"
+#include "sweep/sweep_pictures.h"
 
 #include <gtest/gtest.h>
 
@@ -12,13 +12,13 @@ using namespace facetlight;
 namespace {
 
 SweepResult smallSweep(std::vector<std::string> axes) {
-    SweepSpec spec;
-    spec.shape = "round_brilliant";
-    for (const std::string& a : axes) spec.axes.push_back(parseSweepAxis(a));
-    spec.trace.photons = 3000;
-    spec.trace.threads = 2;
+    SweepPlan plan;
+    plan.shape = "round_brilliant";
+    for (const std::string& a : axes) plan.axes.push_back(parseSweepAxis(a));
+    plan.trace.photons = 3000;
+    plan.trace.threads = 2;
     RunControl control;
-    return runSweep(spec, control);
+    return runSweep(plan, control);
 }
 
 bool dark(const Rgb& c) {
@@ -83,14 +83,14 @@ TEST(SweepPictures, CurvesCarryEachFigureAndAxes) {
 // A fire figure is drawn like any other: a map, and curves with their bands beside a share.
 TEST(SweepPictures, FireFiguresAreDrawnWhenFireIsTraced) {
     const auto fireSweep = [](std::vector<std::string> axes) {
-        SweepSpec spec;
-        spec.shape = "round_brilliant";
-        for (const std::string& a : axes) spec.axes.push_back(parseSweepAxis(a));
-        spec.trace.photons = 2000;
-        spec.trace.threads = 2;
-        spec.trace.fire.enabled = true;
+        SweepPlan plan;
+        plan.shape = "round_brilliant";
+        for (const std::string& a : axes) plan.axes.push_back(parseSweepAxis(a));
+        plan.trace.photons = 2000;
+        plan.trace.threads = 2;
+        plan.trace.fire.enabled = true;
         RunControl control;
-        return runSweep(spec, control);
+        return runSweep(plan, control);
     };
     const auto maps =
         sweepPictures(fireSweep({"pavilion=39,41", "crown=32,35"}), {"coloured_return_weighted"});

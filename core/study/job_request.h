@@ -11,7 +11,10 @@
 
 namespace facetlight {
 
-struct StudySpec {
+// A job as its user asked for it (`JobRequest` in server/openapi.json): the mesh by name, the settings, and
+// for a sweep its SweepRequest in `settings.sweep`, still unresolved; a sweep's SweepPlan is made from it
+// (planSweep) when the job runs.
+struct JobRequest {
     std::string mesh;  // a file, a shipped shape's name, or (in the service) an uploaded mesh's id
     std::string name;  // the stone's name in the results; empty: the one the mesh gives
     StudySettings settings;
@@ -19,13 +22,13 @@ struct StudySpec {
 
     // Read through the settings schema onto `defaults` (keys absent keep their values); throws Error naming
     // the field by its dotted path.
-    static StudySpec fromJson(const nlohmann::json& j, StudySpec defaults = {});
+    static JobRequest fromJson(const nlohmann::json& j, JobRequest defaults = {});
 };
 
 // The stone a spec with `cut` names: its shape built with those parameters.
-Stone cutStone(const StudySpec& spec);
+Stone cutStone(const JobRequest& spec);
 
 // Every setting written out, so a stored job runs the same after a restart even if defaults change.
-nlohmann::json toJson(const StudySpec& spec);
+nlohmann::json toJson(const JobRequest& spec);
 
 }  // namespace facetlight

@@ -1,10 +1,11 @@
-#include "study/study_spec.h"
+#include "study/job_request.h"
 
+#include "sweep/sweep_request.h"
 #include "util/error.h"
 
 namespace facetlight {
 
-StudySpec StudySpec::fromJson(const nlohmann::json& j, StudySpec spec) {
+JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
     if (!j.is_object()) throw Error("", "the job must be a JSON object");
     if (!j.contains("mesh")) throw Error("mesh", "mesh is required");
     spec.mesh = settings::readText(j["mesh"], "mesh");
@@ -48,16 +49,16 @@ StudySpec StudySpec::fromJson(const nlohmann::json& j, StudySpec spec) {
     if (const auto s = j.find("sweep"); s != j.end() && !s->is_null()) {
         spec.settings.sweep = sweepRequestSchema().read(*s, "sweep");
         if (spec.settings.render) throw Error("render", "a sweep makes no render: set render to false");
-        sweepSpec(spec.mesh, *spec.settings.sweep, spec.settings.trace);
+        planSweep(spec.mesh, *spec.settings.sweep, spec.settings.trace);
     }
     return spec;
 }
 
-Stone cutStone(const StudySpec& spec) {
+Stone cutStone(const JobRequest& spec) {
     return Stone::build(makeCut(spec.mesh, spec.cut), spec.name.empty() ? spec.mesh : spec.name);
 }
 
-nlohmann::json toJson(const StudySpec& spec) {
+nlohmann::json toJson(const JobRequest& spec) {
     nlohmann::json j = toJson(spec.settings.trace);
     j["mesh"] = spec.mesh;
     if (!spec.name.empty()) j["name"] = spec.name;

@@ -1,8 +1,9 @@
-#include "study/sweep_pictures.h"
+#include "sweep/sweep_pictures.h"
 
 #include <cstdio>
 
 #include "pictures/sweep_plot.h"
+#include "sweep/sweep_figures.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -14,21 +15,21 @@ std::string spaced(std::string name) {
     return name;
 }
 
-PlotAxis plotAxis(const SweepSpec& spec, const SweepAxis& axis) {
-    const std::string unit = spec.unit(axis);
+PlotAxis plotAxis(const SweepPlan& plan, const SweepAxis& axis) {
+    const std::string unit = plan.unit(axis);
     return {spaced(axis.name) + (unit.empty() ? "" : " (" + unit + ")"), axis.values, axis.choices};
 }
 
 // The axes that take more than one value.
-std::vector<size_t> variedAxes(const SweepSpec& spec) {
+std::vector<size_t> variedAxes(const SweepPlan& plan) {
     std::vector<size_t> out;
-    for (size_t a = 0; a < spec.axes.size(); ++a)
-        if (spec.axes[a].size() > 1) out.push_back(a);
+    for (size_t a = 0; a < plan.axes.size(); ++a)
+        if (plan.axes[a].size() > 1) out.push_back(a);
     return out;
 }
 
 PlotSeries figureSeries(const SweepResult& result, const std::string& figure) {
-    checkSweepFigure(figure, result.spec.trace);
+    checkSweepFigure(figure, result.plan.trace);
     PlotSeries s{spaced(figure), {}, {}, {}};
     for (const SweepPoint& p : result.points) {
         s.valid.push_back(p.ok());
@@ -39,15 +40,15 @@ PlotSeries figureSeries(const SweepResult& result, const std::string& figure) {
 }
 
 std::string settingsLine(const SweepResult& result) {
-    const TraceSettings& t = result.spec.trace;
-    return result.spec.shape + ", " + std::string(kLightModelNames.name(t.light.model)) + " light, " +
+    const TraceSettings& t = result.plan.trace;
+    return result.plan.shape + ", " + std::string(kLightModelNames.name(t.light.model)) + " light, " +
            std::to_string(t.photons) + " photons a point";
 }
 
 }  // namespace
 
 std::optional<size_t> highestPoint(const SweepResult& result, const std::string& figure) {
-    checkSweepFigure(figure, result.spec.trace);
+    checkSweepFigure(figure, result.plan.trace);
     std::optional<size_t> best;
     for (size_t k = 0; k < result.points.size(); ++k) {
         const SweepPoint& p = result.points[k];
@@ -57,9 +58,9 @@ std::optional<size_t> highestPoint(const SweepResult& result, const std::string&
 }
 
 Image sweepCurves(const SweepResult& result, const std::vector<std::string>& figures) {
-    const std::vector<size_t> varied = variedAxes(result.spec);
+    const std::vector<size_t> varied = variedAxes(result.plan);
     if (varied.size() > 1) throw Error("a sweep over two quantities is drawn as maps, not curves");
-    const SweepAxis& axis = result.spec.axes[varied.empty() ? 0 : varied[0]];
+    const SweepAxis& axis = result.plan.axes[varied.empty() ? 0 : varied[0]];
     std::vector<PlotSeries> series;
     for (const std::string& f : figures) series.push_back(figureSeries(result, f));
     // One y axis: the mean separation's degrees share it with the shares (both below 1 or so), named apart.
@@ -68,19 +69,19 @@ Image sweepCurves(const SweepResult& result, const std::vector<std::string>& fig
     const std::string yLabel = angles == 0                ? "share of the photons hitting the stone"
                                : angles == figures.size() ? "degrees"
                                                           : "share of the hits; mean separation in degrees";
-    return seriesPlot(plotAxis(result.spec, axis), series, yLabel, settingsLine(result));
+    return seriesPlot(plotAxis(result.plan, axis), series, yLabel, settingsLine(result));
 }
 
 Image sweepMap(const SweepResult& result, const std::string& figure) {
-    const SweepSpec& spec = result.spec;
-    if (spec.axes.size() != 2) throw Error("a map needs a sweep over two quantities");
-    const SweepAxis &ax = spec.axes[0], &ay = spec.axes[1];
+    const SweepPlan& plan = result.plan;
+    if (plan.axes.size() != 2) throw Error("a map needs a sweep over two quantities");
+    const SweepAxis &ax = plan.axes[0], &ay = plan.axes[1];
     std::vector<PlotMarker> markers;
     if (const std::optional<size_t> best = highestPoint(result, figure)) {
         const SweepPoint& p = result.points[*best];
         char value[64];
         std::snprintf(value, sizeof value, "%.4f +- %.4f", p.figure(figure), p.stderrOf(figure));
-        markers.push_back({plotAxis(spec, ax).position(p.at[0]), plotAxis(spec, ay).position(p.at[1]),
+        markers.push_back({plotAxis(plan, ax).position(p.at[0]), plotAxis(plan, ay).position(p.at[1]),
                            "highest " + std::string(value) + " at " + ax.name + " " + ax.label(p.at[0]) +
                                ", " + ay.name + " " + ay.label(p.at[1]),
                            true});
@@ -93,15 +94,15 @@ Image sweepMap(const SweepResult& result, const std::string& figure) {
             if (values.count(ax.name) && values.count(ay.name))
                 markers.push_back({values.at(ax.name), values.at(ay.name), label, false});
         }
-    return contourMap(plotAxis(spec, ax), plotAxis(spec, ay), figureSeries(result, figure), spaced(figure),
+    return contourMap(plotAxis(plan, ax), plotAxis(plan, ay), figureSeries(result, figure), spaced(figure),
                       markers, spaced(figure) + ", " + settingsLine(result));
 }
 
 std::vector<std::pair<std::string, Image>> sweepPictures(const SweepResult& result,
                                                          const std::vector<std::string>& figures) {
-    for (const std::string& f : figures) checkSweepFigure(f, result.spec.trace);
+    for (const std::string& f : figures) checkSweepFigure(f, result.plan.trace);
     std::vector<std::pair<std::string, Image>> out;
-    if (variedAxes(result.spec).size() < 2) {
+    if (variedAxes(result.plan).size() < 2) {
         out.emplace_back("curves.png", sweepCurves(result, figures));
         return out;
     }

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "image/image.h"
-#include "study/sweep.h"
+#include "sweep/sweep_run.h"
 
 namespace facetlight {
 

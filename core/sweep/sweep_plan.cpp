@@ -1,0 +1,106 @@
+#include "sweep/sweep_plan.h"
+
+#include <algorithm>
+#include <optional>
+#include <set>
+
+#include "util/error.h"
+
+namespace facetlight {
+namespace {
+
+// Throws Error naming the field when the settings' table refuses them.
+void checkTraceSettings(const TraceSettings& t) {
+    TraceSettings::fromJson(toJson(t));
+}
+
+// The setting or parameter `axis` takes at index i, applied to a point's design.
+void applyAxis(const SweepAxis& axis, size_t i, CutValues& cut, TraceSettings& trace) {
+    if (axis.name == "tilt") {
+        trace.light.tiltDeg = axis.values[i];
+    } else if (axis.name == "head_shadow") {
+        trace.light.headShadowDeg = axis.values[i];
+    } else if (axis.name == "material") {
+        trace.material = axis.choices[i];
+    } else if (axis.name == "light") {
+        const std::optional<LightModelKind> model = kLightModelNames.find(axis.choices[i]);
+        if (!model) throw Error("sweep axis light: no light model '" + axis.choices[i] + "'");
+        trace.light.model = *model;
+    } else {
+        cut[axis.name] = axis.values[i];
+    }
+}
+
+}  // namespace
+
+size_t SweepPlan::pointCount() const {
+    size_t n = axes.empty() ? 0 : 1;
+    for (const SweepAxis& a : axes) n *= a.size();
+    return n;
+}
+
+std::string SweepPlan::unit(const SweepAxis& axis) const {
+    if (axis.name == "tilt" || axis.name == "head_shadow") return "deg";
+    if (isTraceAxis(axis.name)) return "";
+    for (const CutParameter& p : findCutShape(shape).parameters)
+        if (p.name == axis.name) return p.unit;
+    return "";
+}
+
+void SweepPlan::validate() const {
+    const CutShape& s = findCutShape(shape);
+    completeCutValues(s, fixed);
+    checkTraceSettings(trace);
+    if (axes.empty() || axes.size() > kMaxSweepAxes)
+        throw Error("a sweep varies 1 or 2 quantities, got " + std::to_string(axes.size()));
+    std::set<std::string> seen;
+    for (const SweepAxis& axis : axes) {
+        if (!seen.insert(axis.name).second) throw Error("sweep axis " + axis.name + " is given twice");
+        if (fixed.count(axis.name)) throw Error(axis.name + " is both varied and fixed");
+        const bool param = std::any_of(s.parameters.begin(), s.parameters.end(),
+                                       [&](const CutParameter& p) { return p.name == axis.name; });
+        if (!param && !isTraceAxis(axis.name)) {
+            std::string names;
+            for (const CutParameter& p : s.parameters) names += p.name + ", ";
+            for (const std::string& t : kTraceAxes) names += t + (t == kTraceAxes.back() ? "" : ", ");
+            throw Error("sweep axis '" + axis.name + "' is neither a parameter of " + shape +
+                        " nor a trace setting; the axes are: " + names);
+        }
+        if (axis.size() == 0) throw Error("sweep axis " + axis.name + " has no values");
+        if (axis.numeric() == isChoiceAxis(axis.name))
+            throw Error("sweep axis " + axis.name + (axis.numeric() ? " takes names" : " takes numbers"));
+        for (size_t i = 0; i < axis.size(); ++i) {
+            CutValues cut;
+            TraceSettings t = trace;
+            applyAxis(axis, i, cut, t);
+            if (param) {
+                completeCutValues(s, cut);
+            } else {
+                checkTraceSettings(t);
+            }
+        }
+    }
+    if (pointCount() > kMaxSweepPoints)
+        throw Error("the sweep has " + std::to_string(pointCount()) + " points; at most " +
+                    std::to_string(kMaxSweepPoints) + " are allowed");
+}
+
+std::vector<SweepPoint> sweepPoints(const SweepPlan& plan) {
+    const CutShape& shape = findCutShape(plan.shape);
+    std::vector<SweepPoint> points(plan.pointCount());
+    for (size_t k = 0; k < points.size(); ++k) {
+        SweepPoint& p = points[k];
+        p.at.resize(plan.axes.size());
+        size_t rest = k;
+        for (size_t a = plan.axes.size(); a-- > 0;) {
+            p.at[a] = rest % plan.axes[a].size();
+            rest /= plan.axes[a].size();
+        }
+        CutValues cut = plan.fixed;
+        p.trace = plan.trace;
+        for (size_t a = 0; a < plan.axes.size(); ++a) applyAxis(plan.axes[a], p.at[a], cut, p.trace);
+        p.cut = completeCutValues(shape, cut);
+    }
+    return points;
+}
+}  // namespace facetlight

@@ -1,0 +1,52 @@
+#pragma once
+// A sweep as a job asks for it (docs/sweeps.md): the `sweep` object of the one job format
+// (study/job_request.h), read through its settings table, and the checked plan made from it.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sweep/sweep_figures.h"
+#include "sweep/sweep_plan.h"
+#include "settings/settings_schema.h"
+
+namespace facetlight {
+
+// A sweep as its user asked for it (the job's `sweep` object, `SweepRequest` in server/openapi.json, or the
+// CLI's options): the axes, the parameters held, the figures and the search. It names no shape and holds no
+// trace settings; planSweep resolves it with the job's into the SweepPlan that runs.
+struct SweepRequest {
+    std::vector<SweepAxis> axes;
+    CutValues set;  // parameters of the shape held at values other than their defaults
+    std::vector<std::string> figures{"weighted_return"};  // drawn; a job names one (`figure`)
+    std::string maximize;                                 // empty: no search for the best design
+    std::vector<std::string> constraints;                 // "total_depth<=62", with `maximize`
+    int refineRounds = 3;                                 // the search's finer grids after the sweep
+
+    // The rounds the sweep runs: 1, or 1 + refineRounds with a search.
+    int rounds() const { return maximize.empty() ? 1 : 1 + refineRounds; }
+};
+
+// The job's `sweep` object: {"axes": [{"name", "from", "to", "step"} | {"name", "values"} | {"name",
+// "choices"}], "set": {...}, "figure", "maximize", "constraints": [...], "refine_rounds"}. Errors name the
+// field by its dotted path ("sweep.axes[0].step").
+const settings::Schema<SweepRequest>& sweepRequestSchema();
+inline nlohmann::json toJson(const SweepRequest& r) {
+    return sweepRequestSchema().write(r);
+}
+
+// The plan of the sweep of `shape` the request asks for, with every point's trace settings; checked, throwing
+// Error naming the field ("mesh" for a shape the cut library lacks, "sweep.axes[1]", "sweep.set", ...).
+SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace);
+
+// What a request's figures are called in its errors: the job's fields, or the CLI's options.
+struct SweepFigureFields {
+    std::string figure = "sweep.figure", maximize = "sweep.maximize", constraints = "sweep.constraints";
+    bool indexed = true;  // constraints[i]
+};
+// Throws Error naming the field when a figure the request draws, maximizes or constrains is not one, or is a
+// fire figure and `trace` does not enable fire.
+void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace,
+                       const SweepFigureFields& fields = {});
+
+}  // namespace facetlight
