@@ -8,7 +8,6 @@
 //
 // Geometry is kept in the stone's frame: a tilted stone is the world rotated by -tilt about x. The floor is
 // horizontal in the world, under the stone's lowest point.
-#include <array>
 #include <memory>
 #include <vector>
 
