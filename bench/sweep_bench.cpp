@@ -1,6 +1,6 @@
 // A crown-pavilion map as `facetlight sweep round_brilliant --vary pavilion=37:45:0.5 --vary crown=25:40:1
-// --photons 2e5` traces it: 17 x 16 points of 200 000 photons, collimated light, dispersion on, each design
-// built once. Prints the wall time of the whole sweep (designs built and points traced) at 1 and 2 threads,
+// --photons 2e5 --no-view` traces it: 17 x 16 points of 200 000 photons, collimated light, dispersion on,
+// each design built once, no viewer figures (bench/viewer_bench.cpp times those). Prints the wall time of the whole sweep (designs built and points traced) at 1 and 2 threads,
 // median of the runs. The target: under 60 s at 2 threads.
 //   sweep_bench [runs]
 #include <algorithm>
@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     plan.shape = "round_brilliant";
     plan.axes = {parseSweepAxis("pavilion=37:45:0.5"), parseSweepAxis("crown=25:40:1")};
     plan.trace.photons = 200000;
+    plan.trace.viewer.enabled = false;
     std::printf(
         "round brilliant, pavilion 37-45 by 0.5 x crown 25-40 by 1 = %zu points of %llu photons; median "
         "of %d runs\n",

@@ -22,7 +22,7 @@ struct SweepOptions {
     std::string shape;
     std::vector<std::string> vary;
     std::vector<std::string> set;
-    std::vector<std::string> figures{"weighted_return"};
+    std::vector<std::string> figures{kDefaultSweepFigure};
     std::string out;
     std::string maximize;
     std::vector<std::string> constraints;

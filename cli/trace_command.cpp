@@ -12,6 +12,7 @@
 #include "trace/photon_tracer.h"
 #include "trace_options.h"
 #include "util/error.h"
+#include "viewer/verdict.h"
 
 namespace facetlight::cli {
 
@@ -34,17 +35,25 @@ void run(const TraceCommandOptions& o) {
     RunControl control;
     control.startPhase(RunPhase::Tracing, localPhotons(comm, settings.photons));
     TraceResult result;
+    nlohmann::json viewer;
     {
+        const uint64_t viewing = 2 * viewerUnits(settings.viewer);
         ProgressLine bar(comm.isRoot() && !o.progressJson, control);
         ProgressJson progress(o.progressJson && comm.isRoot(), control, [&](RunPhase phase) {
-            return phase == RunPhase::Tracing ? settings.photons : 0;
+            return phase == RunPhase::Tracing ? settings.photons : phase == RunPhase::Viewing ? viewing : 0;
         });
         result = traceDistributed(comm, trace, &control);
+        // Rank 0 alone: the stone and the reference it is judged against, seen as a viewer sees them.
+        if (comm.isRoot() && settings.viewer.enabled) {
+            control.startPhase(RunPhase::Viewing, viewing);
+            viewer = viewerReport(stone, settings, &control);
+        }
     }
 
     if (!comm.isRoot()) return;
     nlohmann::json stats = traceReport(result, stone, settings);
     if (comm.size() > 1) stats["timing"]["ranks"] = comm.size();
+    if (!viewer.is_null()) stats["viewer"] = std::move(viewer);
     const std::string json = stats.dump(2) + "\n";
     if (o.jsonPath.empty()) {
         std::cout << json;

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "geometry/rotation.h"
-#include "optics/fresnel.h"
 #include "render/camera.h"
 #include "trace/photon_walker.h"
 #include "util/error.h"
@@ -57,43 +56,17 @@ class SkyBands {
     double cosHead_, sinLow_;
 };
 
-// What PhotonWalker::step reports, kept as the ray's class.
+// What a view ray (PhotonWalker::view) reports, kept as the ray's class.
 struct ViewRayEnd {
     const SkyBands& bands;
     AsetClass end = AsetClass::Trapped;
+    void reflectedAtEntry(uint32_t, const Vec3f&, const Vec3f& dir) { end = bands(dir); }
+    void entered(uint32_t) {}
     void exited(uint32_t, const Vec3f&, const Vec3f& dir, uint32_t) { end = bands(dir); }
     void internalReflection(uint32_t) {}
     void trapped(uint32_t) { end = AsetClass::Trapped; }
     void lost(uint32_t) { end = AsetClass::Trapped; }
 };
-
-// One view ray from `eye` along `dir` (stone frame): false when it misses the stone.
-bool followViewRay(const TraceBase& trace, const SkyBands& bands, const Vec3f& eye, const Vec3f& dir, float n,
-                   PhotonWalker::Photon& ph, AsetClass& end) {
-    const Scene& scene = trace.scene();
-    SurfaceHit hit;
-    if (!scene.enter(eye, dir, hit)) return false;
-    const Vec3f p = eye + dir * hit.t;
-    const Vec3f& normal = scene.normal(hit.facet);
-    const float cosI = std::clamp(-dot(dir, normal), 0.0f, 1.0f);
-    const float eta = 1.0f / n;
-    const FresnelResult fr = fresnel(cosI, eta);
-    // A reflection off a convex stone is never met again; on another shape it is not followed (as the
-    // tracer).
-    if (ph.rng.uniform() < fr.reflectance) {
-        end = bands(reflectOff(dir, normal, cosI));
-        return true;
-    }
-    ph.p = p;
-    ph.d = refractIn(dir, normal, eta, cosI, fr.cosT);
-    ph.n = n;
-    ph.bounces = 0;
-    ViewRayEnd visit{bands};
-    while (PhotonWalker::step(trace, scene, visit, ph)) {
-    }
-    end = visit.end;
-    return true;
-}
 
 AsetShare binomialShare(uint64_t count, uint64_t n) {
     if (n == 0) return {};
@@ -176,10 +149,10 @@ AsetView asetView(const TraceBase& trace, const CameraSettings& cameraSettings, 
                     ph.rng = Rng(streams, pixel * uint64_t(settings.samples) + uint64_t(s));
                     const double px = x + ph.rng.uniformDouble(), py = double(y) + ph.rng.uniformDouble();
                     const Vec3f dir(frame.toStone(camera.direction(px, py)));
-                    AsetClass end;
-                    if (!followViewRay(trace, bands, eye, dir, n, ph, end)) continue;
-                    ++counts[size_t(end)];
-                    ++totals[size_t(end)];
+                    ViewRayEnd ray{bands};
+                    if (!PhotonWalker::view(trace, eye, dir, n, ray, ph)) continue;
+                    ++counts[size_t(ray.end)];
+                    ++totals[size_t(ray.end)];
                 }
             }
             return uint64_t(width);

@@ -9,7 +9,7 @@ namespace {
 // The phases of a study with work to do, in the order runStudy runs them.
 std::vector<RunPhase> studyPhases(const StudySettings& settings) {
     std::vector<RunPhase> phases;
-    for (const RunPhase phase : {RunPhase::Tracing, RunPhase::PhotonMap, RunPhase::Rendering})
+    for (const RunPhase phase : {RunPhase::Tracing, RunPhase::Viewing, RunPhase::PhotonMap, RunPhase::Rendering})
         if (studyUnits(settings, phase) > 0) phases.push_back(phase);
     return phases;
 }

@@ -19,6 +19,7 @@
 #include "trace/distributed_trace.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
+#include "viewer/verdict.h"
 
 namespace facetlight {
 namespace {
@@ -43,6 +44,9 @@ uint64_t studyUnits(const StudySettings& settings, RunPhase phase) {
     switch (phase) {
         case RunPhase::Tracing:
             return settings.trace.photons;
+        case RunPhase::Viewing:
+            // The stone's view rays and lamp photons, and as many again for the reference it is judged against.
+            return settings.trace.viewer.enabled ? 2 * viewerUnits(settings.trace.viewer) : 0;
         case RunPhase::PhotonMap:
             return settings.render ? settings.render->mapPhotons : 0;
         case RunPhase::Rendering:
@@ -113,6 +117,12 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
         if (traced.fire) {
             result.file("heatmap_fire.png") = encodePng(fireHeatmap(stone, *traced.fire));
         }
+    }
+    if (settings.trace.viewer.enabled) {
+        // Rank 0 alone: the viewer's rays are a small fraction of a trace's photons.
+        enterPhase(control, RunPhase::Viewing, comm.isRoot() ? studyUnits(settings, RunPhase::Viewing) : 0);
+        if (comm.isRoot()) result.stats["viewer"] = viewerReport(stone, settings.trace, &control);
+        if (anyRank(comm, control.cancelled())) throw Canceled();
     }
 
     if (!settings.render) {

@@ -33,9 +33,9 @@ struct StudySettings {
     std::optional<SweepRequest> sweep;
 };
 
-// Builds one Scene for every phase and runs them, each reporting to `control` (RunPhase::Tracing, PhotonMap,
-// Rendering, then Done; done() and total() in photons or pixels). Throws Canceled when control.cancel() is
-// called while it runs, Error on bad settings.
+// Builds one Scene for every phase and runs them, each reporting to `control` (RunPhase::Tracing, Viewing,
+// PhotonMap, Rendering, then Done; done() and total() in photons, view rays or pixels). Throws Canceled when
+// control.cancel() is called while it runs, Error on bad settings.
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunControl& control);
 // The same on every rank of `comm` (docs/distributed.md): the trace, the map photons and the render's tiles
 // are split across the ranks and rank 0's result equals the single-process one apart from `timing`; the other

@@ -133,6 +133,11 @@ GridObjective sweepObjective(const SweepPlan& base, const std::string& figure,
             SweepPlan plan = base;
             plan.axes = axes;
             plan.trace.photons = photons;
+            // The viewer's samples grow with the photons, round by round.
+            const double growth = double(photons) / double(base.trace.photons);
+            ViewerSettings& viewer = plan.trace.viewer;
+            viewer.office.points = std::min(kMaxViewerPoints, uint64_t(double(viewer.office.points) * growth));
+            viewer.spot.photons = std::min(kMaxViewerPhotons, uint64_t(double(viewer.spot.photons) * growth));
             rounds.push_back(
                 runSweep(plan, control, hooks ? hooks(rounds.size(), plan) : SweepPointHooks{}, comm));
             std::vector<DesignEstimate> out;

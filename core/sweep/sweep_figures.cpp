@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "util/error.h"
+#include "viewer/viewer_figures.h"
 
 namespace facetlight {
 namespace {
@@ -20,8 +21,19 @@ const std::vector<std::string>& sweepPlainFigureNames() {
 
 const std::vector<std::string>& sweepFigureNames() {
     static const std::vector<std::string> names = [] {
-        std::vector<std::string> all = sweepPlainFigureNames();
+        std::vector<std::string> all = sweepViewerFigureNames();
+        all.insert(all.end(), sweepPlainFigureNames().begin(), sweepPlainFigureNames().end());
         all.insert(all.end(), sweepFireFigureNames().begin(), sweepFireFigureNames().end());
+        return all;
+    }();
+    return names;
+}
+
+const std::vector<std::string>& sweepViewerFigureNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> all;
+        for (const ViewerFigureInfo& f : kViewerFigures) all.emplace_back(f.key);
+        all.emplace_back("score");
         return all;
     }();
     return names;
@@ -34,7 +46,9 @@ const std::vector<std::string>& sweepFireFigureNames() {
 }
 
 std::vector<std::string> sweepFigureNames(const TraceSettings& trace) {
-    std::vector<std::string> names = sweepPlainFigureNames();
+    std::vector<std::string> names;
+    if (trace.viewer.enabled) names = sweepViewerFigureNames();
+    names.insert(names.end(), sweepPlainFigureNames().begin(), sweepPlainFigureNames().end());
     if (trace.fire.enabled)
         names.insert(names.end(), sweepFireFigureNames().begin(), sweepFireFigureNames().end());
     return names;
@@ -47,6 +61,11 @@ void checkSweepFigure(const std::string& name, const TraceSettings& trace) {
         for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
         throw Error("unknown figure '" + name + "'; the figures are: " + list);
     }
+    const auto& viewer = sweepViewerFigureNames();
+    if (!trace.viewer.enabled && std::find(viewer.begin(), viewer.end(), name) != viewer.end())
+        throw Error("the figure " + name +
+                    " is a viewer figure, and the viewer is off: turn it on (drop --no-view, or a job's "
+                    "viewer.enabled false)");
     const auto& fire = sweepFireFigureNames();
     if (!trace.fire.enabled && std::find(fire.begin(), fire.end(), name) != fire.end())
         throw Error(

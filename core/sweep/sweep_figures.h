@@ -7,15 +7,20 @@
 
 namespace facetlight {
 
-// The figures of merit a sweep can report for a point, each with a `_stderr`: keys of the statistics'
-// `totals`, then the fire figures (keys of the statistics' `fire`), which only a sweep that traces fire
-// reports.
+// The figures of merit a sweep can report for a point, each with a `_stderr`: the viewer figures and the
+// light-performance score (keys of the statistics' `viewer.figures`, and `score`), which a sweep reports
+// unless the viewer is off; keys of the statistics' `totals`; then the fire figures (keys of the statistics'
+// `fire`), which only a sweep that traces fire reports.
 const std::vector<std::string>& sweepFigureNames();
+const std::vector<std::string>& sweepViewerFigureNames();
 const std::vector<std::string>& sweepFireFigureNames();
-// The figures a sweep with these trace settings reports: the fire figures only when fire is enabled.
+// The figure a sweep draws and searches unless told otherwise.
+inline constexpr const char* kDefaultSweepFigure = "brightness";
+// The figures a sweep with these trace settings reports: the viewer figures only when the viewer is on, the
+// fire figures only when fire is enabled.
 std::vector<std::string> sweepFigureNames(const TraceSettings& trace);
-// Throws Error listing the figures when `name` is not one, or saying how to turn fire on when it is a fire
-// figure and `trace` does not enable fire.
+// Throws Error listing the figures when `name` is not one, or saying how to turn the viewer or fire on when it
+// is a viewer or fire figure and `trace` turns it off.
 void checkSweepFigure(const std::string& name, const TraceSettings& trace);
 // A figure's unit: "deg" for an angle, "" for a share of the photons hitting the stone.
 std::string sweepFigureUnit(const std::string& name);

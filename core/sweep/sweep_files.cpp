@@ -20,6 +20,7 @@ nlohmann::json sweepPointJson(const SweepPlan& plan, const SweepPoint& p) {
         point["proportions"] = p.proportions;
         point["totals"] = p.totals;
         if (p.trace.fire.enabled) point["fire"] = p.fire;
+        if (p.trace.viewer.enabled) point["viewer"] = p.viewer;
     } else {
         point["error"] = p.error;
     }
@@ -36,10 +37,13 @@ void restoreSweepPoint(const nlohmann::json& j, SweepPoint& point) {
     }
     if (point.trace.fire.enabled && !j.contains("fire"))
         throw Error("a stored sweep point has no fire figures, and the sweep traces fire");
+    if (point.trace.viewer.enabled && !j.contains("viewer"))
+        throw Error("a stored sweep point has no viewer figures, and the sweep has the viewer on");
     point.error.clear();
     point.proportions = j.at("proportions");
     point.totals = j.at("totals");
     if (point.trace.fire.enabled) point.fire = j.at("fire");
+    if (point.trace.viewer.enabled) point.viewer = j.at("viewer");
 }
 
 nlohmann::json sweepAxesJson(const SweepPlan& plan) {

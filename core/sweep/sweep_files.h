@@ -9,8 +9,8 @@
 
 namespace facetlight {
 
-// A point as sweep.json lists it: `at`, `values`, then `proportions`, `totals` and, with fire enabled,
-// `fire`; or `error`.
+// A point as sweep.json lists it: `at`, `values`, then `proportions`, `totals`, with the viewer on `viewer`
+// and with fire enabled `fire`; or `error`.
 nlohmann::json sweepPointJson(const SweepPlan& plan, const SweepPoint& point);
 // The inverse, into a point of sweepPoints(plan) (its `stats`, which the JSON does not hold, stay empty).
 // Throws Error when the JSON is not a point of this grid.

@@ -43,15 +43,17 @@ struct SweepPoint {
     nlohmann::json proportions;  // the stone's trade proportions, as the statistics' `mesh.proportions`
     nlohmann::json totals;       // the statistics' `totals`: counts, figures and their standard errors
     nlohmann::json fire;  // with fire enabled, the fire figures of the statistics' `fire` and their errors
+    // With the viewer on, the viewer figures and the score, each with its `_stderr`.
+    nlohmann::json viewer;
 
     bool ok() const { return error.empty(); }
     double figure(const std::string& name) const { return figures(name).at(name).get<double>(); }
     double stderrOf(const std::string& name) const {
         return figures(name).at(name + "_stderr").get<double>();
     }
-    // The member holding `name`: `totals`, or `fire` for a fire figure.
+    // The member holding `name`: `totals`, `viewer` for a viewer figure, or `fire` for a fire figure.
     const nlohmann::json& figures(const std::string& name) const {
-        return totals.contains(name) ? totals : fire;
+        return totals.contains(name) ? totals : viewer.contains(name) ? viewer : fire;
     }
 };
 

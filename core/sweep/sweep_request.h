@@ -18,7 +18,7 @@ namespace facetlight {
 struct SweepRequest {
     std::vector<SweepAxis> axes;
     CutValues set;  // parameters of the shape held at values other than their defaults
-    std::vector<std::string> figures{"weighted_return"};  // drawn; a job names one (`figure`)
+    std::vector<std::string> figures{kDefaultSweepFigure};  // drawn; a job names one (`figure`)
     std::string maximize;                                 // empty: no search for the best design
     std::vector<std::string> constraints;                 // "total_depth<=62", with `maximize`
     int refineRounds = 3;                                 // the search's finer grids after the sweep

@@ -13,8 +13,28 @@
 #include "trace/photon_tracer.h"
 #include "util/error.h"
 #include "util/parallel.h"
+#include "viewer/verdict.h"
 
 namespace facetlight {
+namespace {
+
+// A point's viewer figures and score, each with its `_stderr`; the reference it is scored against is traced
+// once for each distinct set of settings (referenceFigures). Null when control cancels it.
+nlohmann::json sweepViewerFigures(const Stone& stone, const TraceSettings& settings, RunControl* control) {
+    const ViewerFigures figures = viewStone(stone, settings, control);
+    if (figures.cancelled) return nullptr;
+    const Verdict verdict = judge(stone, figures, referenceFigures(settings));
+    nlohmann::json out = nlohmann::json::object();
+    for (const FigureComparison& c : verdict.figures) {
+        out[std::string(c.info->key)] = c.stone.value;
+        out[std::string(c.info->key) + "_stderr"] = c.stone.stderr;
+    }
+    out["score"] = verdict.score.value;
+    out["score_stderr"] = verdict.score.stderr;
+    return out;
+}
+
+}  // namespace
 
 SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPointHooks& hooks) {
     SerialCommunicator serial;
@@ -45,8 +65,10 @@ SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPoin
         const nlohmann::json restored = nlohmann::json::parse(restoredText);
         for (const auto& [key, j] : restored.items()) {
             const size_t k = std::stoul(key);
-            // A point kept by a build that reported no fire figures is traced again.
-            if (result.points.at(k).trace.fire.enabled && j.contains("totals") && !j.contains("fire"))
+            // A point kept by a build that reported no fire or viewer figures is traced again.
+            const TraceSettings& t = result.points.at(k).trace;
+            if (j.contains("totals") && ((t.fire.enabled && !j.contains("fire")) ||
+                                         (t.viewer.enabled && !j.contains("viewer"))))
                 continue;
             restoreSweepPoint(j, result.points.at(k));
             pending[k] = false;
@@ -81,9 +103,13 @@ SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPoin
     });
     if (anyRank(comm, control.cancelled())) throw Canceled();
 
+    // The reference the points' scores compare with, once, on every thread (not counted as progress).
+    if (plan.trace.viewer.enabled) referenceFigures(plan.trace);
     // Several points at once; the threads left over trace within each (a trace's bits do not depend on them).
-    // Progress counts photons, so that a cancel stops a point within a block of them.
-    control.startPhase(RunPhase::Tracing, mine.size() * plan.trace.photons);
+    // Progress counts photons and view rays, so that a cancel stops a point within a block of them.
+    const uint64_t pointUnits =
+        plan.trace.photons + (plan.trace.viewer.enabled ? viewerUnits(plan.trace.viewer) : 0);
+    control.startPhase(RunPhase::Tracing, mine.size() * pointUnits);
     for (size_t k = 0; k < count; ++k)
         if (!pending[k]) control.finishItem();
     const BlockLoop loop{0, mine.size(), 1, threads};
@@ -111,11 +137,15 @@ SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPoin
                             for (const std::string& key : {f, f + "_stderr"}) p.fire[key] = fire.at(key);
                     }
                     p.stats = std::move(traced.stats);
+                    if (p.trace.viewer.enabled) {
+                        p.viewer = sweepViewerFigures(*stone, settings, &control);
+                        if (p.viewer.is_null()) return uint64_t(0);
+                    }
                 } catch (const Error& e) {
                     p.error = e.what();
                 }
             }
-            if (!p.ok()) control.advance(p.trace.photons);
+            if (!p.ok()) control.advance(pointUnits);
             if (hooks.onPoint) hooks.onPoint(k, p);  // kept before it counts as done
             control.finishItem();
         }

@@ -71,8 +71,9 @@ class FireTally {
     const FireExitBins exitBins_;
 };
 
-// The index of refraction of each band.
-std::array<float, kFireBands> bandIndices(const Scene& scene) {
+}  // namespace
+
+std::array<float, kFireBands> fireBandIndices(const Scene& scene) {
     std::array<float, kFireBands> bands;
     for (int k = 0; k < kFireBands; ++k)
         bands[k] =
@@ -80,19 +81,17 @@ std::array<float, kFireBands> bandIndices(const Scene& scene) {
     return bands;
 }
 
-}  // namespace
-
 void traceFire(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats) {
     thread_local std::vector<BandExit> exits;  // the block's, sized once per thread
     exits.resize((end - begin) * kFireBands);
-    PhotonWalker::blockBands(trace, begin, end, bandIndices(trace.scene()), exits);
+    PhotonWalker::blockBands(trace, begin, end, fireBandIndices(trace.scene()), exits);
     FireTally tally(trace, stats);
     for (size_t i = 0; i < end - begin; ++i)
         tally.add(std::span<const BandExit, kFireBands>(&exits[i * kFireBands], kFireBands));
 }
 
 void traceFirePhotonByPhoton(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats) {
-    const std::array<float, kFireBands> bands = bandIndices(trace.scene());
+    const std::array<float, kFireBands> bands = fireBandIndices(trace.scene());
     FireTally tally(trace, stats);
     std::array<BandExit, kFireBands> exits;
     for (uint64_t i = begin; i < end; ++i) {

@@ -3,12 +3,17 @@
 // choices, and its red and blue exits through table or crown toward the viewer compared: the angle between
 // them, whether it exceeds what the viewer's pupil spans, where they left (docs/physics.md, "Fire"). The
 // tallies are integers, so a fire trace gives the same bits for any thread or rank count.
+#include <array>
 #include <cstdint>
 
 #include "stats/fire_stats.h"
 #include "trace/trace_base.h"
 
 namespace facetlight {
+
+// The index of refraction of each band (kFireWavelengthsNm) in the scene: all the same when it is not
+// dispersive.
+std::array<float, kFireBands> fireBandIndices(const Scene& scene);
 
 // Adds photons [begin, end) of the job to `stats` (sized for the stone's facets). A convex stone's bands
 // are walked a packet at a time, one (photon, band) per SIMD lane.

@@ -109,6 +109,36 @@ class PhotonWalker {
         return true;
     }
 
+    // A view ray: a photon's path run backwards (reciprocity), from `eye` along `dir` (stone frame) at index
+    // n, drawing from ph.rng. At the first facet it reflects with the Fresnel probability
+    // (visit.reflectedAtEntry, with the direction it leaves in) or refracts in (visit.entered) and is stepped
+    // until it leaves (visit.exited), is trapped or is lost. False when it misses the stone. A reflection off a
+    // non-convex stone is not followed back into it (as the tracer does).
+    template <class Visitor>
+    static bool view(const TraceBase& s, const Vec3f& eye, const Vec3f& dir, float n, Visitor& visit,
+                     Photon& ph) {
+        const Scene& scene = s.scene();
+        SurfaceHit hit;
+        if (!scene.enter(eye, dir, hit)) return false;
+        const Vec3f p = eye + dir * hit.t;
+        const Vec3f& normal = scene.normal(hit.facet);
+        const float cosI = std::clamp(-dot(dir, normal), 0.0f, 1.0f);
+        const float eta = 1.0f / n;
+        const FresnelResult fr = fresnel(cosI, eta);
+        if (ph.rng.uniform() < fr.reflectance) {
+            visit.reflectedAtEntry(hit.facet, p, reflectOff(dir, normal, cosI));
+            return true;
+        }
+        visit.entered(hit.facet);
+        ph.p = p;
+        ph.d = refractIn(dir, normal, eta, cosI, fr.cosT);
+        ph.n = n;
+        ph.bounces = 0;
+        while (step(s, scene, visit, ph)) {
+        }
+        return true;
+    }
+
     template <class Intersector, class Visitor>
     static void walk(const TraceBase& s, const Intersector& isect, uint64_t index, Visitor& visit) {
         Photon ph;

@@ -7,9 +7,10 @@ namespace facetlight {
 namespace {
 
 // The names progress is reported under (the CLI's JSON lines, the service's job status).
-constexpr std::array<std::pair<RunPhase, std::string_view>, 5> kPhaseNames{
+constexpr std::array<std::pair<RunPhase, std::string_view>, 6> kPhaseNames{
     {{RunPhase::Queued, "queued"},
      {RunPhase::Tracing, "tracing"},
+     {RunPhase::Viewing, "viewing"},
      {RunPhase::PhotonMap, "photon_map"},
      {RunPhase::Rendering, "rendering"},
      {RunPhase::Done, "done"}}};

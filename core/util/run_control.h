@@ -11,7 +11,7 @@
 
 namespace facetlight {
 
-enum class RunPhase : uint8_t { Queued, Tracing, PhotonMap, Rendering, Done };
+enum class RunPhase : uint8_t { Queued, Tracing, Viewing, PhotonMap, Rendering, Done };
 std::string_view runPhaseName(RunPhase phase);
 // The phase runPhaseName gives `name`; none for any other name.
 std::optional<RunPhase> runPhaseNamed(std::string_view name);

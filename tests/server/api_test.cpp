@@ -220,8 +220,8 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     ASSERT_EQ(done["state"], "succeeded") << done.dump();
     EXPECT_EQ(done["progress"]["fraction"], 1.0);
     EXPECT_EQ(done["progress"]["overall"], 1.0);
-    EXPECT_EQ(done["progress"]["step"], 3);  // with render: tracing, photon map, rendering
-    EXPECT_EQ(done["progress"]["steps"], 3);
+    EXPECT_EQ(done["progress"]["step"], 4);  // with render: tracing, viewing, photon map, rendering
+    EXPECT_EQ(done["progress"]["steps"], 4);
     EXPECT_FALSE(done["started_at"].is_null());
     EXPECT_FALSE(done["finished_at"].is_null());
     EXPECT_EQ(done["settings"]["photons"], 20000);

@@ -10,6 +10,7 @@
 #include "scene/scene.h"
 #include "stats/fire_stats.h"
 #include "util/run_control.h"
+#include "viewer/viewer_figures.h"
 #include "sweep/sweep_figures.h"
 #include "sweep/sweep_files.h"
 #include "trace/photon_tracer.h"
@@ -101,7 +102,8 @@ TEST(Sweep, PointEqualsSingleTrace) {
     SweepPointHooks hooks;
     hooks.onPoint = [&](size_t, const SweepPoint&) {
         ++finished;
-        EXPECT_EQ(control.total(), 4 * plan.trace.photons);  // progress in photons over all points
+        // Progress in photons and the viewer's rays over all points.
+        EXPECT_EQ(control.total(), 4 * (plan.trace.photons + viewerUnits(plan.trace.viewer)));
     };
     const SweepResult result = runSweep(plan, control, hooks);
     ASSERT_EQ(result.points.size(), 4u);
