@@ -10,6 +10,7 @@
 #include "cuts/mesh_resolver.h"
 #include "process_communicator.h"
 #include "result_folder.h"
+#include "stats_summary.h"
 #include "study/study.h"
 #include "terminal_output.h"
 #include "trace_options.h"
@@ -67,6 +68,7 @@ void run(RenderOptions& o) {
     if (!comm.isRoot()) return;
     if (comm.size() > 1) result.stats["timing"]["ranks"] = comm.size();
 
+    printStatsSummary(std::cout, result.stats);
     if (settings.aset) printAsetShares(std::cout, result.stats["aset"]);
     if (settings.tiltSeries) {
         const nlohmann::json& t = result.stats["tilt_series"];

@@ -22,9 +22,10 @@ struct SweepOptions {
     std::string shape;
     std::vector<std::string> vary;
     std::vector<std::string> set;
-    std::vector<std::string> figures{kDefaultSweepFigure};
+    std::vector<std::string> figures;  // none: defaultSweepFigure
     std::string out;
     std::string maximize;
+    bool maximizeGiven = false;  // --maximize, maybe without a figure
     std::vector<std::string> constraints;
     int refineRounds = OptimizeSettings{}.refineRounds;
     TraceOptions trace;
@@ -45,16 +46,16 @@ CutValues fixedValues(const std::vector<std::string>& settings) {
 void runSweepCommand(const SweepOptions& o) {
     if (o.vary.empty())
         throw Error("sweep: say what to vary with --vary NAME=LO:HI:STEP (or NAME=V1,V2,...)");
-    if (o.maximize.empty() && !o.constraints.empty()) throw Error("--constraint applies to --maximize only");
+    if (!o.maximizeGiven && !o.constraints.empty()) throw Error("--constraint applies to --maximize only");
     if (o.refineRounds < 0 || o.refineRounds > 6) throw Error("--refine-rounds must be between 0 and 6");
     SweepRequest request;
     for (const std::string& text : o.vary) request.axes.push_back(parseSweepAxis(text));
     request.set = fixedValues(o.set);
-    request.figures = o.figures;
-    request.maximize = o.maximize;
+    const TraceSettings trace = toTraceSettings(o.trace);
+    request.figures = o.figures.empty() ? std::vector<std::string>{defaultSweepFigure(trace)} : o.figures;
+    request.maximize = o.maximizeGiven && o.maximize.empty() ? defaultSweepFigure(trace) : o.maximize;
     request.constraints = o.constraints;
     request.refineRounds = o.refineRounds;
-    const TraceSettings trace = toTraceSettings(o.trace);
     checkSweepFigures(request, trace, {"--figure", "--maximize", "--constraint", false});
     const SweepPlan plan = planSweep(o.shape, request, trace);
     const fs::path out(o.out);
@@ -111,14 +112,18 @@ void addSweepCommand(CLI::App& app) {
                     "NAME=VALUE: a parameter of the shape held at a value other than its default")
         ->take_all();
     cmd->add_option("--figure", o->figures,
-                    "Figures to draw: curves.png for one varied quantity, map_FIGURE.png for two")
-        ->take_all()
-        ->capture_default_str();
+                    "Figures to draw: curves.png for one varied quantity, map_FIGURE.png for two (default " +
+                        std::string(kDefaultSweepFigure) + ", with --no-view " +
+                        kDefaultSweepFigureWithoutViewer + ")")
+        ->take_all();
     cmd->add_option("--out", o->out, "Folder for sweep.json, sweep.csv and the pictures")->required();
-    cmd->add_option(
-        "--maximize", o->maximize,
-        "Search the varied parameters for the design with the highest FIGURE: the sweep, then finer "
-        "grids with more photons; writes best.json and best.obj");
+    CLI::Option* maximize =
+        cmd->add_option("--maximize", o->maximize,
+                        "Search the varied parameters for the design with the highest FIGURE (default " +
+                            std::string(kDefaultSweepFigure) + ", with --no-view " +
+                            kDefaultSweepFigureWithoutViewer +
+                            "): the sweep, then finer grids with more photons; writes best.json and best.obj")
+            ->expected(0, 1);
     cmd->add_option(
            "--constraint", o->constraints,
            "With --maximize: NAME<=VALUE or NAME>=VALUE, e.g. total_depth<=62 (a proportion in %, or a "
@@ -128,7 +133,10 @@ void addSweepCommand(CLI::App& app) {
                     "With --maximize: finer grids after the sweep, each with 4 times the photons")
         ->capture_default_str();
     addTraceOptions(cmd, o->trace, false);
-    cmd->callback([o] { runSweepCommand(*o); });
+    cmd->callback([o, maximize] {
+        o->maximizeGiven = maximize->count() > 0;
+        runSweepCommand(*o);
+    });
 }
 
 }  // namespace facetlight::cli

@@ -1,4 +1,4 @@
-// facetlight trace: shoot photons at a stone and print the per-facet light statistics as JSON.
+// facetlight trace: shoot photons at a stone and print the verdict and figures, or the statistics as JSON.
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -7,6 +7,7 @@
 #include "cuts/mesh_resolver.h"
 #include "process_communicator.h"
 #include "progress_json.h"
+#include "stats_summary.h"
 #include "terminal_output.h"
 #include "trace/distributed_trace.h"
 #include "trace/photon_tracer.h"
@@ -20,6 +21,7 @@ namespace {
 
 struct TraceCommandOptions {
     TraceOptions trace;
+    bool json = false;  // --json given: the statistics as JSON, to jsonPath or (none, "-") stdout
     std::string jsonPath;
     std::string csvPath;
     bool progressJson = false;
@@ -54,12 +56,12 @@ void run(const TraceCommandOptions& o) {
     nlohmann::json stats = traceReport(result, stone, settings);
     if (comm.size() > 1) stats["timing"]["ranks"] = comm.size();
     if (!viewer.is_null()) stats["viewer"] = std::move(viewer);
-    const std::string json = stats.dump(2) + "\n";
-    if (o.jsonPath.empty()) {
-        std::cout << json;
-    } else {
-        writeFile(o.jsonPath, json);
-    }
+    const bool jsonToStdout = o.json && (o.jsonPath.empty() || o.jsonPath == "-");
+    if (jsonToStdout)
+        std::cout << stats.dump(2) << "\n";
+    else
+        printStatsSummary(std::cout, stats);
+    if (o.json && !jsonToStdout) writeFile(o.jsonPath, stats.dump(2) + "\n");
     if (!o.csvPath.empty()) {
         std::ostringstream csv;
         writeFacetCsv(csv, result.stats, stone);
@@ -74,11 +76,18 @@ void addTraceCommand(CLI::App& app) {
     CLI::App* cmd =
         app.add_subcommand("trace", "Trace photons through a stone and report per-facet light statistics");
     addTraceOptions(cmd, o->trace);
-    cmd->add_option("--json", o->jsonPath, "Write the statistics here instead of stdout");
+    CLI::Option* json =
+        cmd->add_option(
+               "--json", o->jsonPath,
+               "Write the statistics as JSON to this file, or to stdout instead of the summary (no file, -)")
+            ->expected(0, 1);
     cmd->add_option("--csv", o->csvPath, "Also write the facet table as CSV here");
     cmd->add_flag("--progress-json", o->progressJson,
                   "Write progress as JSON lines on stderr (for a parent process)");
-    cmd->callback([o] { run(*o); });
+    cmd->callback([o, json] {
+        o->json = json->count() > 0;
+        run(*o);
+    });
 }
 
 }  // namespace facetlight::cli

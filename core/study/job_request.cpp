@@ -48,6 +48,7 @@ JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
     // settings.
     if (const auto s = j.find("sweep"); s != j.end() && !s->is_null()) {
         spec.settings.sweep = sweepRequestSchema().read(*s, "sweep");
+        if (!s->contains("figure")) spec.settings.sweep->figures = {defaultSweepFigure(spec.settings.trace)};
         if (spec.settings.render) throw Error("render", "a sweep makes no render: set render to false");
         planSweep(spec.mesh, *spec.settings.sweep, spec.settings.trace);
     }

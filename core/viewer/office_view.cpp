@@ -4,10 +4,10 @@
 #include <cmath>
 #include <vector>
 
+#include "optics/observer.h"
 #include "trace/photon_walker.h"
 #include "util/parallel.h"
 #include "util/random.h"
-#include "optics/observer.h"
 
 namespace facetlight {
 namespace {
@@ -122,11 +122,12 @@ OfficeTally officeView(const TraceBase& trace, const ViewerSettings& settings, R
     const uint64_t raysPerPoint = poses.size();
 
     const WorkerStates<OfficeTally> workers = parallelForBlocks(
-        BlockLoop{0, settings.office.points, kPointsPerBlock, trace.settings().threads}, control, OfficeTally{},
-        [&](OfficeTally& t, uint64_t first, uint64_t last) {
+        BlockLoop{0, settings.office.points, kPointsPerBlock, trace.settings().threads}, control,
+        OfficeTally{}, [&](OfficeTally& t, uint64_t first, uint64_t last) {
             for (uint64_t j = first; j < last; ++j) {
                 Rng rng(streams, j);
-                const double r = discRadius * std::sqrt(rng.uniformDouble()), phi = 2 * M_PI * rng.uniformDouble();
+                const double r = discRadius * std::sqrt(rng.uniformDouble()),
+                             phi = 2 * M_PI * rng.uniformDouble();
                 const Vec3 target(r * std::cos(phi), r * std::sin(phi), 0);
                 const double pr = observer.pupilRadius() * std::sqrt(rng.uniformDouble());
                 const double pphi = 2 * M_PI * rng.uniformDouble();
@@ -165,8 +166,9 @@ OfficeTally officeView(const TraceBase& trace, const ViewerSettings& settings, R
                             t.centreRays += centre;
                             t.centreDark += centre && !lit[twin];
                             t.centreHead += centre && ray.head;
-                            const int bin = std::clamp(int((target.x / length + 0.5) * OfficeTally::kProfileBins),
-                                                       0, OfficeTally::kProfileBins - 1);
+                            const int bin =
+                                std::clamp(int((target.x / length + 0.5) * OfficeTally::kProfileBins), 0,
+                                           OfficeTally::kProfileBins - 1);
                             ++t.profileRays[size_t(bin)];
                             t.profileDark[size_t(bin)] += !lit[twin];
                         }
@@ -212,31 +214,31 @@ OfficeImage officeImage(const TraceBase& trace, const ViewerSettings& settings, 
     image.size = size;
     image.radiance.assign(size_t(size) * size_t(size), -1.0f);
     image.seen.assign(size_t(size) * size_t(size), Seen::Background);
-    parallelForBlocks(BlockLoop{0, uint64_t(size), 1, trace.settings().threads}, control,
-                      [&](int, uint64_t y, uint64_t) {
-                          for (int x = 0; x < size; ++x) {
-                              const uint64_t pixel = y * uint64_t(size) + uint64_t(x);
-                              double sum = 0;
-                              int hits = 0;
-                              std::array<int, 4> seen{};
-                              for (int s = 0; s < samples; ++s) {
-                                  PhotonWalker::Photon ph;
-                                  ph.rng = Rng(streams, pixel * uint64_t(samples) + uint64_t(s));
-                                  const double px = (x + ph.rng.uniformDouble()) / size * 2 - 1;
-                                  const double py = 1 - (double(y) + ph.rng.uniformDouble()) / size * 2;
-                                  const Vec3 dir = normalize(Vec3(px * half, py * half, 0) - observer.eye());
-                                  ViewRay ray{stone, observer, pose};
-                                  if (!PhotonWalker::view(trace, eye, Vec3f(pose.toStone(dir)), n, ray, ph)) continue;
-                                  ++hits;
-                                  sum += ray.radiance;
-                                  ++seen[size_t(ray.seen)];
-                              }
-                              if (hits == 0) continue;
-                              image.radiance[pixel] = float(sum / hits);
-                              image.seen[pixel] = Seen(std::max_element(seen.begin(), seen.end()) - seen.begin());
-                          }
-                          return uint64_t(size);
-                      });
+    parallelForBlocks(
+        BlockLoop{0, uint64_t(size), 1, trace.settings().threads}, control, [&](int, uint64_t y, uint64_t) {
+            for (int x = 0; x < size; ++x) {
+                const uint64_t pixel = y * uint64_t(size) + uint64_t(x);
+                double sum = 0;
+                int hits = 0;
+                std::array<int, 4> seen{};
+                for (int s = 0; s < samples; ++s) {
+                    PhotonWalker::Photon ph;
+                    ph.rng = Rng(streams, pixel * uint64_t(samples) + uint64_t(s));
+                    const double px = (x + ph.rng.uniformDouble()) / size * 2 - 1;
+                    const double py = 1 - (double(y) + ph.rng.uniformDouble()) / size * 2;
+                    const Vec3 dir = normalize(Vec3(px * half, py * half, 0) - observer.eye());
+                    ViewRay ray{stone, observer, pose};
+                    if (!PhotonWalker::view(trace, eye, Vec3f(pose.toStone(dir)), n, ray, ph)) continue;
+                    ++hits;
+                    sum += ray.radiance;
+                    ++seen[size_t(ray.seen)];
+                }
+                if (hits == 0) continue;
+                image.radiance[pixel] = float(sum / hits);
+                image.seen[pixel] = Seen(std::max_element(seen.begin(), seen.end()) - seen.begin());
+            }
+            return uint64_t(size);
+        });
     return image;
 }
 

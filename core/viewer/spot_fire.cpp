@@ -3,12 +3,12 @@
 #include <array>
 #include <cmath>
 
+#include "optics/observer.h"
 #include "trace/fire_trace.h"
 #include "trace/photon_walker.h"
 #include "util/error.h"
 #include "util/parallel.h"
 #include "util/random.h"
-#include "optics/observer.h"
 
 namespace facetlight {
 namespace {
@@ -51,11 +51,13 @@ std::vector<Vec3> spotLamps(const ViewerSettings& settings) {
         lamps.push_back(-toLamp);
     }
     if (lamps.empty())
-        throw Error("viewer.spot.lamps", "the viewer's head and shoulders hide every lamp: raise the lamps or move them");
+        throw Error("viewer.spot.lamps",
+                    "the viewer's head and shoulders hide every lamp: raise the lamps or move them");
     return lamps;
 }
 
-SpotTally spotFire(const TraceBase& trace, const ViewerSettings& settings, RunControl* control, bool& finished) {
+SpotTally spotFire(const TraceBase& trace, const ViewerSettings& settings, RunControl* control,
+                   bool& finished) {
     const Scene& scene = trace.scene();
     const Stone& stone = scene.stone();
     const Observer observer(settings, 1.0);
@@ -78,11 +80,13 @@ SpotTally spotFire(const TraceBase& trace, const ViewerSettings& settings, RunCo
                 const Vec3 dir = pose.toStone(lamps[(i / poses.size()) % lamps.size()]);
                 Rng rng(streams, i);
                 // A uniform point of the disc across the beam that covers the stone.
-                const double r = radius * std::sqrt(rng.uniformDouble()), phi = 2 * M_PI * rng.uniformDouble();
-                const Vec3 u = normalize(std::abs(dir.z) < 0.9 ? cross(dir, Vec3(0, 0, 1)) : cross(dir, Vec3(1, 0, 0)));
+                const double r = radius * std::sqrt(rng.uniformDouble()),
+                             phi = 2 * M_PI * rng.uniformDouble();
+                const Vec3 u =
+                    normalize(std::abs(dir.z) < 0.9 ? cross(dir, Vec3(0, 0, 1)) : cross(dir, Vec3(1, 0, 0)));
                 const Vec3 v = cross(dir, u);
-                const LightRay ray{centre - dir * (2 * radius) + u * (r * std::cos(phi)) + v * (r * std::sin(phi)),
-                                   dir};
+                const LightRay ray{
+                    centre - dir * (2 * radius) + u * (r * std::cos(phi)) + v * (r * std::sin(phi)), dir};
                 std::array<BandExit, kFireBands> exit;
                 for (int b = 0; b < kFireBands; ++b) {
                     PhotonWalker::Photon ph;

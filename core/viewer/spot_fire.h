@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "optics/viewer_settings.h"
 #include "trace/trace_base.h"
 #include "util/run_control.h"
-#include "optics/viewer_settings.h"
 
 namespace facetlight {
 
@@ -32,6 +32,7 @@ std::vector<Vec3> spotLamps(const ViewerSettings& settings);
 // Traces settings.spot.photons photons of the trace's stone with its seed, threads and bounce limit; the
 // scene's light plays no part (it must not be collimated: the photons' directions are the lamps'). Advances
 // control->done() by the photons of each block. `finished`: whether it ran to the end.
-SpotTally spotFire(const TraceBase& trace, const ViewerSettings& settings, RunControl* control, bool& finished);
+SpotTally spotFire(const TraceBase& trace, const ViewerSettings& settings, RunControl* control,
+                   bool& finished);
 
 }  // namespace facetlight

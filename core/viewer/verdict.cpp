@@ -28,7 +28,8 @@ std::string percentText(const ViewerFigure& v) {
 std::string comparisonText(const FigureComparison& c) {
     const ViewerFigure& d = c.difference;
     std::string text = std::string(c.info->label) + " " + percentText(c.stone) + ", ";
-    if (std::abs(d.value) < 2 * d.stderr) return text + "as the GIA reference's (" + percentText(c.reference) + ")";
+    if (std::abs(d.value) < 2 * d.stderr)
+        return text + "as the GIA reference's (" + percentText(c.reference) + ")";
     return text + formatWithError(std::abs(d.value), d.stderr) + " % " + (d.value > 0 ? "above" : "below") +
            " the GIA reference's " + percentText(c.reference);
 }
@@ -45,7 +46,8 @@ std::string referenceKey(const TraceSettings& t) {
 
 }  // namespace
 
-const char* const kReferenceName = "the GIA reference round brilliant (T 57, C 34, P 40.7, girdle 2.5, star 50, lower half 80)";
+const char* const kReferenceName =
+    "the GIA reference round brilliant (T 57, C 34, P 40.7, girdle 2.5, star 50, lower half 80)";
 
 const ViewerFigures& referenceFigures(const TraceSettings& trace, RunControl* control) {
     static std::mutex mutex;
@@ -99,7 +101,8 @@ Verdict judge(const Stone& stone, const ViewerFigures& figures, const ViewerFigu
     }
     v.score = {score, std::sqrt(variance)};
 
-    v.summary = "light performance " + formatWithError(v.score.value, v.score.stderr) + " (the GIA reference: 100)";
+    v.summary =
+        "light performance " + formatWithError(v.score.value, v.score.stderr) + " (the GIA reference: 100)";
     std::string faults;
     for (const FaultFinding& f : v.faults)
         if (f.present) faults += (faults.empty() ? "" : ", ") + std::string(f.rule->name);
@@ -108,7 +111,9 @@ Verdict judge(const Stone& stone, const ViewerFigures& figures, const ViewerFigu
 }
 
 nlohmann::json toJson(const ViewerFigures& figures, const Verdict& verdict, const ViewerSettings& settings) {
-    const auto figure = [](const ViewerFigure& f) { return nlohmann::json{{"value", f.value}, {"stderr", f.stderr}}; };
+    const auto figure = [](const ViewerFigure& f) {
+        return nlohmann::json{{"value", f.value}, {"stderr", f.stderr}};
+    };
     nlohmann::json list = nlohmann::json::object();
     nlohmann::json sentences = nlohmann::json::array();
     for (const FigureComparison& c : verdict.figures) {

@@ -13,8 +13,8 @@
 
 namespace facetlight {
 
-// A fault and the face-up measure that shows it: present when the measure exceeds the threshold (the thresholds
-// and the stones they were set on: docs/physics.md, "Verdict").
+// A fault and the face-up measure that shows it: present when the measure exceeds the threshold (the
+// thresholds and the stones they were set on: docs/physics.md, "Verdict").
 struct FaultRule {
     std::string_view key, name, meaning;
     ViewerFigure (ViewerFigures::*measure)() const;
@@ -25,14 +25,14 @@ inline constexpr double kElongated = 1.2;
 inline constexpr std::array<FaultRule, 5> kFaultRules{{
     {"fish_eye", "fish-eye", "the girdle's reflection seen in the table", &ViewerFigures::girdleInTable, 0.05,
      false},
-    {"nail_head", "nail-head", "the table's centre dark with the viewer's head", &ViewerFigures::headInTableCentre,
-     0.75, false},
+    {"nail_head", "nail-head", "the table's centre dark with the viewer's head",
+     &ViewerFigures::headInTableCentre, 0.75, false},
     {"windowing", "windowing", "the background seen through the table", &ViewerFigures::seeThroughTable, 0.25,
      false},
-    {"extinction", "extinction", "face-up area dark however the stone is rocked", &ViewerFigures::extinction, 0.08,
-     false},
-    {"bow_tie", "bow-tie", "a dark band across the middle of an elongated stone", &ViewerFigures::darkMiddle, 0.25,
-     true},
+    {"extinction", "extinction", "face-up area dark however the stone is rocked", &ViewerFigures::extinction,
+     0.08, false},
+    {"bow_tie", "bow-tie", "a dark band across the middle of an elongated stone", &ViewerFigures::darkMiddle,
+     0.25, true},
 }};
 
 // The light-performance score: 100 times the weighted mean of brightness, fire, scintillation and contrast,
@@ -71,8 +71,8 @@ struct Verdict {
     std::string summary;  // one line: the score, the largest differences, the faults
 };
 
-// The GIA reference round brilliant (the cut library's round_brilliant at its defaults) in the job's material,
-// seen with the job's viewer settings. Each distinct set of settings is traced once per process.
+// The GIA reference round brilliant (the cut library's round_brilliant at its defaults) in the job's
+// material, seen with the job's viewer settings. Each distinct set of settings is traced once per process.
 const ViewerFigures& referenceFigures(const TraceSettings& trace, RunControl* control = nullptr);
 extern const char* const kReferenceName;
 

@@ -85,8 +85,8 @@ uint64_t viewerUnits(const ViewerSettings& s) {
 ViewerFigures viewStone(const Stone& stone, const TraceSettings& trace, RunControl* control) {
     const ViewerSettings& settings = trace.viewer;
     settings.validate();
-    // The set-ups bring their own light: the scene's is a dome, so that nothing takes a collimated beam's short
-    // cuts (trace/trace_base.h).
+    // The set-ups bring their own light: the scene's is a dome, so that nothing takes a collimated beam's
+    // short cuts (trace/trace_base.h).
     TraceSettings own = trace;
     own.light = LightSettings{};
     own.light.model = LightModelKind::Hemisphere;

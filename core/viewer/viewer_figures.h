@@ -1,7 +1,7 @@
 #pragma once
 // What a viewer sees of a stone (docs/physics.md, "Viewer figures"): brightness, contrast, scintillation,
 // windowing and extinction in the office, fire under the spot lights, each with its standard error, and the
-// face-up measures the faults are recognised by (viewer/faults.h).
+// face-up measures the faults are recognised by (viewer/verdict.h).
 #include <array>
 #include <cstdint>
 #include <string_view>

@@ -315,6 +315,16 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.deepEqual(pics.map((p) => p.src.split('/').pop()), ['render.png', 'heatmap.png', 'angular.png']);
 
     const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+    // The verdict comes first: the score, every viewer figure beside the reference's with its set-up, the faults.
+    assert.equal(await page.$eval('#result-body article.result > section', (s) => s.dataset.section), 'verdict');
+    const score = await page.textContent('.verdict .score-value');
+    assert.equal(score, `${stats.viewer.score.value.toFixed(1)} ± ${stats.viewer.score.stderr.toFixed(1)}`);
+    for (const [key, f] of Object.entries(stats.viewer.figures)) {
+      const row = await page.textContent(`.verdict-table tr[data-figure="${key}"]`);
+      assert.match(row, f.set_up === 'spot' ? /Spot: 6 lamps/ : /Office: cosine dome/, key);
+      assert.match(row, /\d % ± \d/, key);
+    }
+    assert.equal(await page.locator('.verdict .fault-list li').count(), stats.viewer.faults.filter((f) => f.applies).length);
     const crown = await page.textContent('[data-figure="crown_return"] .figure-value');
     assert.ok(Math.abs(parseFloat(crown) - stats.totals.crown_return * 100) <= 0.05, `${crown} vs ${stats.totals.crown_return}`);
     assert.match(await page.textContent('[data-figure="crown_return"] .figure-err'), /± \d/);
@@ -387,6 +397,13 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.deepEqual(ranked, expected, 'ranked by crown return, most first');
     assert.match(await page.textContent('.rank-list li:first-child'), /Most light out of the top/);
     assert.match(await page.textContent('.rank-list li:first-child .rank-no'), /#1/);
+
+    // The verdicts side by side: a score for each design in the ranking's order, the cube's the lower.
+    const scores = await page.$$eval('.verdict-compare-table tbody tr:first-child td', (tds) => tds.map((td) => parseFloat(td.textContent)));
+    assert.equal(scores.length, 2);
+    const cubeScore = scores[expected.indexOf(jobIds.cube)];
+    assert.ok(cubeScore < scores[expected.indexOf(jobIds.brilliant)], JSON.stringify(scores));
+    assert.equal(await page.locator('.verdict-compare-table tbody tr').count(), 2 + 6);
 
     const cards = await page.$$eval('.compare-card', (cs) => cs.map((c) => c.dataset.id));
     assert.deepEqual(cards, expected);
@@ -591,13 +608,15 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
       { timeout: JOB_TIMEOUT_MS });
     assert.match(await page.textContent('#sweep-progress'), /3 of 3 points/);
     const chartText = await page.textContent('#sweep-chart svg');
-    for (const label of ['pavilion (deg)', 'Cosine-weighted return (%)', '±1σ']) assert.ok(chartText.includes(label), label);
+    for (const label of ['pavilion (deg)', 'Brightness (%)', '±1σ']) assert.ok(chartText.includes(label), label);
     assert.ok(await page.isVisible('#sweep-chart polygon.sweep-band'), 'the ±1σ band is drawn');
     assert.ok(await page.isVisible('#sweep-links a[href$="/sweep.csv"]'));
     await shot('12-sweep-chart');
     await page.hover('#sweep-chart circle.sweep-point >> nth=1');
     const tip = await page.textContent('#sweep-tooltip');
     assert.match(tip, /^pavilion 40: /);
+    assert.match(tip, /brightness \d+\.\d+ % ± \d/);
+    assert.match(tip, /light-performance score \d+\.\d ± \d/);
     assert.match(tip, /cosine-weighted return \d+\.\d+ % ± \d/);
     await page.click('#sweep-chart circle.sweep-point >> nth=1');
     await page.waitForFunction(() => location.hash.startsWith('#/compare/'), null, { timeout: JOB_TIMEOUT_MS });

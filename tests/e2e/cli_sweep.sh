@@ -10,16 +10,22 @@ trap 'rm -rf "$dir"' EXIT
   --out "$dir/map" >/dev/null
 test "$(wc -l <"$dir/map/sweep.csv")" -eq 9
 grep -q '"weighted_return_stderr"' "$dir/map/sweep.json"
-test -s "$dir/map/map_weighted_return.png"
+head -1 "$dir/map/sweep.csv" | grep -q ',brightness,brightness_stderr,'
+test -s "$dir/map/map_brightness.png"
 
-"$tool" sweep round_brilliant --vary pavilion=38:43:1 --photons 2000 --threads 2 --maximize weighted_return \
+# --maximize alone searches for the default figure, brightness.
+"$tool" sweep round_brilliant --vary pavilion=40,41 --photons 1000 --threads 2 --office-points 1000 \
+  --spot-photons 20000 --maximize --refine-rounds 0 --out "$dir/default" >/dev/null
+grep -q '"figure": "brightness"' "$dir/default/best.json"
+
+"$tool" sweep round_brilliant --vary pavilion=38:43:1 --photons 2000 --threads 2 --no-view --maximize weighted_return \
   --constraint total_depth\<=61 --refine-rounds 1 --out "$dir/best" >/dev/null
 grep -q '"interval"' "$dir/best/best.json"
 grep -q '^# facetlight cut round_brilliant' "$dir/best/best.obj"
 test -s "$dir/best/curves.png"
 
 # With --fire every point carries its fire figures, and the search takes one.
-"$tool" sweep round_brilliant --vary pavilion=40,41 --fire --photons 2000 --threads 2 --figure coloured_share \
+"$tool" sweep round_brilliant --vary pavilion=40,41 --fire --no-view --photons 2000 --threads 2 --figure coloured_share \
   --maximize coloured_return_weighted --refine-rounds 0 --out "$dir/fire" >/dev/null
 head -1 "$dir/fire/sweep.csv" | grep -q ',coloured_return_weighted,coloured_return_weighted_stderr,'
 grep -q '"mean_separation_deg_stderr"' "$dir/fire/sweep.json"

@@ -22,8 +22,9 @@ StudySettings sweepOf(std::vector<size_t> sizes, std::string maximize = {}) {
 }
 
 TEST(JobProgress, StepsAreThePhasesWithWorkOrTheSweepsRounds) {
-    EXPECT_EQ(idleProgress(StudySettings{}, "queued").steps, 1);
-    EXPECT_EQ(idleProgress(rendered(), "queued").steps, 3);
+    // A trace, then the viewer's office figures; a render adds its photon map and picture.
+    EXPECT_EQ(idleProgress(StudySettings{}, "queued").steps, 2);
+    EXPECT_EQ(idleProgress(rendered(), "queued").steps, 4);
     EXPECT_EQ(idleProgress(sweepOf({4, 3}), "queued").steps, 1);
     EXPECT_EQ(idleProgress(sweepOf({4}, "weighted_return"), "queued").steps, 3);
     const JobProgress queued = idleProgress(sweepOf({4, 3}), "queued");
@@ -50,12 +51,12 @@ TEST(JobProgress, AStudyUnderWayIsAtItsPhasesShare) {
     control.show(RunPhase::PhotonMap, 1, 4);
     const JobProgress p = runningProgress(rendered(), control);
     EXPECT_EQ(p.phase, "photon_map");
-    EXPECT_EQ(p.step, 2);
+    EXPECT_EQ(p.step, 3);
     EXPECT_EQ(p.fraction, 0.25);
-    EXPECT_DOUBLE_EQ(p.overall, 1.25 / 3);
+    EXPECT_DOUBLE_EQ(p.overall, 2.25 / 4);
     control.show(RunPhase::Done, 0, 0);
     EXPECT_EQ(runningProgress(rendered(), control).overall, 1.0);
-    EXPECT_EQ(runningProgress(rendered(), control).step, 3);
+    EXPECT_EQ(runningProgress(rendered(), control).step, 4);
 }
 
 TEST(JobProgress, ASweepUnderWayCountsTheRoundsPoints) {

@@ -53,10 +53,10 @@ ViewerFigure measure(const ViewerFigures& f, std::string_view fault) {
 }  // namespace
 
 // A wide diamond slab seen from the viewer's eye straight above, at one tilt: each view ray reflects off the
-// top with R or crosses, and each crossing it leaves through the bottom (the tray) with 1 - R or comes back up
-// with R and leaves through the top, parallel to the first reflection, with 1 - R. Summed: 2R / (1 + R) of the
-// face-up area shows the mirror direction and (1 - R) / (1 + R) the tray, R the Fresnel reflectance at the
-// tilt. Face-up the mirror direction is the viewer's head (dark); tilted 30 deg it is the dome at 30 deg
+// top with R or crosses, and each crossing it leaves through the bottom (the tray) with 1 - R or comes back
+// up with R and leaves through the top, parallel to the first reflection, with 1 - R. Summed: 2R / (1 + R) of
+// the face-up area shows the mirror direction and (1 - R) / (1 + R) the tray, R the Fresnel reflectance at
+// the tilt. Face-up the mirror direction is the viewer's head (dark); tilted 30 deg it is the dome at 30 deg
 // elevation, of radiance sin 30 deg = 0.5 under the cosine dome. The tray (albedo a) has radiance
 // a E / pi = 2a / 3 under it.
 TEST(OfficeView, SlabShowsItsMirrorDirectionAndTheTrayByFresnel) {
@@ -107,7 +107,8 @@ TEST(SpotFire, NoDispersionNoFire) {
     EXPECT_EQ(f.fire().value, 0.0);
 }
 
-// A lamp behind the viewer's head or shoulders lights nothing; with every lamp there, the settings are refused.
+// A lamp behind the viewer's head or shoulders lights nothing; with every lamp there, the settings are
+// refused.
 TEST(SpotFire, LampsTheViewerHidesAreLeftOut) {
     ViewerSettings v;
     // At azimuths 30, 90, ..., 330 deg, 50 deg up: the shoulders, 40.6 deg from the zenith toward -y (azimuth
@@ -154,8 +155,8 @@ TEST(Verdict, FaultsAreFoundOnStonesKnownToShowThem) {
         CutValues values;
         const TraceSettings& settings;
     } cases[] = {
-        {"fish_eye", "round_brilliant", {{"pavilion", 37.5}}, s},  // a shallow pavilion
-        {"nail_head", "round_brilliant", {{"pavilion", 44.5}}, s},  // a deep one
+        {"fish_eye", "round_brilliant", {{"pavilion", 38}}, s},     // a shallow pavilion (the stones)
+        {"nail_head", "round_brilliant", {{"pavilion", 43.5}}, s},  // a deep one
         {"bow_tie", "oval", {{"ratio", 1.7}}, s},
         {"windowing", "round_brilliant", {{"pavilion", 38}}, glass},  // below glass's critical angle
         {"extinction", "round_brilliant", {{"pavilion", 34}}, glass},

@@ -9,6 +9,7 @@ import { displayMeshName } from './meshes.js';
 import { jobSummary } from './progress.js';
 import { viewerCompare } from './compare_viewer.js';
 import { regionTable } from './result.js';
+import { verdictCompare } from './verdict.js';
 
 const compareView = { ids: [] };
 
@@ -49,7 +50,7 @@ export async function showCompare(ids) {
   if (failed.length) {
     parts.push(h('p', { class: 'form-error', role: 'alert' }, failed.map((f) => `Job ${shortId(f.id)}: ${f.error}`).join('; ')));
   }
-  if (ok.length) parts.push(...[ranking(ok), compareCards(ok), viewerCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName)].filter(Boolean));
+  if (ok.length) parts.push(...[verdictCompare(ok, entryName), ranking(ok), compareCards(ok), viewerCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName)].filter(Boolean));
   body.replaceChildren(...parts);
 }
 

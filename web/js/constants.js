@@ -23,6 +23,17 @@ export const FIGURES = [
   { key: 'cone_return_60', label: 'Within 60° cone', hint: 'Crown return within 60° of vertical' },
   { key: 'leakage', label: 'Leakage', hint: 'Leaves through pavilion and girdle (lower is better)', lowerIsBetter: true },
 ];
+// What a viewer sees (stats.viewer, docs/physics.md "Viewer figures"): shares, and the light-performance score
+// in points (100: the GIA reference round brilliant).
+export const VIEWER_FIGURES = [
+  { key: 'brightness', label: 'Brightness', hint: 'Mean radiance the viewer sees face-up under the office dome, head and shoulders in the way, over the rocking' },
+  { key: 'fire', label: 'Fire', hint: 'Share of the spot lamps\u2019 light that reaches the eye as colour' },
+  { key: 'scintillation', label: 'Scintillation', hint: 'Share of looks a small rock apart between which a point turns from lit to dark or back' },
+  { key: 'contrast', label: 'Contrast', hint: 'Share of the face-up area that shows the viewer: the dark pattern' },
+  { key: 'windowing', label: 'Windowing', hint: 'Share of the face-up area that shows the tray through the stone (lower is better)', lowerIsBetter: true },
+  { key: 'extinction', label: 'Extinction', hint: 'Share of the face-up area dark throughout a rock (lower is better)', lowerIsBetter: true },
+  { key: 'score', label: 'Light-performance score', points: true, hint: 'The figures weighed together; 100 for the GIA reference' },
+];
 export const FACET_COLUMNS = [
   { key: 'id', label: 'Id', numeric: true },
   { key: 'name', label: 'Name' },

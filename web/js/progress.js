@@ -36,18 +36,21 @@ export function stateBadge(state) {
   return h('span', { class: `state state-${state}` }, h('span', { 'aria-hidden': 'true', class: 'glyph' }, s.glyph), s.label);
 }
 
+// The job's light in words: "hemisphere, uniform sky, head shadow 15°".
+export function lightText(settings) {
+  if (!settings || !settings.light) return '';
+  let light = settings.light.model;
+  if (settings.light.tilt_deg) light += `, tilt ${settings.light.tilt_deg}°`;
+  if (settings.light.model === 'hemisphere' && settings.light.sky) light += `, ${settings.light.sky} sky`;
+  if (settings.light.model === 'hemisphere' && settings.light.head_shadow_deg) {
+    light += `, head shadow ${settings.light.head_shadow_deg}°`;
+  }
+  return light;
+}
+
 export function jobSummary(settings) {
   if (!settings) return '';
-  const parts = [`${fmtInt(settings.photons)} photons`, humanize(settings.material || '')];
-  if (settings.light) {
-    let light = settings.light.model;
-    if (settings.light.tilt_deg) light += `, tilt ${settings.light.tilt_deg}°`;
-    if (settings.light.model === 'hemisphere' && settings.light.sky) light += `, ${settings.light.sky} sky`;
-    if (settings.light.model === 'hemisphere' && settings.light.head_shadow_deg) {
-      light += `, head shadow ${settings.light.head_shadow_deg}°`;
-    }
-    parts.push(light);
-  }
+  const parts = [`${fmtInt(settings.photons)} photons`, humanize(settings.material || ''), lightText(settings)];
   if (settings.dispersion === false) parts.push('no dispersion');
   return parts.filter(Boolean).join(' · ');
 }

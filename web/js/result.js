@@ -6,7 +6,8 @@ import { decimalsFor, fmtDuration, fmtInt, fmtNumber, fmtPct, fmtPctErr, fmtTime
 import { fireSection } from './fire.js';
 import { linkFacet, pictures } from './heatmap.js';
 import { displayMeshName } from './meshes.js';
-import { jobSummary, progressBar, stateBadge } from './progress.js';
+import { jobSummary, lightText, progressBar, stateBadge } from './progress.js';
+import { verdictCard } from './verdict.js';
 
 export const resultView = { id: '', timer: 0, stats: null, sort: { key: 'leaving_share', dir: -1 } };
 
@@ -200,9 +201,10 @@ function resultPage(job, stats) {
       h('p', { class: 'downloads' }, 'Download: ',
         h('a', { href: `${base}/stats`, download: `facetlight-${shortId(job.id)}.json` }, 'Statistics (JSON)'), ' · ',
         h('a', { href: `${base}/stats.csv`, download: `facetlight-${shortId(job.id)}.csv` }, 'Facet table (CSV)'))),
+    verdictCard(stats),
     h('section', { class: 'card', 'aria-labelledby': 'merit-title' },
       h('h2', { id: 'merit-title' }, 'Figures of merit'),
-      h('p', { class: 'hint' }, 'Shares of the photons that hit the stone, with one standard error.'),
+      h('p', { class: 'hint' }, `Shares of the photons that hit the stone, with one standard error, under the job's light (${lightText(job.settings)}).`),
       h('dl', { class: 'figures' }, FIGURES.map((f, i) => figureCard(f, totals, i === 0)))),
     h('section', { class: 'card', 'aria-labelledby': 'pictures-title' },
       h('h2', { id: 'pictures-title' }, 'Pictures'), pictures(job, name, stats)),

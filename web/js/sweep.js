@@ -1,7 +1,7 @@
 // Sweeps (docs/sweeps.md): the form that submits one, and its chart, which fills in as the points finish. One
 // varied quantity: the figure against it with a ±1σ band; two: a filled map with the best point marked.
 import { api, jobUrl } from './api.js';
-import { FIGURES, POLL_ACTIVE_MS } from './constants.js';
+import { FIGURES, POLL_ACTIVE_MS, VIEWER_FIGURES } from './constants.js';
 import { $, clearFieldError, h, showFieldError, svg } from './dom.js';
 import { FIRE_FIGURES, fmtFire } from './fire.js';
 import { fmtNumber, humanize, shortId } from './format.js';
@@ -14,11 +14,20 @@ const W = 640;
 const H = 400;
 const M = { left: 70, right: 170, top: 20, bottom: 56 };
 
-// The figures of the statistics' totals, then the fire figures (points of a sweep that traces fire).
-const SWEEP_FIGURES = [...FIGURES, ...FIRE_FIGURES];
+// The viewer's figures, the statistics' totals, then the fire figures (points of a sweep that traces fire).
+const SWEEP_FIGURES = [...VIEWER_FIGURES, ...FIGURES, ...FIRE_FIGURES];
 function figureInfo(key) { return SWEEP_FIGURES.find((f) => f.key === key) || { key, label: humanize(key) }; }
-// Where a point keeps a figure and its standard error: its totals, or its fire figures.
-function figuresOf(p, key) { return key in p.totals ? p.totals : p.fire; }
+// Where a point keeps a figure and its standard error: its totals, its viewer figures or its fire figures.
+function figuresOf(p, key) {
+  if (key in p.totals) return p.totals;
+  return p.viewer && key in p.viewer ? p.viewer : p.fire || {};
+}
+// A figure and its error as text: the score in points, the rest as fire.js writes them.
+function fmtFigure(f, figures) {
+  if (!f.points) return fmtFire(f, figures);
+  const v = figures[f.key];
+  return Number.isFinite(v) ? `${v.toFixed(1)} ± ${figures[`${f.key}_stderr`].toFixed(1)}` : '—';
+}
 
 // The defaults of each axis: a pavilion range, and a crown range for the map.
 const AXIS_DEFAULTS = [{ name: 'pavilion', from: 38, to: 43, step: 0.5 }, { name: 'crown', from: 30, to: 38, step: 2 }];
@@ -43,7 +52,8 @@ export function initSweepForm() {
   const form = $('#sweep-form');
   $('#sweep-axes').replaceChildren(axisFieldset(0), axisFieldset(1));
   $('#s-figure').replaceChildren(
-    h('optgroup', { label: 'Light return' }, FIGURES.map((f) => h('option', { value: f.key, selected: f.key === 'weighted_return' }, f.label))),
+    h('optgroup', { label: 'What a viewer sees' }, VIEWER_FIGURES.map((f) => h('option', { value: f.key, selected: f.key === 'brightness' }, f.label))),
+    h('optgroup', { label: 'Light return' }, FIGURES.map((f) => h('option', { value: f.key }, f.label))),
     h('optgroup', { label: 'Fire (traces fire)' }, FIRE_FIGURES.map((f) => h('option', { value: f.key }, f.label))));
   // A fire figure needs the fire trace.
   $('#s-figure').addEventListener('change', (ev) => {
@@ -181,7 +191,7 @@ function pointText(pt, axes, figures) {
     return `${humanize(a.name)} ${typeof v === 'number' ? fmtNumber(v, 4) : humanize(v)}`;
   }).join(', ');
   if (pt.error) return `${values}: cannot be made (${pt.error})`;
-  const figs = figures.map((key) => `${figureInfo(key).label.toLowerCase()} ${fmtFire(figureInfo(key), figuresOf(pt, key))}`);
+  const figs = figures.map((key) => `${figureInfo(key).label.toLowerCase()} ${fmtFigure(figureInfo(key), figuresOf(pt, key))}`);
   const depth = pt.proportions && pt.proportions.total_depth_pct;
   return `${values}: ${figs.join(' · ')}${Number.isFinite(depth) ? ` · total depth ${fmtNumber(depth, 1)} %` : ''}`;
 }
@@ -247,11 +257,11 @@ function drawSweep(data, figure) {
   const value = (p) => figuresOf(p, figure)[figure];
   const sigma = (p) => figuresOf(p, figure)[`${figure}_stderr`];
   const values = ok.map(value);
-  // Shares in %, the mean separation in degrees.
-  const { degrees } = figureInfo(figure);
-  const unit = degrees ? '°' : '%';
+  // Shares in %, the mean separation in degrees, the score in points.
+  const { degrees, points } = figureInfo(figure);
+  const unit = degrees ? '°' : points ? 'points' : '%';
   const yTitle = `${figureInfo(figure).label} (${unit})`;
-  const pct = (v) => (degrees ? fmtNumber(v, 3) : fmtNumber(v * 100, 2));
+  const pct = (v) => (degrees ? fmtNumber(v, 3) : points ? fmtNumber(v, 1) : fmtNumber(v * 100, 2));
   if (data.axes.length === 1) {
     const axis = data.axes[0];
     const xs = axisValues(axis);

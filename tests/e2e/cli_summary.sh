@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# facetlight trace for a person and for a program: by default the verdict and the figures as text; with
+# --json the statistics as JSON on stdout (no file, or -) or in a file, the summary still printed.
+set -euo pipefail
+tool=$1
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+small=(--mesh round_brilliant --photons 4000 --threads 2 --office-points 2000 --spot-photons 40000)
+
+"$tool" trace "${small[@]}" >"$dir/summary.txt"
+grep -q '^Verdict: light performance 100.0 +- [0-9.]* (the GIA reference: 100); no faults$' "$dir/summary.txt"
+grep -q "^  brightness [0-9.]* +- [0-9.]* %, as the GIA reference's" "$dir/summary.txt"
+grep -q '^  none  fish-eye: ' "$dir/summary.txt"
+grep -q '^  cosine-weighted return  *[0-9.]* +- [0-9.]* %$' "$dir/summary.txt"
+if grep -q '^  none  bow-tie' "$dir/summary.txt"; then
+  echo "the bow-tie does not apply to a round stone" >&2
+  exit 1
+fi
+
+"$tool" trace "${small[@]}" --json >"$dir/stdout.json"
+"$tool" trace "${small[@]}" --json - >"$dir/dash.json"
+"$tool" trace "${small[@]}" --json "$dir/file.json" >"$dir/with-file.txt"
+grep -q '^Verdict: ' "$dir/with-file.txt"
+python3 - "$dir" <<'PY'
+import json, sys
+d = sys.argv[1]
+docs = [json.load(open(f"{d}/{name}.json")) for name in ("stdout", "dash", "file")]
+for doc in docs:
+    doc.pop("timing")
+assert docs[0] == docs[1] == docs[2], "the three ways of asking for JSON differ"
+assert docs[0]["viewer"]["score"]["value"] == 100.0, docs[0]["viewer"]["score"]
+PY
+
+# Without the viewer: the trace's figures alone.
+"$tool" trace "${small[@]}" --no-view >"$dir/plain.txt"
+if grep -q '^Verdict' "$dir/plain.txt"; then
+  echo "a trace without the viewer printed a verdict" >&2
+  exit 1
+fi
+grep -q '^Trace: 4000 photons' "$dir/plain.txt"
+echo "cli summary: ok"
