@@ -84,13 +84,15 @@ void runSweepCommand(const SweepOptions& o) {
     writeTextFile((out / "best.obj").string(), result.bestObj);
     writeFile(out / "best.json", result.best.dump(2) + "\n");
     const nlohmann::json& best = result.best["best"];
-    std::printf("best %s %.4f +- %.4f (95%%: %.4f to %.4f) at", o.maximize.c_str(),
-                best["value"].get<double>(), best["stderr"].get<double>(), best["interval"][0].get<double>(),
+    std::printf("best %s %.4f +- %.4f (95%%: %.4f to %.4f) at",
+                result.best["figure"].get<std::string>().c_str(), best["value"].get<double>(),
+                best["stderr"].get<double>(), best["interval"][0].get<double>(),
                 best["interval"][1].get<double>());
     for (const auto& [name, value] : best["values"].items())
         std::printf(" %s %g", name.c_str(), value.get<double>());
-    std::printf(" (%llu photons); %zu designs cannot be told apart from it; wrote %s and %s\n",
-                (unsigned long long)best["photons"].get<uint64_t>(), result.best["ties"].size(),
+    const size_t ties = result.best["ties"].size();
+    std::printf(" (%llu photons); %zu design%s cannot be told apart from it; wrote %s and %s\n",
+                (unsigned long long)best["photons"].get<uint64_t>(), ties, ties == 1 ? "" : "s",
                 (out / "best.json").c_str(), (out / "best.obj").c_str());
 }
 

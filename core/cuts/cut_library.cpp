@@ -7,8 +7,8 @@
 #include "cuts/fancy_cuts.h"
 #include "cuts/round_brilliant.h"
 #include "cuts/step_cuts.h"
-#include "util/error.h"
 #include "settings/settings_schema.h"
+#include "util/error.h"
 
 namespace facetlight {
 
@@ -216,9 +216,11 @@ std::vector<CutShape> buildLibrary() {
     deep.pavilionAngleDeg = 43.0;
     shallow.pavilionAngleDeg = 38.5;
     shapes.push_back(
-        roundShape("round_brilliant_deep", "round brilliant with a deep pavilion (nail-head)", deep));
-    shapes.push_back(
-        roundShape("round_brilliant_shallow", "round brilliant with a shallow pavilion (fish-eye)", shallow));
+        roundShape("round_brilliant_deep",
+                   "round brilliant with a deep pavilion (P 43, above GIA's Excellent 40.6-41.8)", deep));
+    shapes.push_back(roundShape(
+        "round_brilliant_shallow",
+        "round brilliant with a shallow pavilion (P 38.5, below GIA's Excellent 40.6-41.8)", shallow));
     shapes.push_back(roundShape("old_european", "old European cut: small table, high crown, open culet",
                                 withValues(42, 40, 41.5, 1.5, 55, 55, 12)));
     shapes.push_back(fancyShape("oval", "oval brilliant", FancyOutline::Oval, 1.4, gia));

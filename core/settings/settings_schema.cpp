@@ -3,12 +3,18 @@
 #include <cmath>
 #include <sstream>
 
+#include "util/closest_name.h"
 #include "util/error.h"
 
 namespace facetlight::settings {
 namespace {
 
 using nlohmann::json;
+
+// What was sent, in quotes, at most 40 bytes of it: a 100 KB name would otherwise come back whole.
+std::string quoted(const std::string& text) {
+    return "'" + text.substr(0, 40) + (text.size() > 40 ? "...'" : "'");
+}
 
 std::string numberText(double v) {
     std::ostringstream s;
@@ -72,9 +78,8 @@ std::string readChoice(const json& j, const std::string& path, const std::vector
         if (c == name) return name;
         known += (known.empty() ? "" : ", ") + c;
     }
-    // Quotes at most 40 bytes of what was sent: a 100 KB name came back whole.
-    throw Error(path, path + " must be one of " + known + " (got '" + name.substr(0, 40) +
-                          (name.size() > 40 ? "...'" : "'") + ")");
+    throw Error(
+        path, path + " must be one of " + known + " (got " + quoted(name) + ")" + didYouMean(name, choices));
 }
 
 Vec3 readVec3(const json& j, const std::string& path, bool nonZero) {
@@ -92,7 +97,13 @@ void checkObject(const json& j, const std::string& path, const std::vector<Field
     for (const auto& [key, value] : j.items()) {
         bool known = false;
         for (const FieldInfo& f : fields) known = known || f.key == key;
-        if (!known) throw Error(fieldPath(path, key), "unknown field '" + fieldPath(path, key) + "'");
+        if (known) continue;
+        std::vector<std::string> keys;
+        for (const FieldInfo& f : fields) keys.emplace_back(f.key);
+        const std::optional<std::string> meant = closestName(key, keys);
+        throw Error(fieldPath(path, key),
+                    "unknown field " + quoted(fieldPath(path, key)) +
+                        (meant ? "; did you mean '" + fieldPath(path, *meant) + "'?" : ""));
     }
 }
 

@@ -38,4 +38,15 @@ if grep -q '^Verdict' "$dir/plain.txt"; then
   exit 1
 fi
 grep -q '^Trace: 4000 photons' "$dir/plain.txt"
+# A mistyped flag or subcommand: the facetlight: prefix, the name meant, a non-zero exit.
+if "$tool" trace --mesh round_brilliant --photon 1000 2>"$dir/err" >/dev/null; then
+  echo "accepted --photon" >&2
+  exit 1
+fi
+grep -q "^facetlight: .*--photon; did you mean '--photons'?" "$dir/err"
+if "$tool" trcae 2>"$dir/err" >/dev/null; then
+  echo "accepted trcae" >&2
+  exit 1
+fi
+grep -q "^facetlight: .*did you mean 'trace'?" "$dir/err"
 echo "cli summary: ok"

@@ -15,8 +15,13 @@ test -s "$dir/map/map_brightness.png"
 
 # --maximize alone searches for the default figure, brightness.
 "$tool" sweep round_brilliant --vary pavilion=40,41 --photons 1000 --threads 2 --office-points 1000 \
-  --spot-photons 20000 --maximize --refine-rounds 0 --out "$dir/default" >/dev/null
+  --spot-photons 20000 --maximize --refine-rounds 0 --out "$dir/default" >"$dir/default.txt"
 grep -q '"figure": "brightness"' "$dir/default/best.json"
+grep -Eq '^best brightness [0-9.]+ \+- .*; [0-9]+ designs? cannot be told apart' "$dir/default.txt"
+if grep -q '1 designs' "$dir/default.txt"; then
+  echo "one design is not designs" >&2
+  exit 1
+fi
 
 "$tool" sweep round_brilliant --vary pavilion=38:43:1 --photons 2000 --threads 2 --no-view --maximize weighted_return \
   --constraint total_depth\<=61 --refine-rounds 1 --out "$dir/best" >/dev/null
@@ -50,6 +55,7 @@ fails "say what to vary" round_brilliant
 fails "has no parameter" round_brilliant --vary pavilion=40,41 --set tabel=55
 fails "no quantity 'depth'" round_brilliant --vary pavilion=40,41 --maximize weighted_return --constraint depth\<=62
 fails "unknown figure" round_brilliant --vary pavilion=40,41 --maximize sparkle
+fails "^facetlight: .*--maximise; did you mean '--maximize'?" round_brilliant --vary pavilion=40,41 --maximise brightness
 fails "maximize: the figure coloured_share is measured by a fire trace" round_brilliant --vary pavilion=40,41 \
   --maximize coloured_share
 fails "figure: .*turn it on (--fire" round_brilliant --vary pavilion=40,41 --figure mean_separation_deg

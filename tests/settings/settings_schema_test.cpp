@@ -12,6 +12,7 @@
 #include "render/view_settings.h"
 #include "study/job_request.h"
 #include "sweep/sweep_request.h"
+#include "util/closest_name.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -113,6 +114,32 @@ TEST(SettingsSchema, ABadValueInEachFieldNamesItsDottedPath) {
     EXPECT_EQ(errorField({{"mesh", "m"}, {"tilt_series", json::object()}}), "tilt_series");
     EXPECT_EQ(errorField({{"mesh", "m"}, {"fire_picture", true}, {"render", true}}), "fire_picture");
     EXPECT_EQ(errorField({{"mesh", "m"}, {"fire_picture", json::object()}}), "fire_picture");  // no render
+}
+
+std::string errorText(const json& job) {
+    try {
+        JobRequest::fromJson(job);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(SettingsSchema, AMistypedNameIsToldTheNameItMeant) {
+    const std::vector<std::string> names{"photons", "pavilion", "crown", "threads"};
+    EXPECT_EQ(closestName("pavillion", names), "pavilion");
+    EXPECT_EQ(closestName("PHOTON", names), "photons");
+    EXPECT_EQ(closestName("therads", names), "threads");  // two letters swapped: one edit
+    EXPECT_EQ(closestName("tbale", names), std::nullopt);
+    EXPECT_EQ(closestName("", names), std::nullopt);
+    EXPECT_EQ(closestName(std::string(100000, 'p'), names), std::nullopt);
+    EXPECT_EQ(didYouMean("crwn", names), "; did you mean 'crown'?");
+    EXPECT_EQ(didYouMean("zzzzz", names), "");
+    EXPECT_EQ(errorText({{"mesh", "m"}, {"photon", 1000}}), "unknown field 'photon'; did you mean 'photons'?");
+    EXPECT_EQ(errorText({{"mesh", "m"}, {"light", {{"modle", "hemisphere"}}}}),
+              "unknown field 'light.modle'; did you mean 'light.model'?");
+    const std::string longKey(100000, 'x');
+    EXPECT_LT(errorText({{"mesh", "m"}, {longKey, 1}}).size(), 100u);
 }
 
 TEST(SettingsSchema, IntegerRangesAreExact) {
