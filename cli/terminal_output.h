@@ -3,6 +3,7 @@
 // (header-only: the CLI's build takes its sources from cli/*_command.cpp).
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <string>
 #include <string_view>
 #include <thread>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -32,8 +34,8 @@ inline void printAsetShares(std::ostream& out, const nlohmann::json& aset) {
     out << "ASET shares of the face-up area (" << aset["rays"].get<uint64_t>() << " view rays):\n";
     for (const auto& [name, s] : aset["shares"].items()) {
         char line[96];
-        std::snprintf(line, sizeof line, "  %-8s %6.2f%% +- %.2f\n", name.c_str(), 100 * s["share"].get<double>(),
-                      100 * s["stderr"].get<double>());
+        std::snprintf(line, sizeof line, "  %-8s %6.2f%% +- %.2f\n", name.c_str(),
+                      100 * s["share"].get<double>(), 100 * s["stderr"].get<double>());
         out << line;
     }
 }
@@ -51,20 +53,54 @@ inline void printProportions(const Proportions& p) {
     }
 }
 
-// Redraws the run's phase and a bar of its progress on stderr every 100 ms while it lives, only when stderr
-// is a terminal and `wanted`.
+// The progress line's text: in a staged run (a sweep's rounds) "round 2 of 4: 12 of 25 points", else the
+// phase; then a bar of that step and, once a tenth of it is done, the time it has left at its pace so far.
+inline std::string progressText(const RunControl& control, double stepSeconds) {
+    constexpr int kWidth = 30;
+    std::string label;
+    double share = 0;
+    if (const int stage = control.stage(); stage > 0) {
+        const uint64_t done = control.itemsDone(), total = control.itemsTotal();
+        label = "round " + std::to_string(stage) + " of " + std::to_string(control.stages()) + ": " +
+                std::to_string(done) + " of " + std::to_string(total) + (total == 1 ? " point" : " points");
+        share = total ? double(done) / double(total) : 0.0;
+    } else {
+        label = std::string(runPhaseName(control.phase()));
+        share = control.fraction();
+    }
+    share = std::clamp(share, 0.0, 1.0);
+    const int filled = int(share * kWidth);
+    std::string text = label + " [" + std::string(filled, '#') + std::string(kWidth - filled, ' ') + "] " +
+                       std::to_string(int(100 * share)) + "%";
+    if (share >= 0.1 && share < 1) {
+        const double left = stepSeconds * (1 - share) / share;
+        text += left < 90 ? ", about " + std::to_string(int(left + 0.5)) + " s left"
+                          : ", about " + std::to_string(int(left / 60 + 0.5)) + " min left";
+    }
+    return text;
+}
+
+// Redraws progressText on stderr every 100 ms while it lives, only when stderr is a terminal and `wanted`.
 class ProgressLine {
   public:
     ProgressLine(bool wanted, const RunControl& control) {
         if (!wanted || !isatty(STDERR_FILENO)) return;
         thread_ = std::thread([this, &control] {
+            // A step is a phase, or a round of a staged run: its clock starts when it does.
+            auto stepStart = std::chrono::steady_clock::now();
+            std::pair<RunPhase, int> step{control.phase(), control.stage()};
             while (!finished_.load()) {
-                std::fprintf(stderr, "\r%-60s",
-                             bar(runPhaseName(control.phase()), control.fraction()).c_str());
+                const std::pair<RunPhase, int> now{control.phase(), control.stage()};
+                if (now.second > 0 ? now.second != step.second : now != step)
+                    stepStart = std::chrono::steady_clock::now();
+                step = now;
+                const double seconds =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count();
+                std::fprintf(stderr, "\r%-72s", progressText(control, seconds).c_str());
                 std::fflush(stderr);
                 std::this_thread::sleep_for(std::chrono::milliseconds(100));
             }
-            std::fprintf(stderr, "\r%60s\r", "");
+            std::fprintf(stderr, "\r%72s\r", "");
         });
     }
     ~ProgressLine() {
@@ -73,12 +109,6 @@ class ProgressLine {
     }
     ProgressLine(const ProgressLine&) = delete;
     ProgressLine& operator=(const ProgressLine&) = delete;
-
-    static std::string bar(std::string_view label, double share) {
-        const int width = 40, filled = int(std::clamp(share, 0.0, 1.0) * width);
-        return std::string(label) + " [" + std::string(filled, '#') + std::string(width - filled, ' ') +
-               "] " + std::to_string(int(100 * share)) + "%";
-    }
 
   private:
     std::atomic<bool> finished_{false};

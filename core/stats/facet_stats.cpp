@@ -185,7 +185,7 @@ void writeFacetCsv(std::ostream& out, const FacetStats& s, const Stone& stone) {
     if (s.facets.size() != stone.facets.size())
         throw Error("statistics do not belong to stone '" + stone.name + "'");
     out << "id,name,region,area,normal_x,normal_y,normal_z,entering,reflected,leaving,internal_reflections,"
-           "leaving_share\n";
+           "leaving_share,leaving_share_stderr\n";
     out.precision(9);
     for (size_t i = 0; i < stone.facets.size(); ++i) {
         const Facet& f = stone.facets[i];
@@ -196,7 +196,8 @@ void writeFacetCsv(std::ostream& out, const FacetStats& s, const Stone& stone) {
         name += "\"";
         out << f.id << ',' << name << ',' << regionName(f.region) << ',' << f.area << ',' << f.normal.x << ','
             << f.normal.y << ',' << f.normal.z << ',' << c.entering << ',' << c.reflected << ',' << c.leaving
-            << ',' << c.internalReflections << ',' << share(c.leaving, s.hit) << '\n';
+            << ',' << c.internalReflections << ',' << share(c.leaving, s.hit) << ','
+            << stderrOf(share(c.leaving, s.hit), s.hit) << '\n';
     }
 }
 

@@ -89,7 +89,7 @@ nlohmann::json statsToJson(const FacetStats& stats, const Stone& stone, const nl
 // need not compute them; the document written to disk keeps its format.
 void addShareStandardErrors(nlohmann::json& stats);
 // The facet table: id,name,region,area,normal_x,normal_y,normal_z,entering,reflected,leaving,
-// internal_reflections,leaving_share.
+// internal_reflections,leaving_share,leaving_share_stderr.
 void writeFacetCsv(std::ostream& out, const FacetStats& stats, const Stone& stone);
 
 }  // namespace facetlight

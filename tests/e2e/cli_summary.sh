@@ -19,7 +19,7 @@ fi
 
 "$tool" trace "${small[@]}" --json >"$dir/stdout.json"
 "$tool" trace "${small[@]}" --json - >"$dir/dash.json"
-"$tool" trace "${small[@]}" --json "$dir/file.json" >"$dir/with-file.txt"
+"$tool" trace "${small[@]}" --json "$dir/file.json" --csv "$dir/facets.csv" >"$dir/with-file.txt"
 grep -q '^Verdict: ' "$dir/with-file.txt"
 python3 - "$dir" <<'PY'
 import json, sys
@@ -29,6 +29,16 @@ for doc in docs:
     doc.pop("timing")
 assert docs[0] == docs[1] == docs[2], "the three ways of asking for JSON differ"
 assert docs[0]["viewer"]["score"]["value"] == 100.0, docs[0]["viewer"]["score"]
+# The facet table carries each share's binomial standard error over the photons that hit the stone.
+import csv, math
+rows = list(csv.DictReader(open(f"{d}/facets.csv")))
+facets = {f["id"]: f for f in docs[2]["facets"]}
+hit = docs[2]["totals"]["hit"]
+assert len(rows) == len(facets)
+for r in rows:
+    p = facets[int(r["id"])]["leaving_share"]
+    assert abs(float(r["leaving_share_stderr"]) - math.sqrt(p * (1 - p) / hit)) <= 1e-8, (r, p)
+assert any(float(r["leaving_share_stderr"]) > 0 for r in rows)
 PY
 
 # Without the viewer: the trace's figures alone.

@@ -130,7 +130,7 @@ TEST(Study, WritesThreePicturesOfTheStatedSizes) {
     EXPECT_GT(pngSize(result.file("heatmap.png")).first, 0u);
     EXPECT_GT(pngSize(result.file("angular.png")).first, 0u);
     EXPECT_EQ(result.stats["totals"]["photons"], 20'000);
-    EXPECT_NE(result.file("stats.csv").find("leaving_share"), std::string::npos);
+    EXPECT_NE(result.file("stats.csv").find(",leaving_share,leaving_share_stderr\n"), std::string::npos);
     EXPECT_EQ(control.phase(), RunPhase::Done);
 }
 

@@ -6,6 +6,8 @@
 #include <thread>
 #include <vector>
 
+#include "cli/terminal_output.h"
+
 using namespace facetlight;
 
 TEST(RunControl, StartsQueuedAndCountsEachPhaseFromZero) {
@@ -54,4 +56,22 @@ TEST(RunControl, PhaseNamesRoundTrip) {
     EXPECT_EQ(runPhaseName(RunPhase::PhotonMap), "photon_map");
     EXPECT_FALSE(runPhaseNamed("dancing"));
     EXPECT_FALSE(runPhaseNamed(""));
+}
+
+TEST(RunControl, TheProgressLineNamesTheRoundAndTheTimeLeft) {
+    RunControl control;
+    control.startPhase(RunPhase::Tracing, 1000);
+    control.advance(50);
+    EXPECT_EQ(cli::progressText(control, 3),
+              "tracing [#                             ] 5%");  // too early to tell
+    control.advance(200);
+    EXPECT_EQ(cli::progressText(control, 10),
+              "tracing [#######                       ] 25%, about 30 s left");
+    control.startStage(2, 4, 25);
+    for (int i = 0; i < 20; ++i) control.finishItem();
+    EXPECT_EQ(cli::progressText(control, 720),
+              "round 2 of 4: 20 of 25 points [########################      ] 80%, about 3 min left");
+    control.startStage(3, 4, 1);
+    EXPECT_EQ(cli::progressText(control, 1),
+              "round 3 of 4: 0 of 1 point [                              ] 0%");
 }
