@@ -5,6 +5,7 @@
 #include "cuts/cut_library.h"
 #include "stone/stone_json.h"
 #include "util/error.h"
+#include "util/name_table.h"
 
 namespace facetlight::server {
 namespace {
@@ -117,6 +118,13 @@ ChildMesh MeshCatalog::locate(const std::string& mesh) const {
     }
     if (const auto file = shippedFile(mesh)) return {fs::absolute(*file).string(), ""};
     return {mesh, mesh};
+}
+
+std::string MeshCatalog::designName(const std::string& mesh) const {
+    if (isId(mesh)) {
+        if (const auto record = store_.mesh(mesh)) return record->name;
+    }
+    return spacedName(mesh);
 }
 
 nlohmann::json MeshCatalog::list() const {

@@ -126,15 +126,19 @@ async function fillSmallJob(overrides = {}) {
   if (job.light) await page.selectOption('#f-light-model', job.light);
 }
 
-// Submits the form and returns the new job's id: the newest job in the list, which was not there before.
-async function submitAndGetId() {
-  const before = await page.$$eval('#job-list > li', (lis) => lis.map((li) => li.dataset.id));
+// Submits the form and returns the new job's id: the page goes to the job's own view (issue 30), whose id is
+// in its address; unless `stay`, the test goes back to the home page, where the job is listed.
+async function submitAndGetId({ stay = false } = {}) {
+  const before = await page.evaluate(() => location.hash);
   await page.click('#submit-button');
-  await page.waitForFunction((known) => {
-    const first = document.querySelector('#job-list > li');
-    return first && !known.includes(first.dataset.id);
-  }, before, { timeout: 15_000 });
-  return page.$eval('#job-list > li', (li) => li.dataset.id);
+  await page.waitForFunction((old) => location.hash !== old && /^#\/jobs\/[0-9a-f]{32}$/.test(location.hash), before,
+    { timeout: 15_000 });
+  const id = await page.evaluate(() => location.hash.split('/')[2]);
+  if (!stay) {
+    await page.evaluate(() => { location.hash = '#/'; });
+    await page.waitForSelector(`#job-list li[data-id="${id}"]`);
+  }
+  return id;
 }
 
 async function waitForFinished(id) {
@@ -273,35 +277,48 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     }
   });
 
-  test('submit a small job and watch its progress bar reach 100 %', async () => {
+  test('submit a small job: the page goes to it and shows its progress live until its result', async () => {
     jobIds.brilliantMesh = await uploadThroughPage('tests/data/brilliant.asc');
     assert.match(jobIds.brilliantMesh, /^[0-9a-f]{32}$/);
     await fillSmallJob();
-    const id = await submitAndGetId();
+    const id = await submitAndGetId({ stay: true });
     jobIds.brilliant = id;
-    const item = `#job-list li[data-id="${id}"]`;
-    assert.match(await page.textContent(`${item} .state`), /Queued|Running|Finished/);
-    // Watch the bar: record every value it shows until the job is done; it never goes backwards.
+    assert.equal(await page.isVisible('#view-result'), true, 'the job\'s view is shown');
+    assert.equal(await page.isVisible('#job-form'), false);
+    // Watch the job's own bar, in view at the top of the page: it never goes backwards, then the result replaces it.
+    const bar = '#result-body [role="progressbar"]';
     const seen = [];
     const until = Date.now() + JOB_TIMEOUT_MS;
     let shotRunning = false;
-    for (;;) {
-      const state = await page.getAttribute(item, 'data-state');
-      const now = Number(await page.getAttribute(`${item} [role="progressbar"]`, 'aria-valuenow'));
-      seen.push(now);
-      if (state === 'running' && !shotRunning) {
-        await shot('03-job-running');
-        shotRunning = true;
+    while (Date.now() < until && !(await page.locator('#result-body .figures').count())) {
+      // Read at once: each poll draws the bar anew.
+      const now = await page.evaluate((sel) => {
+        const el = document.querySelector(sel);
+        return el && { value: el.getAttribute('aria-valuenow'), bottom: el.getBoundingClientRect().bottom };
+      }, bar);
+      if (now) {
+        seen.push(Number(now.value));
+        assert.ok(now.bottom > 0 && now.bottom <= DESKTOP.height, `the progress bar is out of view (${now.bottom})`);
+        if (!shotRunning && seen.at(-1) > 0) {
+          await shot('03-job-running');
+          shotRunning = true;
+        }
       }
-      if (state === 'succeeded' || state === 'failed' || state === 'canceled' || Date.now() > until) break;
       await page.waitForTimeout(100);
     }
-    assert.equal(await page.getAttribute(item, 'data-state'), 'succeeded');
-    await waitForFinished(id);
-    assert.equal(seen.at(-1), 100);
+    assert.ok(seen.length > 0, 'the progress was shown before the result');
     assert.ok(seen.every((v, i) => i === 0 || v >= seen[i - 1]), `progress went backwards: ${seen.join(',')}`);
+    await page.waitForSelector('#result-body .figures');
+    assert.match(await page.textContent('#result-title'), /brilliant\.asc/);
+    // The status beside the button follows the job: finished, never a stale "queued".
+    await page.waitForFunction(() => /finished/.test(document.querySelector('#submit-status').textContent));
+    assert.doesNotMatch(await page.textContent('#submit-status'), /queued|running/);
+    await page.evaluate(() => { location.hash = '#/'; });
+    const item = `#job-list li[data-id="${id}"]`;
+    await waitForFinished(id);
     assert.match(await page.textContent(`${item} .progress-text`), /100 %/);
     assert.match(await page.textContent(`${item} .state`), /Finished/);
+    assert.match(await page.textContent(`${item} .job-name`), /^brilliant\.asc$/);
     await shot('04-job-finished');
   });
 
@@ -435,6 +452,30 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await shot('08-compare-phone');
     assert.ok(await noHorizontalOverflow(), 'the comparison fits a phone');
     await page.setViewportSize(DESKTOP);
+  });
+
+  test('jobs go by their names on the list, the result page and the comparison', async () => {
+    // A design the API names from the proportions it changes; the page shows the server's name.
+    const res = await fetch(`${baseUrl}/api/jobs`, {
+      method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ mesh: 'round_brilliant', photons: 2000, threads: 2, render: false, cut: { pavilion: 43.5 } }),
+    });
+    const created = await res.json();
+    assert.equal(created.name, 'round brilliant P 43.5');
+    await page.goto(`${baseUrl}/#/`);
+    await waitForFinished(created.id);
+    assert.equal(await page.textContent(`#job-list li[data-id="${created.id}"] .job-name`), 'round brilliant P 43.5');
+    assert.equal(await page.textContent(`#job-list li[data-id="${jobIds.cube}"] .job-name`), 'cube_quads.obj');
+    await page.click(`#job-list li[data-id="${created.id}"] a[data-action="open"]`);
+    await page.waitForSelector('#result-body .figures');
+    assert.match(await page.textContent('#result-title'), /^round brilliant P 43\.5/);
+    assert.equal(await page.title(), 'round brilliant P 43.5 — facetlight');
+    await page.goto(`${baseUrl}/#/compare/${created.id},${jobIds.brilliant}`);
+    await page.waitForSelector(`.rank-list li[data-id="${created.id}"]`);
+    const names = await page.$$eval('.rank-list .rank-name a', (as) => as.map((a) => a.textContent));
+    assert.deepEqual(names.sort(), ['brilliant.asc', 'round brilliant P 43.5']);
+    assert.match(await page.textContent('.compare-table thead'), /round brilliant P 43\.5/);
+    assert.match(await page.textContent('#compare-choices'), /round brilliant P 43\.5/);
   });
 
   test('cancel a queued job and delete finished ones', async () => {
@@ -607,6 +648,8 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.waitForFunction(() => /^succeeded/.test(document.querySelector('#sweep-progress').textContent), null,
       { timeout: JOB_TIMEOUT_MS });
     assert.match(await page.textContent('#sweep-progress'), /3 of 3 points/);
+    assert.match(await page.textContent('#sweep-view-title'), /^round brilliant, sweep of pavilion: brightness$/);
+    assert.equal(await page.textContent(`#job-list li[data-id="${id}"] .job-name`), 'round brilliant, sweep of pavilion');
     const chartText = await page.textContent('#sweep-chart svg');
     for (const label of ['pavilion (deg)', 'Brightness (%)', '±1σ']) assert.ok(chartText.includes(label), label);
     assert.ok(await page.isVisible('#sweep-chart polygon.sweep-band'), 'the ±1σ band is drawn');

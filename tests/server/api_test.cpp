@@ -199,7 +199,9 @@ TEST_F(ServiceTest, DefaultsAreWhatAJobThatLeavesThemOutGets) {
     client_->Post("/api/jobs/" + status["id"].get<std::string>() + "/cancel");
     json settings = status["settings"];
     EXPECT_EQ(settings["mesh"], "round_brilliant");
+    EXPECT_EQ(settings["name"], "round brilliant");  // the job's default name, not a setting's
     settings.erase("mesh");
+    settings.erase("name");
     EXPECT_EQ(settings, defaults);
     EXPECT_EQ(waitFinished(status["id"])["state"], "canceled");
 }
@@ -642,7 +644,9 @@ TEST_F(ServiceTest, MeshesListAndUpload) {
     EXPECT_EQ(uploaded[0]["mesh"], meshId);
     json job = smallJob();
     job["mesh"] = meshId;
-    EXPECT_EQ(waitFinished(submitOk(job))["state"], "succeeded");
+    const json done = waitFinished(submitOk(job));
+    EXPECT_EQ(done["state"], "succeeded");
+    EXPECT_EQ(done["name"], "cube.obj");  // an upload goes by its file name, not its id
 
     httplib::MultipartFormDataItems form = {{"file", kCubeObj, "../../evil name.obj", "text/plain"}};
     auto multi = client_->Post("/api/meshes", form);
@@ -665,6 +669,29 @@ TEST_F(ServiceTest, MeshesListAndUpload) {
     EXPECT_EQ(rawStatus("POST /api/meshes HTTP/1.1\r\nHost: x\r\nContent-Length: 17000000\r\n\r\nv 0 0 0\n"),
               413);
     expectProblem(submit({{"mesh", "0123456789abcdef0123456789abcdef"}, {"photons", 10}}), 422, "mesh");
+}
+
+// A job that gives no name is named by its design and the proportions it changes, in its status and its
+// stored settings alike; a name it gives is kept.
+TEST_F(ServiceTest, JobsAreNamedByTheirDesign) {
+    const auto nameOf = [&](const json& job) {
+        const json s = status(submitOk(job));
+        EXPECT_EQ(s["name"], s["settings"]["name"]);
+        return s["name"].get<std::string>();
+    };
+    json job = smallJob();
+    job["photons"] = 1000;
+    EXPECT_EQ(nameOf(job), "round brilliant");
+    job["mesh"] = "round_brilliant_deep";
+    EXPECT_EQ(nameOf(job), "round brilliant deep");
+    job["mesh"] = "round_brilliant";
+    job["cut"] = {{"pavilion", 43.5}, {"crown", 33}, {"lower_half", 77}};
+    EXPECT_EQ(nameOf(job), "round brilliant C 33 P 43.5 lower half 77");
+    job["name"] = "my deep stone";
+    EXPECT_EQ(nameOf(job), "my deep stone");
+    json sweep = sweepJob(2, 1000);
+    sweep["sweep"]["set"] = {{"table", 55}};
+    EXPECT_EQ(nameOf(sweep), "round brilliant T 55, sweep of pavilion");
 }
 
 TEST_F(ServiceTest, QueuedAndInterruptedJobsSurviveARestart) {

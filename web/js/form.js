@@ -4,7 +4,7 @@ import { api } from './api.js';
 import { $, clearFieldError, fieldError, showFieldError } from './dom.js';
 import { shortId } from './format.js';
 import { jobsView, refreshJobs } from './jobs.js';
-import { displayMeshName } from './meshes.js';
+import { jobName } from './meshes.js';
 
 function showFormError(message) {
   const formError = $('#form-error');
@@ -126,9 +126,12 @@ export async function submitJob(event) {
     const created = await api('/api/jobs', {
       method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'application/json' }, body: JSON.stringify(job),
     });
-    status.textContent = `Job ${shortId(created.id)} queued: ${displayMeshName(created.mesh)}.`;
+    status.textContent = `Job ${shortId(created.id)} queued: ${jobName(created)}.`;
     jobsView.offset = 0;
+    jobsView.submitted = created.id;
     await refreshJobs();
+    // The job's own view shows its progress live, then its result.
+    location.hash = `#/jobs/${created.id}`;
   } catch (e) {
     status.textContent = '';
     reportError(e);

@@ -11,9 +11,15 @@ function meshLabel(m) {
   return m.error ? `${name} (cannot be read)` : `${name} — ${m.facet_count} facets`;
 }
 
-export function displayMeshName(mesh) {
+function displayMeshName(mesh) {
   const m = meshes.get(mesh);
   return m ? m.file_name || m.name || mesh : mesh;
+}
+
+// A job's name as the server gives it ("round brilliant P 43.5"); jobs stored before names were given show
+// their mesh's name instead of its id.
+export function jobName(job) {
+  return job.name && job.name !== job.mesh ? job.name : displayMeshName(job.mesh);
 }
 
 export async function loadMeshes(select) {

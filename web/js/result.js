@@ -5,7 +5,7 @@ import { $, h } from './dom.js';
 import { decimalsFor, fmtDuration, fmtInt, fmtNumber, fmtPct, fmtPctErr, fmtTime, humanize, shortId } from './format.js';
 import { fireSection } from './fire.js';
 import { linkFacet, pictures } from './heatmap.js';
-import { displayMeshName } from './meshes.js';
+import { jobName } from './meshes.js';
 import { jobSummary, lightText, progressBar, stateBadge } from './progress.js';
 import { verdictCard } from './verdict.js';
 
@@ -24,9 +24,10 @@ export async function showResult(id) {
     return;
   }
   if (resultView.id !== id) return;
+  document.title = `${jobName(job)} — facetlight`;
   if (job.state !== 'succeeded') {
     body.replaceChildren(
-      h('h1', { id: 'result-title' }, `${displayMeshName(job.mesh)} `, stateBadge(job.state)),
+      h('h1', { id: 'result-title' }, `${jobName(job)} `, stateBadge(job.state)),
       h('p', { class: 'lede' }, jobSummary(job.settings)),
       h('div', { class: 'card' }, progressBar(job, `Progress of job ${shortId(job.id)}`),
         job.error ? h('p', { class: 'job-error' }, h('strong', {}, 'Error: '), job.error) : null));
@@ -190,7 +191,7 @@ function viewerSection(job, stats) {
 }
 
 function resultPage(job, stats) {
-  const name = displayMeshName(job.mesh);
+  const name = jobName(job);
   const totals = stats.totals || {};
   const timing = stats.timing || {};
   const base = jobUrl(job.id);

@@ -6,6 +6,7 @@ import { $, clearFieldError, h, showFieldError, svg } from './dom.js';
 import { FIRE_FIGURES, fmtFire } from './fire.js';
 import { fmtNumber, humanize, shortId } from './format.js';
 import { refreshJobs } from './jobs.js';
+import { jobName } from './meshes.js';
 
 // `compared`: the jobs of designs opened from sweeps, for the compare view.
 export const sweepView = { id: '', timer: 0, job: null, shape: '', compared: [] };
@@ -140,7 +141,8 @@ async function pollSweep(id) {
   sweepView.job = job;
   sweepView.shape = points.shape;
   const figure = job.settings.sweep.figure;
-  $('#sweep-view-title').textContent = `Sweep of the ${humanize(points.shape)}: ${figureInfo(figure).label.toLowerCase()}`;
+  $('#sweep-view-title').textContent = `${jobName(job)}: ${figureInfo(figure).label.toLowerCase()}`;
+  document.title = `${jobName(job)} — facetlight`;
   const p = job.progress;
   const round = p.steps > 1 ? ` · round ${p.step} of ${p.steps}` : '';
   $('#sweep-progress').textContent = `${job.state} · ${points.points.length} of ${points.points_total} points${round} · ${Math.round(p.overall * 100)} %`
