@@ -28,6 +28,19 @@ std::string cleanFileName(std::string_view fileName) {
     return out.empty() ? "upload" : out;
 }
 
+// A cut library shape's parameters, which a job sets in its `cut` object: the page's form is made from them.
+nlohmann::json shapeParameters(const CutShape& shape) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const CutParameter& p : shape.parameters) {
+        nlohmann::json j = {
+            {"name", p.name}, {"unit", p.unit}, {"help", p.help},      {"default", p.defaultValue},
+            {"min", p.min},   {"max", p.max},   {"integer", p.integer}};
+        if (!p.choices.empty()) j["choices"] = p.choices;
+        out.push_back(std::move(j));
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string_view meshFormatName(MeshFormat format) {
@@ -145,6 +158,11 @@ nlohmann::json MeshCatalog::list() const {
             try {
                 nlohmann::json j = stoneSummaryJson(*build(name));
                 j["mesh"] = name;
+                for (const auto& shape : cutShapes()) {
+                    if (shape.name != name) continue;
+                    j["description"] = shape.description;
+                    j["parameters"] = shapeParameters(shape);
+                }
                 shipped.push_back(std::move(j));
             } catch (const Error& e) {
                 shipped.push_back({{"mesh", name}, {"error", e.what()}});

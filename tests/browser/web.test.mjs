@@ -478,6 +478,46 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.match(await page.textContent('#compare-choices'), /round brilliant P 43\.5/);
   });
 
+  test('the study form edits the chosen shape\'s proportions and sends them as the job\'s cut', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    // The material menu shows its options whole.
+    const cut = await page.$eval('#f-material', (sel) => {
+      const ctx = document.createElement('canvas').getContext('2d');
+      ctx.font = getComputedStyle(sel).font;
+      const widest = Math.max(...[...sel.options].map((o) => ctx.measureText(o.text).width));
+      return { widest, room: sel.clientWidth - 40 };
+    });
+    assert.ok(cut.widest <= cut.room, `the material menu cuts its options off: ${JSON.stringify(cut)}`);
+    // An upload has no parameters; a shape of the cut library shows the ones GET /api/meshes lists.
+    await page.selectOption('#f-mesh', jobIds.brilliantMesh);
+    assert.equal(await page.isHidden('#cut-fields'), true);
+    await page.selectOption('#f-mesh', 'round_brilliant');
+    const listed = (await (await fetch(`${baseUrl}/api/meshes`)).json()).shipped.find((m) => m.mesh === 'round_brilliant');
+    const pavilion = listed.parameters.find((p) => p.name === 'pavilion');
+    assert.equal(await page.inputValue('#f-cut-pavilion'), String(pavilion.default));
+    assert.equal(await page.getAttribute('#f-cut-pavilion', 'min'), String(pavilion.min));
+    assert.equal(await page.getAttribute('#f-cut-pavilion', 'max'), String(pavilion.max));
+    assert.equal(await page.locator('#cut-params .field').count(), listed.parameters.length);
+    assert.match(await page.textContent('label[for="f-cut-pavilion"]'), /pavilion \(°\)/);
+    assert.equal(await page.locator('#f-cut-halves option').count(), 2, 'a choice is a menu');
+    // A value outside the shape's range is the server's to refuse, next to the field.
+    await fillSmallJob({ photons: '2000' });
+    await page.setChecked('#f-render', false);
+    await page.fill('#f-cut-pavilion', '89');
+    await page.click('#submit-button');
+    const error = await page.waitForSelector('#err-cut:not([hidden])');
+    assert.match(await error.textContent(), /pavilion/);
+    await page.fill('#f-cut-pavilion', '43.5');
+    const id = await submitAndGetId();
+    const job = await (await fetch(`${baseUrl}/api/jobs/${id}`)).json();
+    assert.deepEqual(job.settings.cut, { pavilion: 43.5 }, 'only the changed parameter is sent');
+    assert.equal(job.name, 'round brilliant P 43.5');
+    await page.fill('#f-cut-pavilion', String(pavilion.default));
+    await page.setChecked('#f-render', true);
+    await shot('09a-form-proportions');
+  });
+
   test('cancel a queued job and delete finished ones', async () => {
     await page.goto(`${baseUrl}/#/`);
     await page.waitForSelector('#job-list li');

@@ -238,7 +238,8 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     std::ifstream storedFile(dir_ / "data" / "jobs" / id / "stats.json");
     const std::string stored{std::istreambuf_iterator<char>(storedFile), {}};
     EXPECT_NE(stored.find("\"leaving_share\""), std::string::npos);
-    EXPECT_EQ(stored.find("\"share_stderr\""), std::string::npos);  // (totals' trapped_share_stderr is the CLI's)
+    EXPECT_EQ(stored.find("\"share_stderr\""),
+              std::string::npos);  // (totals' trapped_share_stderr is the CLI's)
     EXPECT_EQ(stored.find("leaving_share_stderr"), std::string::npos);
     auto csv = client_->Get("/api/jobs/" + id + "/stats.csv");
     ASSERT_TRUE(csv && csv->status == 200);
@@ -629,8 +630,17 @@ TEST_F(ServiceTest, MeshesListAndUpload) {
     ASSERT_TRUE(list && list->status == 200);
     const json meshes = json::parse(list->body);
     bool found = false;
-    for (const auto& m : meshes["shipped"])
-        found |= m["mesh"] == "round_brilliant" && m["facet_count"].get<int>() > 50;
+    for (const auto& m : meshes["shipped"]) {
+        if (m["mesh"] != "round_brilliant") continue;
+        found = m["facet_count"].get<int>() > 50;
+        // The cut library's parameters, which the page's form edits: each with its default and range.
+        const json pavilion = m["parameters"][2];
+        EXPECT_EQ(pavilion["name"], "pavilion");
+        EXPECT_EQ(pavilion["unit"], "deg");
+        EXPECT_LT(pavilion["min"].get<double>(), pavilion["default"].get<double>());
+        EXPECT_LT(pavilion["default"].get<double>(), pavilion["max"].get<double>());
+        EXPECT_EQ(m["parameters"].back()["choices"], json({"trade", "faceter"}));
+    }
     EXPECT_TRUE(found) << meshes.dump();
 
     auto up = client_->Post("/api/meshes?name=cube.obj", kCubeObj, "application/octet-stream");

@@ -1,6 +1,7 @@
 // The shapes a job may use: shipped and uploaded meshes, their descriptions and uploads. loadMeshes returns the
 // shipped ones.
 import { api } from './api.js';
+import { showCutFields } from './cut_fields.js';
 import { $, clearFieldError, h, showFieldError } from './dom.js';
 import { fmtNumber } from './format.js';
 
@@ -54,6 +55,7 @@ export async function loadMeshes(select) {
 
 export function describeMesh() {
   const m = meshes.get($('#f-mesh').value);
+  showCutFields(m);
   const hint = $('#hint-mesh');
   if (!m || m.error) {
     hint.textContent = m ? m.error : 'Shipped shapes and your uploads, with their facet counts.';
