@@ -734,7 +734,54 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const tip = await page.textContent('#sweep-tooltip');
     assert.match(tip, /^pavilion 40, crown 33: /);
     assert.match(tip, /mean red–blue separation \d+\.\d+° ± \d/);
+    // One perceptual palette, viridis as the CLI's pictures: dark purple at the low end of the legend,
+    // which is labelled at several round values.
+    const low = await page.getAttribute('#sweep-chart rect.legend-step >> nth=0', 'fill');
+    const [r, g, b] = low.match(/\d+/g).map(Number);
+    assert.ok(r < 90 && g < 20 && b > 60, `the legend starts at ${low}, not viridis' dark purple`);
+    assert.ok(await page.locator('#sweep-chart .legend-label').count() >= 3, 'the legend is labelled at several steps');
     await shot('13-sweep-map');
+  });
+
+  test('a search: its progress names the round and never goes back, the star sits on the refined best', async () => {
+    // Submitted through the API with a short search and no viewer, so that its rounds pass in seconds.
+    const res = await fetch(`${baseUrl}/api/jobs`, {
+      method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ mesh: 'round_brilliant', photons: 1000, threads: 2, viewer: { enabled: false },
+        sweep: { axes: [{ name: 'pavilion', from: 39, to: 41, step: 1 }], figure: 'weighted_return',
+          maximize: 'weighted_return', refine_rounds: 2 } }),
+    });
+    const { id } = await res.json();
+    await page.goto(`${baseUrl}/#/sweeps/${id}`);
+    assert.match(await page.textContent('#sweep-tooltip'), /^Hover a point/, 'the last sweep\'s point is not shown');
+    const api = [];
+    const shown = [];
+    for (;;) {
+      const job = await (await fetch(`${baseUrl}/api/jobs/${id}`)).json();
+      api.push(job.progress.overall);
+      const text = await page.textContent('#sweep-progress');
+      if (text) shown.push(text);
+      if (!['queued', 'running'].includes(job.state)) break;
+      await page.waitForTimeout(50);
+    }
+    const overall = (list) => list.map((t) => Number((t.match(/(\d+) %$/) || [])[1])).filter(Number.isFinite);
+    assert.ok(api.every((v, i) => i === 0 || v >= api[i - 1]), `the server's progress went back: ${api.join(',')}`);
+    assert.ok(overall(shown).every((v, i, a) => i === 0 || v >= a[i - 1]), `the page's progress went back: ${shown.join(' | ')}`);
+    assert.ok(shown.filter((t) => /^running/.test(t)).every((t) => /round [1-3] of 3: \d+ of \d+ points/.test(t)), shown.join(' | '));
+    await page.waitForSelector('.sweep-best-card');
+    assert.match(await page.textContent('#sweep-progress'), /^succeeded · round 3 of 3: 3 of 3 points · 100 %$/);
+    const best = await (await fetch(`${baseUrl}/api/jobs/${id}/best.json`)).json();
+    const card = await page.textContent('.sweep-best-card');
+    assert.ok(card.includes(`${best.best.command} --out best.obj`), card);
+    assert.match(card, /95 % interval \d+(\.\d+)? % to \d+(\.\d+)? %/);
+    assert.match(card, new RegExp(`pavilion ${best.best.values.pavilion.toLocaleString('en-US', { maximumFractionDigits: 4 }).replace('.', '\\.')}°`));
+    // The star sits at the refined pavilion, between the grid's points where it lies.
+    const xs = await page.$$eval('#sweep-chart circle.sweep-point', (cs) => cs.map((c) => Number(c.getAttribute('cx'))));
+    const starX = Number(await page.getAttribute('#sweep-chart text.sweep-best', 'x'));
+    const expected = xs[0] + ((best.best.values.pavilion - 39) / 2) * (xs[2] - xs[0]);
+    assert.ok(Math.abs(starX - expected) < 0.5, `star at ${starX}, the refined best at ${expected}`);
+    assert.ok(await page.locator('#sweep-chart line.sweep-interval').count() === 1, 'the interval is drawn');
+    await shot('14-sweep-search');
   });
 
   test('the home page fits a phone', async () => {
