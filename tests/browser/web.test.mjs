@@ -391,6 +391,33 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.setViewportSize(DESKTOP);
   });
 
+  test('a result prints as a clean report: verdict, figures, pictures and the stone, without the page\'s controls', async () => {
+    await page.goto(`${baseUrl}/#/jobs/${jobIds.brilliant}`);
+    await page.waitForSelector('#result-body .figures');
+    await picturesLoaded('#result-body .pictures');
+    await page.emulateMedia({ media: 'print' });
+    try {
+      for (const sel of ['.site-header', '.site-footer', '.back-link', '.downloads', '#job-form', '#sweep-form']) {
+        assert.equal(await page.locator(sel).first().isVisible(), false, `${sel} is printed`);
+      }
+      const buttons = await page.$$eval('#main button:not(.sort)', (bs) => bs.filter((b) => b.offsetParent !== null).length);
+      assert.equal(buttons, 0, 'no button is printed');
+      for (const sel of ['[data-section="verdict"]', '.figures', '.pictures img >> nth=0', '#stone-title', 'table.regions', 'table.facets th']) {
+        assert.equal(await page.locator(sel).first().isVisible(), true, `${sel} is missing from the print`);
+      }
+      // The facet table's column titles print as text, not as buttons.
+      assert.equal(await page.$eval('table.facets button.sort', (b) => getComputedStyle(b).borderTopStyle), 'none');
+      const pdf = await page.pdf({ format: 'A4', printBackground: true });
+      fs.mkdirSync(screenshotDir, { recursive: true });
+      fs.writeFileSync(path.join(screenshotDir, '05b-result-print.pdf'), pdf);
+      assert.equal(pdf.subarray(0, 5).toString(), '%PDF-');
+      assert.ok(pdf.length > 20_000, `a report with pictures, not ${pdf.length} bytes`);
+    } finally {
+      await page.emulateMedia({ media: 'screen' });
+    }
+    assert.equal(await page.locator('.site-header').isVisible(), true);
+  });
+
   test('compare two finished jobs, ranked by crown return, with their pictures', async () => {
     await page.goto(`${baseUrl}/#/`);
     await page.waitForSelector(`#job-list li[data-id="${jobIds.brilliant}"]`);
