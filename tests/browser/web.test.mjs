@@ -163,6 +163,17 @@ async function picturesLoaded(scope) {
   return page.$$eval(`${scope} img`, (imgs) => imgs.map((img) => ({ src: img.getAttribute('src'), width: img.naturalWidth })));
 }
 
+// The sweep chart's texts that reach past its edges (a legend cut off).
+async function chartTextsCutOff() {
+  return page.$$eval('#sweep-chart svg text', (texts) => {
+    const chart = texts[0].ownerSVGElement.getBoundingClientRect();
+    return texts.filter((t) => {
+      const b = t.getBoundingClientRect();
+      return b.left < chart.left - 0.5 || b.right > chart.right + 0.5;
+    }).map((t) => t.textContent);
+  });
+}
+
 async function noHorizontalOverflow() {
   return page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth + 1);
 }
@@ -720,6 +731,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const chartText = await page.textContent('#sweep-chart svg');
     for (const label of ['pavilion (deg)', 'Brightness (%)', '±1σ']) assert.ok(chartText.includes(label), label);
     assert.ok(await page.isVisible('#sweep-chart polygon.sweep-band'), 'the ±1σ band is drawn');
+    assert.deepEqual(await chartTextsCutOff(), []);
     assert.ok(await page.isVisible('#sweep-links a[href$="/sweep.csv"]'));
     await shot('12-sweep-chart');
     await page.hover('#sweep-chart circle.sweep-point >> nth=1');
@@ -808,6 +820,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const expected = xs[0] + ((best.best.values.pavilion - 39) / 2) * (xs[2] - xs[0]);
     assert.ok(Math.abs(starX - expected) < 0.5, `star at ${starX}, the refined best at ${expected}`);
     assert.ok(await page.locator('#sweep-chart line.sweep-interval').count() === 1, 'the interval is drawn');
+    assert.deepEqual(await chartTextsCutOff(), [], 'the legend names cosine-weighted return whole');
     await shot('14-sweep-search');
   });
 

@@ -15,9 +15,10 @@ import { jobName } from './meshes.js';
 export const sweepView = { id: '', timer: 0, job: null, shape: '', compared: [], best: null };
 
 const TOOLTIP_HINT = 'Hover a point to see its figures; click it to trace that design as a job and compare it.';
-const W = 640;
+const W = 680;
 const H = 400;
-const M = { left: 70, right: 170, top: 20, bottom: 56 };
+// The right margin holds the legend: room for the longest figure's name ("cosine-weighted return").
+const M = { left: 70, right: 210, top: 20, bottom: 56 };
 
 // The viewer's figures, the statistics' totals, then the fire figures (points of a sweep that traces fire).
 const SWEEP_FIGURES = [...VIEWER_FIGURES, ...FIGURES, ...FIRE_FIGURES];
