@@ -746,6 +746,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const job = await (await fetch(`${baseUrl}/api/jobs/${design}`)).json();
     assert.equal(job.state, 'succeeded');
     assert.equal(job.settings.cut.pavilion, 40);
+    assert.equal(job.name, 'round brilliant P 40', 'a point opened from a sweep is named by its design');
     // The design's trace is the sweep's point, bit for bit.
     const stats = await (await fetch(`${baseUrl}/api/jobs/${design}/stats`)).json();
     const sweep = await (await fetch(`${baseUrl}/api/jobs/${id}/sweep.json`)).json();
@@ -821,6 +822,13 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.ok(Math.abs(starX - expected) < 0.5, `star at ${starX}, the refined best at ${expected}`);
     assert.ok(await page.locator('#sweep-chart line.sweep-interval').count() === 1, 'the interval is drawn');
     assert.deepEqual(await chartTextsCutOff(), [], 'the legend names cosine-weighted return whole');
+    // "Open as a job" traces the best design on its own, named by its proportions.
+    await page.click('.sweep-best-card button[data-action="open-best"]');
+    await page.waitForFunction(() => /^#\/jobs\/[0-9a-f]{32}$/.test(location.hash));
+    const design = await (await fetch(`${baseUrl}/api/jobs/${await page.evaluate(() => location.hash.split('/')[2])}`)).json();
+    assert.equal(design.settings.cut.pavilion, best.best.values.pavilion);
+    assert.equal(design.settings.photons, best.best.photons);
+    assert.match(design.name, /^round brilliant P \d/);
     await shot('14-sweep-search');
   });
 

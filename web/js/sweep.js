@@ -193,7 +193,24 @@ function bestCard(best, axes) {
       ` (${fmtNumber(d.photons, 0)} photons${best.constraints.length ? `; ${best.constraints.join(', ')}` : ''})`),
     h('p', { class: 'hint' }, ties ? `${ties} other design${ties === 1 ? '' : 's'} of the last round cannot be told apart from it at this photon count.`
       : 'No other design of the last round comes within its noise.'),
-    h('p', {}, 'Cut it: ', h('code', { class: 'best-command' }, `${d.command} --out best.obj`)));
+    h('p', {}, 'Cut it: ', h('code', { class: 'best-command' }, `${d.command} --out best.obj`)),
+    h('button', { type: 'button', class: 'button secondary small', 'data-action': 'open-best', onclick: () => openBest(d) },
+      'Open as a job'));
+}
+
+// Traces the best design as a job of its own, at the search's last photon count, and opens it.
+async function openBest(d) {
+  const { sweep, name, ...settings } = sweepView.job.settings;
+  try {
+    const created = await api('/api/jobs', {
+      method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'application/json' },
+      body: JSON.stringify({ ...settings, mesh: sweepView.shape, render: false, photons: d.photons, cut: d.cut }),
+    });
+    refreshJobs();
+    location.hash = `#/jobs/${created.id}`;
+  } catch (e) {
+    $('#sweep-best').append(h('p', { class: 'form-error', role: 'alert' }, e.message));
+  }
 }
 
 function label(axis) { return axis.unit ? `${humanize(axis.name)} (${axis.unit})` : humanize(axis.name); }
@@ -238,9 +255,10 @@ function pointText(pt, axes, figures) {
   return `${values}: ${figs.join(' · ')}${Number.isFinite(depth) ? ` · total depth ${fmtNumber(depth, 1)} %` : ''}`;
 }
 
-// The design of a point as a job of its own: the sweep's settings, its shape with the point's parameters.
+// The design of a point as a job of its own: the sweep's settings, its shape with the point's parameters; the
+// server names it by them (the sweep's name is not the design's).
 function designJob(job, shape, point) {
-  const { sweep, ...settings } = job.settings;
+  const { sweep, name, ...settings } = job.settings;
   const design = { ...settings, mesh: shape, render: false, light: { ...settings.light }, cut: { ...sweep.set } };
   for (const [name, value] of Object.entries(point.values)) {
     if (name === 'tilt') design.light.tilt_deg = value;
