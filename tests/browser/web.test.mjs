@@ -728,6 +728,8 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.match(await page.textContent('#sweep-progress'), /3 of 3 points/);
     assert.match(await page.textContent('#sweep-view-title'), /^round brilliant, sweep of pavilion: brightness$/);
     assert.equal(await page.textContent(`#job-list li[data-id="${id}"] .job-name`), 'round brilliant, sweep of pavilion');
+    // The status beside the sweep form's button follows the sweep too.
+    await page.waitForFunction(() => /finished: round brilliant, sweep of pavilion\.$/.test(document.querySelector('#sweep-status').textContent));
     const chartText = await page.textContent('#sweep-chart svg');
     for (const label of ['pavilion (deg)', 'Brightness (%)', '±1σ']) assert.ok(chartText.includes(label), label);
     assert.ok(await page.isVisible('#sweep-chart polygon.sweep-band'), 'the ±1σ band is drawn');

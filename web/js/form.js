@@ -132,7 +132,7 @@ export async function submitJob(event) {
     });
     status.textContent = `Job ${shortId(created.id)} queued: ${jobName(created)}.`;
     jobsView.offset = 0;
-    jobsView.submitted = created.id;
+    jobsView.submitted.set('#submit-status', created.id);
     await refreshJobs();
     // The job's own view shows its progress live, then its result.
     location.hash = `#/jobs/${created.id}`;

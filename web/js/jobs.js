@@ -6,8 +6,8 @@ import { fmtTime, shortId } from './format.js';
 import { jobName } from './meshes.js';
 import { jobSummary, progressBar, stateBadge } from './progress.js';
 
-// `submitted`: the job last sent from the form, whose state the status beside its button follows.
-export const jobsView = { offset: 0, total: 0, jobs: [], selected: new Set(), timer: 0, pendingDelete: new Map(), submitted: '' };
+// `submitted`: the job last sent from each form, by the status beside the form's button, which follows its state.
+export const jobsView = { offset: 0, total: 0, jobs: [], selected: new Set(), timer: 0, pendingDelete: new Map(), submitted: new Map() };
 
 function anyActive(jobs) { return jobs.some((j) => j.state === 'queued' || j.state === 'running'); }
 
@@ -123,12 +123,14 @@ function renderJobs() {
   updateCompareButton();
 }
 
-// The status beside the form's button follows the job it sent, so it never says "queued" once the job ran.
+// The status beside a form's button follows the job it sent, so it never says "queued" once the job ran.
 function updateSubmitStatus() {
-  const job = jobsView.jobs.find((j) => j.id === jobsView.submitted);
-  if (!job) return;
-  const state = (STATES[job.state] || { label: job.state }).label.toLowerCase();
-  $('#submit-status').textContent = `Job ${shortId(job.id)} ${state}: ${jobName(job)}.`;
+  for (const [status, id] of jobsView.submitted) {
+    const job = jobsView.jobs.find((j) => j.id === id);
+    if (!job) continue;
+    const state = (STATES[job.state] || { label: job.state }).label.toLowerCase();
+    $(status).textContent = `Job ${shortId(job.id)} ${state}: ${jobName(job)}.`;
+  }
 }
 
 function updateCompareButton() {

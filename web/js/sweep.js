@@ -7,7 +7,7 @@ import { $, clearFieldError, h, showFieldError, svg } from './dom.js';
 import { FIRE_FIGURES, fmtFire } from './fire.js';
 import { fmtNumber, humanize, shortId } from './format.js';
 import { viridis } from './heatmap.js';
-import { refreshJobs } from './jobs.js';
+import { jobsView, refreshJobs } from './jobs.js';
 import { jobName } from './meshes.js';
 
 // `compared`: the jobs of designs opened from sweeps, for the compare view.
@@ -111,6 +111,7 @@ async function submitSweep(ev) {
       method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'application/json' }, body: JSON.stringify(job),
     });
     status.textContent = `Sweep ${shortId(created.id)} queued.`;
+    jobsView.submitted.set('#sweep-status', created.id);
     refreshJobs();
     location.hash = `#/sweeps/${created.id}`;
   } catch (e) {
