@@ -508,6 +508,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.waitForSelector('#result-body .figures');
     assert.match(await page.textContent('#result-title'), /^round brilliant P 43\.5/);
     assert.equal(await page.title(), 'round brilliant P 43.5 — facetlight');
+    assert.equal(await page.textContent('.cut-values'), 'round brilliant cut with pavilion 43.5');
     await page.goto(`${baseUrl}/#/compare/${created.id},${jobIds.brilliant}`);
     await page.waitForSelector(`.rank-list li[data-id="${created.id}"]`);
     const names = await page.$$eval('.rank-list .rank-name a', (as) => as.map((a) => a.textContent));

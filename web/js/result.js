@@ -138,6 +138,14 @@ function proportionList(mesh) {
   return h('dl', { class: 'kv' }, rows.map(([k, v, unit]) => [h('dt', {}, k), h('dd', {}, unit ? `${fmtNumber(v, 2)}${unit === '%' ? ' %' : unit}` : String(v))]));
 }
 
+// The cut library parameters the job changed from its shape's (the design's own proportions follow).
+function cutList(job) {
+  const cut = Object.entries((job.settings && job.settings.cut) || {});
+  if (!cut.length) return null;
+  return h('p', { class: 'cut-values' }, `${humanize(job.mesh)} cut with `,
+    cut.map(([k, v]) => `${humanize(k)} ${fmtNumber(v, 4)}`).join(', '));
+}
+
 // The ASET classes in the order of aset.png's legend (docs/physics.md, "ASET view").
 export const ASET_CLASSES = [
   ['head', 'Head cone (blue)'], ['bright', 'Bright light (red)'], ['low', 'Low light (green)'],
@@ -227,6 +235,6 @@ function resultPage(job, stats) {
           h('dt', {}, 'Time'), h('dd', {}, `${fmtDuration(timing.seconds)} on ${timing.threads} thread${timing.threads === 1 ? '' : 's'}`),
           h('dt', {}, 'Speed'), h('dd', {}, `${fmtInt(timing.photons_per_second)} photons/s`))),
       h('section', { class: 'card', 'aria-labelledby': 'stone-title' },
-        h('h2', { id: 'stone-title' }, 'The stone'), proportionList(stats.mesh))),
+        h('h2', { id: 'stone-title' }, 'The stone'), cutList(job), proportionList(stats.mesh))),
     h('section', { class: 'card', 'aria-labelledby': 'facet-caption' }, facetTable(stats.facets || [])));
 }
