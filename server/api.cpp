@@ -124,6 +124,8 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     } catch (const Error& e) {
         return problem(res, 422, e.what(), "mesh");
     }
+    // Named here, where an upload's file name is known, so that the API and the page show one name.
+    if (spec.name.empty()) spec.name = defaultJobName(spec, catalog_.designName(spec.mesh));
     JobRecord job;
     job.id = newId();
     job.spec = std::make_shared<const JobRequest>(std::move(spec));  // the one parse of this job

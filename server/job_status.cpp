@@ -50,6 +50,7 @@ json jobStatusJson(const JobRecord& job, const JobQueue& queue) {
     json doc = {{"id", job.id},
                 {"state", jobStateName(job.state)},
                 {"mesh", spec.mesh},
+                {"name", spec.name.empty() ? spec.mesh : spec.name},
                 {"settings", job.request},
                 {"created_at", job.createdAt},
                 {"started_at", nullIfEmpty(job.startedAt)},

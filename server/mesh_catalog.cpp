@@ -5,6 +5,7 @@
 #include "cuts/cut_library.h"
 #include "stone/stone_json.h"
 #include "util/error.h"
+#include "util/name_table.h"
 
 namespace facetlight::server {
 namespace {
@@ -25,6 +26,19 @@ std::string cleanFileName(std::string_view fileName) {
     }
     while (!out.empty() && out.front() == '.') out.erase(out.begin());
     return out.empty() ? "upload" : out;
+}
+
+// A cut library shape's parameters, which a job sets in its `cut` object: the page's form is made from them.
+nlohmann::json shapeParameters(const CutShape& shape) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const CutParameter& p : shape.parameters) {
+        nlohmann::json j = {
+            {"name", p.name}, {"unit", p.unit}, {"help", p.help},      {"default", p.defaultValue},
+            {"min", p.min},   {"max", p.max},   {"integer", p.integer}};
+        if (!p.choices.empty()) j["choices"] = p.choices;
+        out.push_back(std::move(j));
+    }
+    return out;
 }
 
 }  // namespace
@@ -119,6 +133,13 @@ ChildMesh MeshCatalog::locate(const std::string& mesh) const {
     return {mesh, mesh};
 }
 
+std::string MeshCatalog::designName(const std::string& mesh) const {
+    if (isId(mesh)) {
+        if (const auto record = store_.mesh(mesh)) return record->name;
+    }
+    return spacedName(mesh);
+}
+
 nlohmann::json MeshCatalog::list() const {
     std::lock_guard lock(mutex_);
     if (!shippedSummaries_) {
@@ -137,6 +158,11 @@ nlohmann::json MeshCatalog::list() const {
             try {
                 nlohmann::json j = stoneSummaryJson(*build(name));
                 j["mesh"] = name;
+                for (const auto& shape : cutShapes()) {
+                    if (shape.name != name) continue;
+                    j["description"] = shape.description;
+                    j["parameters"] = shapeParameters(shape);
+                }
                 shipped.push_back(std::move(j));
             } catch (const Error& e) {
                 shipped.push_back({{"mesh", name}, {"error", e.what()}});

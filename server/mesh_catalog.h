@@ -30,6 +30,8 @@ class MeshCatalog {
     std::shared_ptr<const Stone> resolve(const std::string& mesh) const;
     // What a child process (a launcher's job) reads the same stone from: a file path or a cut shape name.
     ChildMesh locate(const std::string& mesh) const;
+    // What people call the design `mesh` names: an upload's file name, else the shape's ("round brilliant").
+    std::string designName(const std::string& mesh) const;
     // {"shipped": [...], "uploaded": [...]}, each entry a stone summary with its `mesh` name.
     nlohmann::json list() const;
     // Parses and validates an upload (format from `format`, else the file name, else the content) and

@@ -65,7 +65,9 @@ JobProgress runningProgress(const StudySettings& settings, const RunControl& con
             p.overall = (i + within) / p.steps;
         }
     }
-    if (phase == RunPhase::Done) {  // the work is over, its results are being written
+    // The work is over, its results are being written. A sweep's rounds each end so, and their points say
+    // where it is: the search is not over when a round is.
+    if (phase == RunPhase::Done && !(p.sweep && control.stage() > 0)) {
         p.step = p.steps;
         p.overall = 1;
     }

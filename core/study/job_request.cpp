@@ -1,9 +1,32 @@
 #include "study/job_request.h"
 
+#include <map>
+
+#include "cuts/cut_library.h"
 #include "sweep/sweep_request.h"
 #include "util/error.h"
+#include "util/name_table.h"
 
 namespace facetlight {
+
+namespace {
+
+// "P 43.5": the main proportions by their letters, the others by their names ("lower half 77").
+std::string changedParameters(const std::string& shape, const CutValues& values) {
+    static const std::map<std::string, std::string> letters = {
+        {"table", "T"}, {"crown", "C"}, {"pavilion", "P"}, {"girdle", "G"}};
+    std::string text;
+    for (const CutParameter& p : findCutShape(shape).parameters) {
+        const auto v = values.find(p.name);
+        if (v == values.end() || v->second == p.defaultValue) continue;
+        const auto letter = letters.find(p.name);
+        text += " " + (letter != letters.end() ? letter->second : spacedName(p.name)) + " " +
+                parameterText(p, v->second);
+    }
+    return text;
+}
+
+}  // namespace
 
 JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
     if (!j.is_object()) throw Error("", "the job must be a JSON object");
@@ -57,6 +80,15 @@ JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
 
 Stone cutStone(const JobRequest& spec) {
     return Stone::build(makeCut(spec.mesh, spec.cut), spec.name.empty() ? spec.mesh : spec.name);
+}
+
+std::string defaultJobName(const JobRequest& spec, const std::string& design) {
+    if (!spec.settings.sweep)
+        return design + (spec.cut.empty() ? "" : changedParameters(spec.mesh, spec.cut));
+    const SweepRequest& sweep = *spec.settings.sweep;
+    std::string varied;
+    for (const SweepAxis& axis : sweep.axes) varied += (varied.empty() ? "" : " × ") + spacedName(axis.name);
+    return design + changedParameters(spec.mesh, sweep.set) + ", sweep of " + varied;
 }
 
 nlohmann::json toJson(const JobRequest& spec) {

@@ -28,6 +28,12 @@ struct JobRequest {
 // The stone a spec with `cut` names: its shape built with those parameters.
 Stone cutStone(const JobRequest& spec);
 
+// The name of a job that gives none: its design (`design`: "round brilliant", an upload's file name), the cut
+// parameters it changes from the shape's defaults as cutters write them ("round brilliant P 43.5"), and for a
+// sweep what it varies ("round brilliant, sweep of pavilion × crown"): the job list tells designs apart by
+// it.
+std::string defaultJobName(const JobRequest& spec, const std::string& design);
+
 // Every setting written out, so a stored job runs the same after a restart even if defaults change.
 nlohmann::json toJson(const JobRequest& spec);
 

@@ -5,19 +5,14 @@
 #include "pictures/sweep_plot.h"
 #include "sweep/sweep_figures.h"
 #include "util/error.h"
+#include "util/name_table.h"
 
 namespace facetlight {
 namespace {
 
-std::string spaced(std::string name) {
-    for (char& c : name)
-        if (c == '_') c = ' ';
-    return name;
-}
-
 PlotAxis plotAxis(const SweepPlan& plan, const SweepAxis& axis) {
     const std::string unit = plan.unit(axis);
-    return {spaced(axis.name) + (unit.empty() ? "" : " (" + unit + ")"), axis.values, axis.choices};
+    return {spacedName(axis.name) + (unit.empty() ? "" : " (" + unit + ")"), axis.values, axis.choices};
 }
 
 // The axes that take more than one value.
@@ -30,7 +25,7 @@ std::vector<size_t> variedAxes(const SweepPlan& plan) {
 
 PlotSeries figureSeries(const SweepResult& result, const std::string& figure) {
     checkSweepFigure(figure, result.plan.trace);
-    PlotSeries s{spaced(figure), {}, {}, {}};
+    PlotSeries s{spacedName(figure), {}, {}, {}};
     for (const SweepPoint& p : result.points) {
         s.valid.push_back(p.ok());
         s.value.push_back(p.ok() ? p.figure(figure) : 0.0);
@@ -94,8 +89,8 @@ Image sweepMap(const SweepResult& result, const std::string& figure) {
             if (values.count(ax.name) && values.count(ay.name))
                 markers.push_back({values.at(ax.name), values.at(ay.name), label, false});
         }
-    return contourMap(plotAxis(plan, ax), plotAxis(plan, ay), figureSeries(result, figure), spaced(figure),
-                      markers, spaced(figure) + ", " + settingsLine(result));
+    return contourMap(plotAxis(plan, ax), plotAxis(plan, ay), figureSeries(result, figure),
+                      spacedName(figure), markers, spacedName(figure) + ", " + settingsLine(result));
 }
 
 std::vector<std::pair<std::string, Image>> sweepPictures(const SweepResult& result,

@@ -10,6 +10,13 @@
 
 namespace facetlight {
 
+// A snake_case name as people read it: "lower half" for lower_half.
+inline std::string spacedName(std::string name) {
+    for (char& c : name)
+        if (c == '_') c = ' ';
+    return name;
+}
+
 template <class E>
 struct NamedValue {
     E value;

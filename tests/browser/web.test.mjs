@@ -126,15 +126,19 @@ async function fillSmallJob(overrides = {}) {
   if (job.light) await page.selectOption('#f-light-model', job.light);
 }
 
-// Submits the form and returns the new job's id: the newest job in the list, which was not there before.
-async function submitAndGetId() {
-  const before = await page.$$eval('#job-list > li', (lis) => lis.map((li) => li.dataset.id));
+// Submits the form and returns the new job's id: the page goes to the job's own view (issue 30), whose id is
+// in its address; unless `stay`, the test goes back to the home page, where the job is listed.
+async function submitAndGetId({ stay = false } = {}) {
+  const before = await page.evaluate(() => location.hash);
   await page.click('#submit-button');
-  await page.waitForFunction((known) => {
-    const first = document.querySelector('#job-list > li');
-    return first && !known.includes(first.dataset.id);
-  }, before, { timeout: 15_000 });
-  return page.$eval('#job-list > li', (li) => li.dataset.id);
+  await page.waitForFunction((old) => location.hash !== old && /^#\/jobs\/[0-9a-f]{32}$/.test(location.hash), before,
+    { timeout: 15_000 });
+  const id = await page.evaluate(() => location.hash.split('/')[2]);
+  if (!stay) {
+    await page.evaluate(() => { location.hash = '#/'; });
+    await page.waitForSelector(`#job-list li[data-id="${id}"]`);
+  }
+  return id;
 }
 
 async function waitForFinished(id) {
@@ -157,6 +161,17 @@ async function picturesLoaded(scope) {
     return imgs.length > 0 && imgs.every((img) => img.complete);
   }, scope, { timeout: 30_000 });
   return page.$$eval(`${scope} img`, (imgs) => imgs.map((img) => ({ src: img.getAttribute('src'), width: img.naturalWidth })));
+}
+
+// The sweep chart's texts that reach past its edges (a legend cut off).
+async function chartTextsCutOff() {
+  return page.$$eval('#sweep-chart svg text', (texts) => {
+    const chart = texts[0].ownerSVGElement.getBoundingClientRect();
+    return texts.filter((t) => {
+      const b = t.getBoundingClientRect();
+      return b.left < chart.left - 0.5 || b.right > chart.right + 0.5;
+    }).map((t) => t.textContent);
+  });
 }
 
 async function noHorizontalOverflow() {
@@ -273,35 +288,48 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     }
   });
 
-  test('submit a small job and watch its progress bar reach 100 %', async () => {
+  test('submit a small job: the page goes to it and shows its progress live until its result', async () => {
     jobIds.brilliantMesh = await uploadThroughPage('tests/data/brilliant.asc');
     assert.match(jobIds.brilliantMesh, /^[0-9a-f]{32}$/);
     await fillSmallJob();
-    const id = await submitAndGetId();
+    const id = await submitAndGetId({ stay: true });
     jobIds.brilliant = id;
-    const item = `#job-list li[data-id="${id}"]`;
-    assert.match(await page.textContent(`${item} .state`), /Queued|Running|Finished/);
-    // Watch the bar: record every value it shows until the job is done; it never goes backwards.
+    assert.equal(await page.isVisible('#view-result'), true, 'the job\'s view is shown');
+    assert.equal(await page.isVisible('#job-form'), false);
+    // Watch the job's own bar, in view at the top of the page: it never goes backwards, then the result replaces it.
+    const bar = '#result-body [role="progressbar"]';
     const seen = [];
     const until = Date.now() + JOB_TIMEOUT_MS;
     let shotRunning = false;
-    for (;;) {
-      const state = await page.getAttribute(item, 'data-state');
-      const now = Number(await page.getAttribute(`${item} [role="progressbar"]`, 'aria-valuenow'));
-      seen.push(now);
-      if (state === 'running' && !shotRunning) {
-        await shot('03-job-running');
-        shotRunning = true;
+    while (Date.now() < until && !(await page.locator('#result-body .figures').count())) {
+      // Read at once: each poll draws the bar anew.
+      const now = await page.evaluate((sel) => {
+        const el = document.querySelector(sel);
+        return el && { value: el.getAttribute('aria-valuenow'), bottom: el.getBoundingClientRect().bottom };
+      }, bar);
+      if (now) {
+        seen.push(Number(now.value));
+        assert.ok(now.bottom > 0 && now.bottom <= DESKTOP.height, `the progress bar is out of view (${now.bottom})`);
+        if (!shotRunning && seen.at(-1) > 0) {
+          await shot('03-job-running');
+          shotRunning = true;
+        }
       }
-      if (state === 'succeeded' || state === 'failed' || state === 'canceled' || Date.now() > until) break;
       await page.waitForTimeout(100);
     }
-    assert.equal(await page.getAttribute(item, 'data-state'), 'succeeded');
-    await waitForFinished(id);
-    assert.equal(seen.at(-1), 100);
+    assert.ok(seen.length > 0, 'the progress was shown before the result');
     assert.ok(seen.every((v, i) => i === 0 || v >= seen[i - 1]), `progress went backwards: ${seen.join(',')}`);
+    await page.waitForSelector('#result-body .figures');
+    assert.match(await page.textContent('#result-title'), /brilliant\.asc/);
+    // The status beside the button follows the job: finished, never a stale "queued".
+    await page.waitForFunction(() => /finished/.test(document.querySelector('#submit-status').textContent));
+    assert.doesNotMatch(await page.textContent('#submit-status'), /queued|running/);
+    await page.evaluate(() => { location.hash = '#/'; });
+    const item = `#job-list li[data-id="${id}"]`;
+    await waitForFinished(id);
     assert.match(await page.textContent(`${item} .progress-text`), /100 %/);
     assert.match(await page.textContent(`${item} .state`), /Finished/);
+    assert.match(await page.textContent(`${item} .job-name`), /^brilliant\.asc$/);
     await shot('04-job-finished');
   });
 
@@ -374,6 +402,33 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.setViewportSize(DESKTOP);
   });
 
+  test('a result prints as a clean report: verdict, figures, pictures and the stone, without the page\'s controls', async () => {
+    await page.goto(`${baseUrl}/#/jobs/${jobIds.brilliant}`);
+    await page.waitForSelector('#result-body .figures');
+    await picturesLoaded('#result-body .pictures');
+    await page.emulateMedia({ media: 'print' });
+    try {
+      for (const sel of ['.site-header', '.site-footer', '.back-link', '.downloads', '#job-form', '#sweep-form']) {
+        assert.equal(await page.locator(sel).first().isVisible(), false, `${sel} is printed`);
+      }
+      const buttons = await page.$$eval('#main button:not(.sort)', (bs) => bs.filter((b) => b.offsetParent !== null).length);
+      assert.equal(buttons, 0, 'no button is printed');
+      for (const sel of ['[data-section="verdict"]', '.figures', '.pictures img >> nth=0', '#stone-title', 'table.regions', 'table.facets th']) {
+        assert.equal(await page.locator(sel).first().isVisible(), true, `${sel} is missing from the print`);
+      }
+      // The facet table's column titles print as text, not as buttons.
+      assert.equal(await page.$eval('table.facets button.sort', (b) => getComputedStyle(b).borderTopStyle), 'none');
+      const pdf = await page.pdf({ format: 'A4', printBackground: true });
+      fs.mkdirSync(screenshotDir, { recursive: true });
+      fs.writeFileSync(path.join(screenshotDir, '05b-result-print.pdf'), pdf);
+      assert.equal(pdf.subarray(0, 5).toString(), '%PDF-');
+      assert.ok(pdf.length > 20_000, `a report with pictures, not ${pdf.length} bytes`);
+    } finally {
+      await page.emulateMedia({ media: 'screen' });
+    }
+    assert.equal(await page.locator('.site-header').isVisible(), true);
+  });
+
   test('compare two finished jobs, ranked by crown return, with their pictures', async () => {
     await page.goto(`${baseUrl}/#/`);
     await page.waitForSelector(`#job-list li[data-id="${jobIds.brilliant}"]`);
@@ -435,6 +490,71 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await shot('08-compare-phone');
     assert.ok(await noHorizontalOverflow(), 'the comparison fits a phone');
     await page.setViewportSize(DESKTOP);
+  });
+
+  test('jobs go by their names on the list, the result page and the comparison', async () => {
+    // A design the API names from the proportions it changes; the page shows the server's name.
+    const res = await fetch(`${baseUrl}/api/jobs`, {
+      method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ mesh: 'round_brilliant', photons: 2000, threads: 2, render: false, cut: { pavilion: 43.5 } }),
+    });
+    const created = await res.json();
+    assert.equal(created.name, 'round brilliant P 43.5');
+    await page.goto(`${baseUrl}/#/`);
+    await waitForFinished(created.id);
+    assert.equal(await page.textContent(`#job-list li[data-id="${created.id}"] .job-name`), 'round brilliant P 43.5');
+    assert.equal(await page.textContent(`#job-list li[data-id="${jobIds.cube}"] .job-name`), 'cube_quads.obj');
+    await page.click(`#job-list li[data-id="${created.id}"] a[data-action="open"]`);
+    await page.waitForSelector('#result-body .figures');
+    assert.match(await page.textContent('#result-title'), /^round brilliant P 43\.5/);
+    assert.equal(await page.title(), 'round brilliant P 43.5 — facetlight');
+    assert.equal(await page.textContent('.cut-values'), 'round brilliant cut with pavilion 43.5');
+    await page.goto(`${baseUrl}/#/compare/${created.id},${jobIds.brilliant}`);
+    await page.waitForSelector(`.rank-list li[data-id="${created.id}"]`);
+    const names = await page.$$eval('.rank-list .rank-name a', (as) => as.map((a) => a.textContent));
+    assert.deepEqual(names.sort(), ['brilliant.asc', 'round brilliant P 43.5']);
+    assert.match(await page.textContent('.compare-table thead'), /round brilliant P 43\.5/);
+    assert.match(await page.textContent('#compare-choices'), /round brilliant P 43\.5/);
+  });
+
+  test('the study form edits the chosen shape\'s proportions and sends them as the job\'s cut', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    // The material menu shows its options whole.
+    const cut = await page.$eval('#f-material', (sel) => {
+      const ctx = document.createElement('canvas').getContext('2d');
+      ctx.font = getComputedStyle(sel).font;
+      const widest = Math.max(...[...sel.options].map((o) => ctx.measureText(o.text).width));
+      return { widest, room: sel.clientWidth - 40 };
+    });
+    assert.ok(cut.widest <= cut.room, `the material menu cuts its options off: ${JSON.stringify(cut)}`);
+    // An upload has no parameters; a shape of the cut library shows the ones GET /api/meshes lists.
+    await page.selectOption('#f-mesh', jobIds.brilliantMesh);
+    assert.equal(await page.isHidden('#cut-fields'), true);
+    await page.selectOption('#f-mesh', 'round_brilliant');
+    const listed = (await (await fetch(`${baseUrl}/api/meshes`)).json()).shipped.find((m) => m.mesh === 'round_brilliant');
+    const pavilion = listed.parameters.find((p) => p.name === 'pavilion');
+    assert.equal(await page.inputValue('#f-cut-pavilion'), String(pavilion.default));
+    assert.equal(await page.getAttribute('#f-cut-pavilion', 'min'), String(pavilion.min));
+    assert.equal(await page.getAttribute('#f-cut-pavilion', 'max'), String(pavilion.max));
+    assert.equal(await page.locator('#cut-params .field').count(), listed.parameters.length);
+    assert.match(await page.textContent('label[for="f-cut-pavilion"]'), /pavilion \(°\)/);
+    assert.equal(await page.locator('#f-cut-halves option').count(), 2, 'a choice is a menu');
+    // A value outside the shape's range is the server's to refuse, next to the field.
+    await fillSmallJob({ photons: '2000' });
+    await page.setChecked('#f-render', false);
+    await page.fill('#f-cut-pavilion', '89');
+    await page.click('#submit-button');
+    const error = await page.waitForSelector('#err-cut:not([hidden])');
+    assert.match(await error.textContent(), /pavilion/);
+    await page.fill('#f-cut-pavilion', '43.5');
+    const id = await submitAndGetId();
+    const job = await (await fetch(`${baseUrl}/api/jobs/${id}`)).json();
+    assert.deepEqual(job.settings.cut, { pavilion: 43.5 }, 'only the changed parameter is sent');
+    assert.equal(job.name, 'round brilliant P 43.5');
+    await page.fill('#f-cut-pavilion', String(pavilion.default));
+    await page.setChecked('#f-render', true);
+    await shot('09a-form-proportions');
   });
 
   test('cancel a queued job and delete finished ones', async () => {
@@ -607,9 +727,14 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.waitForFunction(() => /^succeeded/.test(document.querySelector('#sweep-progress').textContent), null,
       { timeout: JOB_TIMEOUT_MS });
     assert.match(await page.textContent('#sweep-progress'), /3 of 3 points/);
+    assert.match(await page.textContent('#sweep-view-title'), /^round brilliant, sweep of pavilion: brightness$/);
+    assert.equal(await page.textContent(`#job-list li[data-id="${id}"] .job-name`), 'round brilliant, sweep of pavilion');
+    // The status beside the sweep form's button follows the sweep too.
+    await page.waitForFunction(() => /finished: round brilliant, sweep of pavilion\.$/.test(document.querySelector('#sweep-status').textContent));
     const chartText = await page.textContent('#sweep-chart svg');
     for (const label of ['pavilion (deg)', 'Brightness (%)', '±1σ']) assert.ok(chartText.includes(label), label);
     assert.ok(await page.isVisible('#sweep-chart polygon.sweep-band'), 'the ±1σ band is drawn');
+    assert.deepEqual(await chartTextsCutOff(), []);
     assert.ok(await page.isVisible('#sweep-links a[href$="/sweep.csv"]'));
     await shot('12-sweep-chart');
     await page.hover('#sweep-chart circle.sweep-point >> nth=1');
@@ -624,6 +749,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const job = await (await fetch(`${baseUrl}/api/jobs/${design}`)).json();
     assert.equal(job.state, 'succeeded');
     assert.equal(job.settings.cut.pavilion, 40);
+    assert.equal(job.name, 'round brilliant P 40', 'a point opened from a sweep is named by its design');
     // The design's trace is the sweep's point, bit for bit.
     const stats = await (await fetch(`${baseUrl}/api/jobs/${design}/stats`)).json();
     const sweep = await (await fetch(`${baseUrl}/api/jobs/${id}/sweep.json`)).json();
@@ -651,7 +777,62 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const tip = await page.textContent('#sweep-tooltip');
     assert.match(tip, /^pavilion 40, crown 33: /);
     assert.match(tip, /mean red–blue separation \d+\.\d+° ± \d/);
+    // One perceptual palette, viridis as the CLI's pictures: dark purple at the low end of the legend,
+    // which is labelled at several round values.
+    const low = await page.getAttribute('#sweep-chart rect.legend-step >> nth=0', 'fill');
+    const [r, g, b] = low.match(/\d+/g).map(Number);
+    assert.ok(r < 90 && g < 20 && b > 60, `the legend starts at ${low}, not viridis' dark purple`);
+    assert.ok(await page.locator('#sweep-chart .legend-label').count() >= 3, 'the legend is labelled at several steps');
     await shot('13-sweep-map');
+  });
+
+  test('a search: its progress names the round and never goes back, the star sits on the refined best', async () => {
+    // Submitted through the API with a short search and no viewer, so that its rounds pass in seconds.
+    const res = await fetch(`${baseUrl}/api/jobs`, {
+      method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ mesh: 'round_brilliant', photons: 1000, threads: 2, viewer: { enabled: false },
+        sweep: { axes: [{ name: 'pavilion', from: 39, to: 41, step: 1 }], figure: 'weighted_return',
+          maximize: 'weighted_return', refine_rounds: 2 } }),
+    });
+    const { id } = await res.json();
+    await page.goto(`${baseUrl}/#/sweeps/${id}`);
+    assert.match(await page.textContent('#sweep-tooltip'), /^Hover a point/, 'the last sweep\'s point is not shown');
+    const api = [];
+    const shown = [];
+    for (;;) {
+      const job = await (await fetch(`${baseUrl}/api/jobs/${id}`)).json();
+      api.push(job.progress.overall);
+      const text = await page.textContent('#sweep-progress');
+      if (text) shown.push(text);
+      if (!['queued', 'running'].includes(job.state)) break;
+      await page.waitForTimeout(50);
+    }
+    const overall = (list) => list.map((t) => Number((t.match(/(\d+) %$/) || [])[1])).filter(Number.isFinite);
+    assert.ok(api.every((v, i) => i === 0 || v >= api[i - 1]), `the server's progress went back: ${api.join(',')}`);
+    assert.ok(overall(shown).every((v, i, a) => i === 0 || v >= a[i - 1]), `the page's progress went back: ${shown.join(' | ')}`);
+    assert.ok(shown.filter((t) => /^running/.test(t)).every((t) => /round [1-3] of 3: \d+ of \d+ points/.test(t)), shown.join(' | '));
+    await page.waitForSelector('.sweep-best-card');
+    assert.match(await page.textContent('#sweep-progress'), /^succeeded · round 3 of 3: 3 of 3 points · 100 %$/);
+    const best = await (await fetch(`${baseUrl}/api/jobs/${id}/best.json`)).json();
+    const card = await page.textContent('.sweep-best-card');
+    assert.ok(card.includes(`${best.best.command} --out best.obj`), card);
+    assert.match(card, /95 % interval \d+(\.\d+)? % to \d+(\.\d+)? %/);
+    assert.match(card, new RegExp(`pavilion ${best.best.values.pavilion.toLocaleString('en-US', { maximumFractionDigits: 4 }).replace('.', '\\.')}°`));
+    // The star sits at the refined pavilion, between the grid's points where it lies.
+    const xs = await page.$$eval('#sweep-chart circle.sweep-point', (cs) => cs.map((c) => Number(c.getAttribute('cx'))));
+    const starX = Number(await page.getAttribute('#sweep-chart text.sweep-best', 'x'));
+    const expected = xs[0] + ((best.best.values.pavilion - 39) / 2) * (xs[2] - xs[0]);
+    assert.ok(Math.abs(starX - expected) < 0.5, `star at ${starX}, the refined best at ${expected}`);
+    assert.ok(await page.locator('#sweep-chart line.sweep-interval').count() === 1, 'the interval is drawn');
+    assert.deepEqual(await chartTextsCutOff(), [], 'the legend names cosine-weighted return whole');
+    // "Open as a job" traces the best design on its own, named by its proportions.
+    await page.click('.sweep-best-card button[data-action="open-best"]');
+    await page.waitForFunction(() => /^#\/jobs\/[0-9a-f]{32}$/.test(location.hash));
+    const design = await (await fetch(`${baseUrl}/api/jobs/${await page.evaluate(() => location.hash.split('/')[2])}`)).json();
+    assert.equal(design.settings.cut.pavilion, best.best.values.pavilion);
+    assert.equal(design.settings.photons, best.best.photons);
+    assert.match(design.name, /^round brilliant P \d/);
+    await shot('14-sweep-search');
   });
 
   test('the home page fits a phone', async () => {

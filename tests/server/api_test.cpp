@@ -199,7 +199,9 @@ TEST_F(ServiceTest, DefaultsAreWhatAJobThatLeavesThemOutGets) {
     client_->Post("/api/jobs/" + status["id"].get<std::string>() + "/cancel");
     json settings = status["settings"];
     EXPECT_EQ(settings["mesh"], "round_brilliant");
+    EXPECT_EQ(settings["name"], "round brilliant");  // the job's default name, not a setting's
     settings.erase("mesh");
+    settings.erase("name");
     EXPECT_EQ(settings, defaults);
     EXPECT_EQ(waitFinished(status["id"])["state"], "canceled");
 }
@@ -236,7 +238,8 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     std::ifstream storedFile(dir_ / "data" / "jobs" / id / "stats.json");
     const std::string stored{std::istreambuf_iterator<char>(storedFile), {}};
     EXPECT_NE(stored.find("\"leaving_share\""), std::string::npos);
-    EXPECT_EQ(stored.find("\"share_stderr\""), std::string::npos);  // (totals' trapped_share_stderr is the CLI's)
+    EXPECT_EQ(stored.find("\"share_stderr\""),
+              std::string::npos);  // (totals' trapped_share_stderr is the CLI's)
     EXPECT_EQ(stored.find("leaving_share_stderr"), std::string::npos);
     auto csv = client_->Get("/api/jobs/" + id + "/stats.csv");
     ASSERT_TRUE(csv && csv->status == 200);
@@ -627,8 +630,17 @@ TEST_F(ServiceTest, MeshesListAndUpload) {
     ASSERT_TRUE(list && list->status == 200);
     const json meshes = json::parse(list->body);
     bool found = false;
-    for (const auto& m : meshes["shipped"])
-        found |= m["mesh"] == "round_brilliant" && m["facet_count"].get<int>() > 50;
+    for (const auto& m : meshes["shipped"]) {
+        if (m["mesh"] != "round_brilliant") continue;
+        found = m["facet_count"].get<int>() > 50;
+        // The cut library's parameters, which the page's form edits: each with its default and range.
+        const json pavilion = m["parameters"][2];
+        EXPECT_EQ(pavilion["name"], "pavilion");
+        EXPECT_EQ(pavilion["unit"], "deg");
+        EXPECT_LT(pavilion["min"].get<double>(), pavilion["default"].get<double>());
+        EXPECT_LT(pavilion["default"].get<double>(), pavilion["max"].get<double>());
+        EXPECT_EQ(m["parameters"].back()["choices"], json({"trade", "faceter"}));
+    }
     EXPECT_TRUE(found) << meshes.dump();
 
     auto up = client_->Post("/api/meshes?name=cube.obj", kCubeObj, "application/octet-stream");
@@ -642,7 +654,9 @@ TEST_F(ServiceTest, MeshesListAndUpload) {
     EXPECT_EQ(uploaded[0]["mesh"], meshId);
     json job = smallJob();
     job["mesh"] = meshId;
-    EXPECT_EQ(waitFinished(submitOk(job))["state"], "succeeded");
+    const json done = waitFinished(submitOk(job));
+    EXPECT_EQ(done["state"], "succeeded");
+    EXPECT_EQ(done["name"], "cube.obj");  // an upload goes by its file name, not its id
 
     httplib::MultipartFormDataItems form = {{"file", kCubeObj, "../../evil name.obj", "text/plain"}};
     auto multi = client_->Post("/api/meshes", form);
@@ -665,6 +679,29 @@ TEST_F(ServiceTest, MeshesListAndUpload) {
     EXPECT_EQ(rawStatus("POST /api/meshes HTTP/1.1\r\nHost: x\r\nContent-Length: 17000000\r\n\r\nv 0 0 0\n"),
               413);
     expectProblem(submit({{"mesh", "0123456789abcdef0123456789abcdef"}, {"photons", 10}}), 422, "mesh");
+}
+
+// A job that gives no name is named by its design and the proportions it changes, in its status and its
+// stored settings alike; a name it gives is kept.
+TEST_F(ServiceTest, JobsAreNamedByTheirDesign) {
+    const auto nameOf = [&](const json& job) {
+        const json s = status(submitOk(job));
+        EXPECT_EQ(s["name"], s["settings"]["name"]);
+        return s["name"].get<std::string>();
+    };
+    json job = smallJob();
+    job["photons"] = 1000;
+    EXPECT_EQ(nameOf(job), "round brilliant");
+    job["mesh"] = "round_brilliant_deep";
+    EXPECT_EQ(nameOf(job), "round brilliant deep");
+    job["mesh"] = "round_brilliant";
+    job["cut"] = {{"pavilion", 43.5}, {"crown", 33}, {"lower_half", 77}};
+    EXPECT_EQ(nameOf(job), "round brilliant C 33 P 43.5 lower half 77");
+    job["name"] = "my deep stone";
+    EXPECT_EQ(nameOf(job), "my deep stone");
+    json sweep = sweepJob(2, 1000);
+    sweep["sweep"]["set"] = {{"table", 55}};
+    EXPECT_EQ(nameOf(sweep), "round brilliant T 55, sweep of pavilion");
 }
 
 TEST_F(ServiceTest, QueuedAndInterruptedJobsSurviveARestart) {

@@ -74,4 +74,20 @@ TEST(JobProgress, ASweepUnderWayCountsTheRoundsPoints) {
     EXPECT_DOUBLE_EQ(p.overall, 1.25 / 3);
 }
 
+// Each round ends its sweep with the Done phase; only the last round's is the end of the search (issue 30:
+// the overall share went 0.6, 1.0, then 0.783 when the last round started).
+TEST(JobProgress, ARoundsEndIsNotTheSearchsEnd) {
+    RunControl control;
+    const StudySettings search = sweepOf({4}, "weighted_return");
+    control.startStage(2, 3, 8);
+    for (int i = 0; i < 8; ++i) control.finishItem();
+    control.startPhase(RunPhase::Done, 0);
+    EXPECT_DOUBLE_EQ(runningProgress(search, control).overall, 2.0 / 3);
+    control.startStage(3, 3, 8);
+    EXPECT_DOUBLE_EQ(runningProgress(search, control).overall, 2.0 / 3);
+    for (int i = 0; i < 8; ++i) control.finishItem();
+    control.startPhase(RunPhase::Done, 0);
+    EXPECT_DOUBLE_EQ(runningProgress(search, control).overall, 1.0);
+}
+
 }  // namespace

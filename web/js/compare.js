@@ -5,7 +5,7 @@ import { $, h } from './dom.js';
 import { fireCompare } from './fire.js';
 import { decimalsFor, fmtPctErr, shortId } from './format.js';
 import { pictures, scaleEnd } from './heatmap.js';
-import { displayMeshName } from './meshes.js';
+import { jobName } from './meshes.js';
 import { jobSummary } from './progress.js';
 import { viewerCompare } from './compare_viewer.js';
 import { regionTable } from './result.js';
@@ -27,7 +27,7 @@ export async function showCompare(ids) {
   }
   choices.replaceChildren(...(finished.length ? finished.map((j) => h('label', { class: 'choice' },
     h('input', { type: 'checkbox', name: 'job', value: j.id, checked: ids.includes(j.id) }),
-    h('span', {}, h('strong', {}, displayMeshName(j.mesh)), ` · ${jobSummary(j.settings)} · job ${shortId(j.id)}`)))
+    h('span', {}, h('strong', {}, jobName(j)), ` · ${jobSummary(j.settings)} · job ${shortId(j.id)}`)))
     : [h('p', { class: 'empty' }, 'No finished jobs yet.')]));
   if (ids.length < 2) {
     body.replaceChildren(h('p', { class: 'empty' }, 'Choose two or more finished jobs above to see them side by side.'));
@@ -54,7 +54,7 @@ export async function showCompare(ids) {
   body.replaceChildren(...parts);
 }
 
-function entryName(e) { return displayMeshName(e.job.mesh); }
+function entryName(e) { return jobName(e.job); }
 
 // Differences within two combined standard errors are called "within noise", not a win.
 function verdict(best, other) {

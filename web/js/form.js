@@ -1,10 +1,11 @@
 // The job form: its defaults from the server, reading it into a job, showing the server's field errors,
 // submitting.
 import { api } from './api.js';
+import { readCut } from './cut_fields.js';
 import { $, clearFieldError, fieldError, showFieldError } from './dom.js';
 import { shortId } from './format.js';
 import { jobsView, refreshJobs } from './jobs.js';
-import { displayMeshName } from './meshes.js';
+import { jobName } from './meshes.js';
 
 function showFormError(message) {
   const formError = $('#form-error');
@@ -58,6 +59,8 @@ function buildJob(form) {
   const errors = [];
   const job = { mesh: form.elements.mesh.value };
   if (!job.mesh) errors.push(['mesh', 'Choose a shape, or upload a mesh']);
+  const cut = readCut(form, errors);
+  if (cut) job.cut = cut;
   job.photons = readNumber(form, 'photons', errors);
   const threads = readNumber(form, 'threads', errors, { required: false });
   if (threads !== undefined) job.threads = threads;
@@ -99,7 +102,8 @@ function buildJob(form) {
 
 function reportError(e) {
   if (e.field && showFieldError(e.field, e.message)) {
-    const input = fieldError(e.field).closest('.field').querySelector('input, select');
+    // An error about the cut as a whole (`cut`) stands under the shape's fields, which it names.
+    const input = fieldError(e.field).closest('.field, .cut-fields').querySelector('input, select');
     if (input) input.focus();
     return;
   }
@@ -126,9 +130,12 @@ export async function submitJob(event) {
     const created = await api('/api/jobs', {
       method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'application/json' }, body: JSON.stringify(job),
     });
-    status.textContent = `Job ${shortId(created.id)} queued: ${displayMeshName(created.mesh)}.`;
+    status.textContent = `Job ${shortId(created.id)} queued: ${jobName(created)}.`;
     jobsView.offset = 0;
+    jobsView.submitted.set('#submit-status', created.id);
     await refreshJobs();
+    // The job's own view shows its progress live, then its result.
+    location.hash = `#/jobs/${created.id}`;
   } catch (e) {
     status.textContent = '';
     reportError(e);

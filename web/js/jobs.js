@@ -1,12 +1,13 @@
 // The jobs list (polled while jobs are active), cancel and delete, and the server's health.
 import { api, jobUrl } from './api.js';
-import { JOBS_PER_PAGE, POLL_ACTIVE_MS, POLL_IDLE_MS } from './constants.js';
+import { JOBS_PER_PAGE, POLL_ACTIVE_MS, POLL_IDLE_MS, STATES } from './constants.js';
 import { $, h } from './dom.js';
 import { fmtTime, shortId } from './format.js';
-import { displayMeshName } from './meshes.js';
+import { jobName } from './meshes.js';
 import { jobSummary, progressBar, stateBadge } from './progress.js';
 
-export const jobsView = { offset: 0, total: 0, jobs: [], selected: new Set(), timer: 0, pendingDelete: new Map() };
+// `submitted`: the job last sent from each form, by the status beside the form's button, which follows its state.
+export const jobsView = { offset: 0, total: 0, jobs: [], selected: new Set(), timer: 0, pendingDelete: new Map(), submitted: new Map() };
 
 function anyActive(jobs) { return jobs.some((j) => j.state === 'queued' || j.state === 'running'); }
 
@@ -27,15 +28,15 @@ export async function refreshJobs() {
 }
 
 function jobItem(job) {
-  const name = displayMeshName(job.mesh);
+  const name = jobName(job);
   const finished = job.state === 'succeeded';
   // A sweep's chart fills in while it runs.
   const sweep = Boolean(job.settings && job.settings.sweep);
   const href = sweep ? `#/sweeps/${job.id}` : `#/jobs/${job.id}`;
   const openable = finished || (sweep && job.state === 'running');
   const title = openable
-    ? h('a', { href, class: 'job-name' }, sweep ? `Sweep of ${name}` : name)
-    : h('span', { class: 'job-name' }, sweep ? `Sweep of ${name}` : name);
+    ? h('a', { href, class: 'job-name' }, name)
+    : h('span', { class: 'job-name' }, name);
   const actions = h('div', { class: 'job-actions' });
   if (openable) actions.append(h('a', { class: 'button secondary small', href, 'data-action': 'open' }, sweep ? 'Open sweep' : 'Open result'));
   if (job.state === 'queued' || job.state === 'running') {
@@ -76,7 +77,7 @@ function jobItem(job) {
 // Redraws only what changed, so a click or hover on a job is not lost to a poll: an item is rebuilt when its
 // state or actions change, and only its progress bar is swapped while it runs.
 function jobSignature(job) {
-  return JSON.stringify([job.state, job.cancel_requested, job.error, job.mesh, displayMeshName(job.mesh),
+  return JSON.stringify([job.state, job.cancel_requested, job.error, job.mesh, jobName(job),
     jobsView.selected.has(job.id), jobsView.pendingDelete.has(job.id), job.threads && job.threads.note]);
 }
 
@@ -84,7 +85,7 @@ function renderJobs() {
   const list = $('#job-list');
   const old = new Map([...list.children].map((li) => [li.dataset.id, li]));
   const items = jobsView.jobs.map((job) => {
-    const name = displayMeshName(job.mesh);
+    const name = jobName(job);
     const signature = jobSignature(job);
     const existing = old.get(job.id);
     if (existing && existing.dataset.signature === signature) {
@@ -112,6 +113,7 @@ function renderJobs() {
     if (target) target.focus();
   }
   $('#jobs-empty').hidden = jobsView.jobs.length > 0;
+  updateSubmitStatus();
   const from = jobsView.total ? jobsView.offset + 1 : 0;
   const to = jobsView.offset + jobsView.jobs.length;
   $('#jobs-page').textContent = jobsView.total > JOBS_PER_PAGE ? `${from}–${to} of ${jobsView.total}` : '';
@@ -119,6 +121,16 @@ function renderJobs() {
   $('#jobs-next').disabled = to >= jobsView.total;
   $('#jobs-prev').closest('.pager').hidden = jobsView.total <= JOBS_PER_PAGE;
   updateCompareButton();
+}
+
+// The status beside a form's button follows the job it sent, so it never says "queued" once the job ran.
+function updateSubmitStatus() {
+  for (const [status, id] of jobsView.submitted) {
+    const job = jobsView.jobs.find((j) => j.id === id);
+    if (!job) continue;
+    const state = (STATES[job.state] || { label: job.state }).label.toLowerCase();
+    $(status).textContent = `Job ${shortId(job.id)} ${state}: ${jobName(job)}.`;
+  }
 }
 
 function updateCompareButton() {

@@ -1,6 +1,7 @@
 // The shapes a job may use: shipped and uploaded meshes, their descriptions and uploads. loadMeshes returns the
 // shipped ones.
 import { api } from './api.js';
+import { showCutFields } from './cut_fields.js';
 import { $, clearFieldError, h, showFieldError } from './dom.js';
 import { fmtNumber } from './format.js';
 
@@ -11,9 +12,15 @@ function meshLabel(m) {
   return m.error ? `${name} (cannot be read)` : `${name} — ${m.facet_count} facets`;
 }
 
-export function displayMeshName(mesh) {
+function displayMeshName(mesh) {
   const m = meshes.get(mesh);
   return m ? m.file_name || m.name || mesh : mesh;
+}
+
+// A job's name as the server gives it ("round brilliant P 43.5"); jobs stored before names were given show
+// their mesh's name instead of its id.
+export function jobName(job) {
+  return job.name && job.name !== job.mesh ? job.name : displayMeshName(job.mesh);
 }
 
 export async function loadMeshes(select) {
@@ -48,6 +55,7 @@ export async function loadMeshes(select) {
 
 export function describeMesh() {
   const m = meshes.get($('#f-mesh').value);
+  showCutFields(m);
   const hint = $('#hint-mesh');
   if (!m || m.error) {
     hint.textContent = m ? m.error : 'Shipped shapes and your uploads, with their facet counts.';

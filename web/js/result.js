@@ -5,7 +5,7 @@ import { $, h } from './dom.js';
 import { decimalsFor, fmtDuration, fmtInt, fmtNumber, fmtPct, fmtPctErr, fmtTime, humanize, shortId } from './format.js';
 import { fireSection } from './fire.js';
 import { linkFacet, pictures } from './heatmap.js';
-import { displayMeshName } from './meshes.js';
+import { jobName } from './meshes.js';
 import { jobSummary, lightText, progressBar, stateBadge } from './progress.js';
 import { verdictCard } from './verdict.js';
 
@@ -24,9 +24,10 @@ export async function showResult(id) {
     return;
   }
   if (resultView.id !== id) return;
+  document.title = `${jobName(job)} — facetlight`;
   if (job.state !== 'succeeded') {
     body.replaceChildren(
-      h('h1', { id: 'result-title' }, `${displayMeshName(job.mesh)} `, stateBadge(job.state)),
+      h('h1', { id: 'result-title' }, `${jobName(job)} `, stateBadge(job.state)),
       h('p', { class: 'lede' }, jobSummary(job.settings)),
       h('div', { class: 'card' }, progressBar(job, `Progress of job ${shortId(job.id)}`),
         job.error ? h('p', { class: 'job-error' }, h('strong', {}, 'Error: '), job.error) : null));
@@ -137,6 +138,14 @@ function proportionList(mesh) {
   return h('dl', { class: 'kv' }, rows.map(([k, v, unit]) => [h('dt', {}, k), h('dd', {}, unit ? `${fmtNumber(v, 2)}${unit === '%' ? ' %' : unit}` : String(v))]));
 }
 
+// The cut library parameters the job changed from its shape's (the design's own proportions follow).
+function cutList(job) {
+  const cut = Object.entries((job.settings && job.settings.cut) || {});
+  if (!cut.length) return null;
+  return h('p', { class: 'cut-values' }, `${humanize(job.mesh)} cut with `,
+    cut.map(([k, v]) => `${humanize(k)} ${fmtNumber(v, 4)}`).join(', '));
+}
+
 // The ASET classes in the order of aset.png's legend (docs/physics.md, "ASET view").
 export const ASET_CLASSES = [
   ['head', 'Head cone (blue)'], ['bright', 'Bright light (red)'], ['low', 'Low light (green)'],
@@ -190,7 +199,7 @@ function viewerSection(job, stats) {
 }
 
 function resultPage(job, stats) {
-  const name = displayMeshName(job.mesh);
+  const name = jobName(job);
   const totals = stats.totals || {};
   const timing = stats.timing || {};
   const base = jobUrl(job.id);
@@ -226,6 +235,6 @@ function resultPage(job, stats) {
           h('dt', {}, 'Time'), h('dd', {}, `${fmtDuration(timing.seconds)} on ${timing.threads} thread${timing.threads === 1 ? '' : 's'}`),
           h('dt', {}, 'Speed'), h('dd', {}, `${fmtInt(timing.photons_per_second)} photons/s`))),
       h('section', { class: 'card', 'aria-labelledby': 'stone-title' },
-        h('h2', { id: 'stone-title' }, 'The stone'), proportionList(stats.mesh))),
+        h('h2', { id: 'stone-title' }, 'The stone'), cutList(job), proportionList(stats.mesh))),
     h('section', { class: 'card', 'aria-labelledby': 'facet-caption' }, facetTable(stats.facets || [])));
 }

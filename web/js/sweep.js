@@ -1,18 +1,24 @@
 // Sweeps (docs/sweeps.md): the form that submits one, and its chart, which fills in as the points finish. One
-// varied quantity: the figure against it with a ±1σ band; two: a filled map with the best point marked.
+// varied quantity: the figure against it with a ±1σ band; two: a filled map in viridis (the CLI's palette) with
+// the best point marked: the search's refined best (best.json) once it has one.
 import { api, jobUrl } from './api.js';
 import { FIGURES, POLL_ACTIVE_MS, VIEWER_FIGURES } from './constants.js';
 import { $, clearFieldError, h, showFieldError, svg } from './dom.js';
 import { FIRE_FIGURES, fmtFire } from './fire.js';
 import { fmtNumber, humanize, shortId } from './format.js';
-import { refreshJobs } from './jobs.js';
+import { viridis } from './heatmap.js';
+import { jobsView, refreshJobs } from './jobs.js';
+import { jobName } from './meshes.js';
 
 // `compared`: the jobs of designs opened from sweeps, for the compare view.
-export const sweepView = { id: '', timer: 0, job: null, shape: '', compared: [] };
+// `best`: the search's best.json once the sweep has finished.
+export const sweepView = { id: '', timer: 0, job: null, shape: '', compared: [], best: null };
 
-const W = 640;
+const TOOLTIP_HINT = 'Hover a point to see its figures; click it to trace that design as a job and compare it.';
+const W = 680;
 const H = 400;
-const M = { left: 70, right: 170, top: 20, bottom: 56 };
+// The right margin holds the legend: room for the longest figure's name ("cosine-weighted return").
+const M = { left: 70, right: 210, top: 20, bottom: 56 };
 
 // The viewer's figures, the statistics' totals, then the fire figures (points of a sweep that traces fire).
 const SWEEP_FIGURES = [...VIEWER_FIGURES, ...FIGURES, ...FIRE_FIGURES];
@@ -105,6 +111,7 @@ async function submitSweep(ev) {
       method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'application/json' }, body: JSON.stringify(job),
     });
     status.textContent = `Sweep ${shortId(created.id)} queued.`;
+    jobsView.submitted.set('#sweep-status', created.id);
     refreshJobs();
     location.hash = `#/sweeps/${created.id}`;
   } catch (e) {
@@ -121,8 +128,13 @@ async function submitSweep(ev) {
 export async function showSweep(id) {
   sweepView.id = id;
   clearTimeout(sweepView.timer);
+  $('#sweep-view-title').textContent = 'Sweep';
+  $('#sweep-progress').textContent = '';
+  $('#sweep-tooltip').textContent = TOOLTIP_HINT;
   $('#sweep-chart').replaceChildren(h('p', { class: 'hint' }, 'Waiting for the first points…'));
   $('#sweep-links').replaceChildren();
+  $('#sweep-best').replaceChildren();
+  sweepView.best = null;
   await pollSweep(id);
 }
 
@@ -140,18 +152,66 @@ async function pollSweep(id) {
   sweepView.job = job;
   sweepView.shape = points.shape;
   const figure = job.settings.sweep.figure;
-  $('#sweep-view-title').textContent = `Sweep of the ${humanize(points.shape)}: ${figureInfo(figure).label.toLowerCase()}`;
-  const p = job.progress;
-  const round = p.steps > 1 ? ` · round ${p.step} of ${p.steps}` : '';
-  $('#sweep-progress').textContent = `${job.state} · ${points.points.length} of ${points.points_total} points${round} · ${Math.round(p.overall * 100)} %`
-    + (job.error ? ` · ${job.error}` : '');
-  drawSweep(points, figure);
+  $('#sweep-view-title').textContent = `${jobName(job)}: ${figureInfo(figure).label.toLowerCase()}`;
+  document.title = `${jobName(job)} — facetlight`;
+  if (job.state === 'succeeded' && job.links.best && !sweepView.best) {
+    try {
+      sweepView.best = await api(job.links.best);
+    } catch (e) {
+      $('#sweep-best').replaceChildren(h('p', { class: 'form-error' }, `The best design could not be read: ${e.message}`));
+    }
+    if (sweepView.id !== id) return;
+  }
+  $('#sweep-progress').textContent = progressText(job);
+  drawSweep(points, figure, sweepView.best);
+  if (sweepView.best) $('#sweep-best').replaceChildren(bestCard(sweepView.best, points.axes));
   if (job.state === 'succeeded') {
     $('#sweep-links').replaceChildren(...Object.entries(job.links)
       .filter(([k]) => ['sweep', 'sweep_csv', 'sweep_picture', 'best', 'best_obj'].includes(k))
       .map(([k, href]) => h('a', { class: 'button secondary small', href }, k.replace('_', ' '))));
   }
   if (job.state === 'queued' || job.state === 'running') sweepView.timer = setTimeout(() => pollSweep(id), POLL_ACTIVE_MS);
+}
+
+// The server's progress in words: the round under way and its points (a search's rounds have their own grids).
+function progressText(job) {
+  const p = job.progress;
+  const points = `${p.points_done} of ${p.points_total} points`;
+  const where = p.steps > 1 ? `round ${Math.max(1, p.step)} of ${p.steps}: ${points}` : points;
+  return `${job.state} · ${where} · ${Math.round(p.overall * 100)} %${job.error ? ` · ${job.error}` : ''}`;
+}
+
+// The search's answer: the refined best design with its 95 % interval, its ties and the command that cuts it.
+function bestCard(best, axes) {
+  const f = figureInfo(best.figure);
+  const d = best.best;
+  const fmt = (v) => (f.degrees ? `${fmtNumber(v, 3)}°` : f.points ? fmtNumber(v, 1) : `${fmtNumber(v * 100, 2)} %`);
+  const where = axes.map((a) => `${humanize(a.name)} ${fmtNumber(d.values[a.name], 4)}${a.unit === 'deg' ? '°' : a.unit === '%' ? ' %' : ''}`).join(', ');
+  const ties = best.ties.length;
+  return h('section', { class: 'card sweep-best-card', 'aria-labelledby': 'sweep-best-title' },
+    h('h2', { id: 'sweep-best-title' }, `★ Best design: ${where}`),
+    h('p', { class: 'best-figure' }, `${f.label} ${fmt(d.value)}, 95 % interval ${fmt(d.interval[0])} to ${fmt(d.interval[1])}`,
+      ` (${fmtNumber(d.photons, 0)} photons${best.constraints.length ? `; ${best.constraints.join(', ')}` : ''})`),
+    h('p', { class: 'hint' }, ties ? `${ties} other design${ties === 1 ? '' : 's'} of the last round cannot be told apart from it at this photon count.`
+      : 'No other design of the last round comes within its noise.'),
+    h('p', {}, 'Cut it: ', h('code', { class: 'best-command' }, `${d.command} --out best.obj`)),
+    h('button', { type: 'button', class: 'button secondary small', 'data-action': 'open-best', onclick: () => openBest(d) },
+      'Open as a job'));
+}
+
+// Traces the best design as a job of its own, at the search's last photon count, and opens it.
+async function openBest(d) {
+  const { sweep, name, ...settings } = sweepView.job.settings;
+  try {
+    const created = await api('/api/jobs', {
+      method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'application/json' },
+      body: JSON.stringify({ ...settings, mesh: sweepView.shape, render: false, photons: d.photons, cut: d.cut }),
+    });
+    refreshJobs();
+    location.hash = `#/jobs/${created.id}`;
+  } catch (e) {
+    $('#sweep-best').append(h('p', { class: 'form-error', role: 'alert' }, e.message));
+  }
 }
 
 function label(axis) { return axis.unit ? `${humanize(axis.name)} (${axis.unit})` : humanize(axis.name); }
@@ -196,9 +256,10 @@ function pointText(pt, axes, figures) {
   return `${values}: ${figs.join(' · ')}${Number.isFinite(depth) ? ` · total depth ${fmtNumber(depth, 1)} %` : ''}`;
 }
 
-// The design of a point as a job of its own: the sweep's settings, its shape with the point's parameters.
+// The design of a point as a job of its own: the sweep's settings, its shape with the point's parameters; the
+// server names it by them (the sweep's name is not the design's).
 function designJob(job, shape, point) {
-  const { sweep, ...settings } = job.settings;
+  const { sweep, name, ...settings } = job.settings;
   const design = { ...settings, mesh: shape, render: false, light: { ...settings.light }, cut: { ...sweep.set } };
   for (const [name, value] of Object.entries(point.values)) {
     if (name === 'tilt') design.light.tilt_deg = value;
@@ -248,7 +309,15 @@ function hoverable(el, point, data) {
   return el;
 }
 
-function drawSweep(data, figure) {
+// Where value `v` lies among an axis's ascending values, in (fractional) steps from the first.
+function stepsAlong(values, v) {
+  for (let i = 0; i + 1 < values.length; ++i) {
+    if (v <= values[i + 1]) return i + Math.max(0, (v - values[i]) / (values[i + 1] - values[i]));
+  }
+  return values.length - 1;
+}
+
+function drawSweep(data, figure, best) {
   const ok = data.points.filter((p) => !p.error);
   const chart = $('#sweep-chart');
   if (!data.points.length) return;
@@ -280,12 +349,20 @@ function drawSweep(data, figure) {
     for (const p of sorted) {
       root.append(hoverable(svg('circle', { cx: xOf(p), cy: y(value(p)), r: 5, class: 'sweep-point', 'data-at': p.at.join(',') }), p, data));
     }
+    if (best) {
+      // The refined best at its own place, with its 95 % interval (which may reach beyond the grid's range).
+      const bx = x(best.best.values[axis.name]);
+      const clampY = (v) => Math.min(H - M.bottom, Math.max(M.top, y(v)));
+      root.append(svg('line', { x1: bx, x2: bx, y1: clampY(best.best.interval[0]), y2: clampY(best.best.interval[1]), class: 'sweep-interval' }),
+        svg('text', { x: bx, y: clampY(best.best.value) + 7, 'text-anchor': 'middle', class: 'sweep-best' }, '★'));
+    }
     const lx = W - M.right + 10;
     root.append(svg('g', { class: 'chart-legend' },
       svg('line', { x1: lx, y1: M.top + 10, x2: lx + 20, y2: M.top + 10, class: 'sweep-line' }),
       svg('text', { x: lx + 24, y: M.top + 14 }, figureInfo(figure).label.toLowerCase()),
       svg('rect', { x: lx, y: M.top + 24, width: 20, height: 10, class: 'sweep-band' }),
-      svg('text', { x: lx + 24, y: M.top + 33 }, '±1σ')));
+      svg('text', { x: lx + 24, y: M.top + 33 }, '±1σ'),
+      best ? svg('text', { x: lx, y: M.top + 54 }, '★ best, 95 % interval') : ''));
   } else {
     const [ax, ay] = [data.axes[1], data.axes[0]];  // the first axis varies slowest: rows
     const nx = axisValues(ax).length;
@@ -294,7 +371,7 @@ function drawSweep(data, figure) {
     const ch = (H - M.top - M.bottom) / ny;
     const lo = Math.min(...values);
     const hi = Math.max(...values);
-    const colour = (v) => `hsl(${240 - 240 * (hi === lo ? 0.5 : (v - lo) / (hi - lo))} 75% 50%)`;
+    const colour = (v) => viridis(hi === lo ? 0.5 : (v - lo) / (hi - lo));
     const xc = (i) => M.left + (i + 0.5) * cw;
     const yc = (j) => H - M.bottom - (j + 0.5) * ch;
     root.append(frame((v) => xc(axisValues(ax).indexOf(v)), axisValues(ax), ax, [], () => 0, { title: label(ay), format: String }));
@@ -305,21 +382,30 @@ function drawSweep(data, figure) {
         fill: p.error ? '#ccc' : colour(value(p)), 'data-at': p.at.join(',') });
       root.append(hoverable(rect, p, data));
     }
-    const best = ok.reduce((b, p) => (!b || value(p) > value(b) ? p : b), null);
-    if (best) {
-      root.append(svg('text', { x: xc(best.at[1]), y: yc(best.at[0]) + 6, 'text-anchor': 'middle', class: 'sweep-best' }, '★'));
+    // The search's refined best between the grid's cells, else the highest point of the grid.
+    const highest = ok.reduce((b, p) => (!b || value(p) > value(b) ? p : b), null);
+    const star = best
+      ? [stepsAlong(axisValues(ay), best.best.values[ay.name]), stepsAlong(axisValues(ax), best.best.values[ax.name])]
+      : highest && highest.at;
+    if (star) {
+      root.append(svg('text', { x: M.left + (star[1] + 0.5) * cw, y: H - M.bottom - (star[0] + 0.5) * ch + 7, 'text-anchor': 'middle', class: 'sweep-best' }, '★'));
     }
+    // The legend: the ramp, labelled at round values between its ends.
     const lx = W - M.right + 20;
-    const steps = 8;
+    const steps = 32;
+    const ly = scale(lo, hi, H - M.bottom, M.top);
     for (let k = 0; k < steps; ++k) {
       const v = lo + ((hi - lo) * (k + 0.5)) / steps;
-      root.append(svg('rect', { x: lx, y: H - M.bottom - (k + 1) * ((H - M.top - M.bottom) / steps), width: 16, height: (H - M.top - M.bottom) / steps, fill: colour(v) }));
+      root.append(svg('rect', { x: lx, y: H - M.bottom - (k + 1) * ((H - M.top - M.bottom) / steps), width: 16, height: (H - M.top - M.bottom) / steps + 0.5, fill: colour(v), class: 'legend-step' }));
     }
-    root.append(svg('g', { class: 'chart-legend' },
-      svg('text', { x: lx + 20, y: H - M.bottom }, `${pct(lo)} ${unit}`),
-      svg('text', { x: lx + 20, y: M.top + 10 }, `${pct(hi)} ${unit}`),
-      svg('text', { x: lx, y: H - M.bottom + 30 }, `${figureInfo(figure).label}`),
-      svg('text', { x: lx, y: H - M.bottom + 44 }, '★ highest')));
+    const legend = svg('g', { class: 'chart-legend' });
+    for (const t of ticks(lo, hi, 4)) {
+      legend.append(svg('line', { x1: lx + 16, x2: lx + 20, y1: ly(t), y2: ly(t), class: 'legend-tick' }),
+        svg('text', { x: lx + 22, y: ly(t) + 4, class: 'legend-label' }, `${pct(t)} ${unit}`));
+    }
+    legend.append(svg('text', { x: lx, y: H - M.bottom + 30 }, `${figureInfo(figure).label}`),
+      svg('text', { x: lx, y: H - M.bottom + 44 }, best ? '★ best (refined)' : '★ highest'));
+    root.append(legend);
   }
   chart.replaceChildren(root);
 }
