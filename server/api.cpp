@@ -1,5 +1,7 @@
 #include "api.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -31,8 +33,13 @@ void logRequest(const Request& req, const Response& res) {
 }  // namespace
 
 Api::Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
-         std::string readOnly)
-    : results_(results), queue_(queue), catalog_(catalog), limits_(limits), readOnly_(std::move(readOnly)) {}
+         std::string readOnly, const std::vector<std::string>& allowedHosts)
+    : results_(results),
+      queue_(queue),
+      catalog_(catalog),
+      limits_(limits),
+      readOnly_(std::move(readOnly)),
+      allowedHosts_(allowedHosts.begin(), allowedHosts.end()) {}
 
 std::vector<Route> Api::routes() {
     std::vector<Route> routes = {
@@ -94,17 +101,12 @@ json Api::storageJson() const {
 }
 
 void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
-    const std::string type = mediaType(req);
     BodyCollector body(limits_, req);
     body.read(reader);
     if (body.tooLarge())
         return problem(res, 413, "the job is larger than " + std::to_string(body.limit()) + " bytes");
     if (!body.complete()) return problem(res, 400, kShortBody);
     if (refuseWhenStorageLow(res)) return;
-    if (!type.empty() && type != kJsonType && type != "application/x-www-form-urlencoded" &&
-        type != "text/plain") {
-        return problem(res, 415, "send the job as application/json (got " + type + ")");
-    }
     json j;
     try {
         j = parseUntrustedJson(body.bytes(), "the body");
@@ -369,7 +371,13 @@ void Api::install(httplib::Server& server, bool accessLog) {
     RequestRules rules{routes(),
                        limits.maxUrlBytes,
                        [limits](const std::string& path) { return bodyLimit(limits, path); },
-                       {"POST /api/jobs", "POST /api/meshes"}};
+                       {{"POST /api/jobs", {kJsonType}},
+                        {"POST /api/meshes", {"application/octet-stream", "multipart/form-data"}}}};
+    for (std::string host : allowedHosts_) {
+        std::transform(host.begin(), host.end(), host.begin(),
+                       [](unsigned char c) { return std::tolower(c); });
+        rules.allowedHosts.insert(std::move(host));
+    }
     server.set_payload_max_length(std::max(limits.maxBodyBytes, limits.maxUploadBytes));
     server.set_pre_routing_handler([rules = std::move(rules)](const Request& req, Response& res) {
         const auto refusal = checkRequest(req, rules);

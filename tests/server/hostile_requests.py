@@ -47,7 +47,7 @@ class Server:
         deadline = time.time() + 20
         while time.time() < deadline:
             try:
-                if self.request(b"GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n", timeout=1)[0] == 200:
+                if self.request(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n\r\n", timeout=1)[0] == 200:
                     return
             except OSError:
                 time.sleep(0.05)
@@ -106,8 +106,8 @@ def read_response(s):
 
 
 def http(method, path, body=b"", headers=None, length=True):
-    head = "%s %s HTTP/1.1\r\nHost: x\r\n" % (method, path)
-    for k, v in (headers or {}).items():
+    head = "%s %s HTTP/1.1\r\n" % (method, path)
+    for k, v in {"Host": "localhost", **(headers or {})}.items():
         head += "%s: %s\r\n" % (k, v)
     if length and (body or method in ("POST", "PUT", "PATCH")):
         head += "Content-Length: %d\r\n" % len(body)
@@ -120,12 +120,21 @@ def job(**fields):
     return json.dumps(j).encode()
 
 
-def post_job(body, ctype="application/json"):
-    return http("POST", "/api/jobs", body, {"Content-Type": ctype})
+def post_job(body, ctype="application/json", **headers):
+    return http("POST", "/api/jobs", body, {"Content-Type": ctype, **headers})
 
 
-def upload(data, name="m.obj"):
-    return http("POST", "/api/meshes?name=" + name, data, {"Content-Type": "application/octet-stream"})
+def upload(data, name="m.obj", ctype="application/octet-stream"):
+    return http("POST", "/api/meshes?name=" + name, data, {"Content-Type": ctype} if ctype else {})
+
+
+def multipart(data, **headers):
+    body = (b"--b0undary\r\nContent-Disposition: form-data; name=\"file\"; filename=\"m.obj\"\r\n\r\n" + data +
+            b"\r\n--b0undary--\r\n")
+    return http("POST", "/api/meshes", body, {"Content-Type": "multipart/form-data; boundary=b0undary", **headers})
+
+
+EVIL = {"Origin": "http://evil.example"}
 
 
 CUBE_OBJ = (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
@@ -174,21 +183,21 @@ def cases():
         ("OPTIONS jobs", http("OPTIONS", "/api/jobs"), 405, None),
         ("POST job without length", http("POST", "/api/jobs", length=False), 411, None),
         ("POST mesh without length", http("POST", "/api/meshes", length=False), 411, None),
-        ("chunked job", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n5\r\n{\"a\":\r\n0\r\n\r\n",
+        ("chunked job", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nTransfer-Encoding: chunked\r\n\r\n5\r\n{\"a\":\r\n0\r\n\r\n",
          411, None),
-        ("length abc", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: abc\r\n\r\n", 400, None),
-        ("length -1", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: -1\r\n\r\n", 400, None),
-        ("length 1e3", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 1e3\r\n\r\n", 400, None),
-        ("length 20 digits", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 99999999999999999999\r\n\r\n",
+        ("length abc", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: abc\r\n\r\n", 400, None),
+        ("length -1", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: -1\r\n\r\n", 400, None),
+        ("length 1e3", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: 1e3\r\n\r\n", 400, None),
+        ("length 20 digits", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: 99999999999999999999\r\n\r\n",
          400, None),
-        ("two lengths", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 2\r\nContent-Length: 40\r\n\r\n{}",
+        ("two lengths", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: 2\r\nContent-Length: 40\r\n\r\n{}",
          400, None),
-        ("length over max-body", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n{" % (MAX_BODY + 1),
+        ("length over max-body", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: %d\r\n\r\n{" % (MAX_BODY + 1),
          413, None),
         ("upload over max-upload",
-         b"POST /api/meshes HTTP/1.1\r\nHost: x\r\nContent-Length: 17000000\r\n\r\nv 0 0 0\n", 413, None),
+         b"POST /api/meshes HTTP/1.1\r\nHost: localhost\r\nContent-Length: 17000000\r\n\r\nv 0 0 0\n", 413, None),
         ("GET with length over max-body",
-         b"GET /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % (MAX_BODY + 1), 413, None),
+         b"GET /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: %d\r\n\r\n" % (MAX_BODY + 1), 413, None),
         ("huge header", http("GET", "/healthz", headers={"X-Big": "a" * 20000}), 400, None),
         ("not JSON", post_job(b"{photons: 5}"), 400, None),
         ("JSON array", post_job(b"[]"), 400, None),
@@ -225,11 +234,34 @@ def cases():
         ("upload self-intersecting", upload(corpus("obj", "octahedron_self_intersecting.obj")), 422, "file"),
         ("upload empty", upload(b""), 422, "file"),
         ("upload binary junk", upload(b"\x01\x02\xff\xfe junk", "junk"), 422, "file"),
-        ("upload format ply", http("POST", "/api/meshes?format=ply", CUBE_OBJ), 422, "format"),
+        ("upload format ply", upload(CUBE_OBJ, "m.obj&format=ply"), 422, "format"),
         ("upload open cube", upload(CUBE_OBJ[:CUBE_OBJ.rfind(b"f ")]), 422, "file"),
         ("upload cube", upload(CUBE_OBJ, "cube.obj"), 201, None),
         ("direction 1e308", post_job(job(light={"direction": [1e308, 1e308, -1e308]})), 202, None),
-        ("form-encoded job", post_job(job(), "application/x-www-form-urlencoded"), 202, None),
+        # Issue 31, item 1: DNS rebinding and cross-site requests.
+        ("Host evil.example", http("GET", "/api/jobs", headers={"Host": "evil.example"}), 421, None),
+        ("Host evil.example:port", http("GET", "/healthz", headers={"Host": "evil.example:8080"}), 421, None),
+        ("Host evil.example page", http("GET", "/", headers={"Host": "evil.example"}), 421, None),
+        ("Host empty", http("GET", "/api/jobs", headers={"Host": ""}), {400, 421}, None),
+        ("HTTP/1.1 without Host", b"GET /api/jobs HTTP/1.1\r\n\r\n", 400, None),
+        ("Host localhost.evil.example", http("GET", "/api/meshes", headers={"Host": "localhost.evil.example"}), 421,
+         None),
+        ("Host 127.0.0.1 with port", http("GET", "/api/jobs", headers={"Host": "127.0.0.1:8080"}), 200, None),
+        ("Host [::1]", http("GET", "/api/jobs", headers={"Host": "[::1]:8080"}), 200, None),
+        ("job from evil origin", post_job(job(), **EVIL), 403, None),
+        ("text job from evil origin", post_job(job(), "text/plain", **EVIL), 403, None),
+        ("job from null origin", post_job(job(), Origin="null"), 403, None),
+        ("multipart upload from evil origin", multipart(CUBE_OBJ, **EVIL), 403, None),
+        ("cancel from evil origin", http("POST", "/api/jobs/%s/cancel" % ID, headers=EVIL), 403, None),
+        ("delete from evil origin", http("DELETE", "/api/jobs/" + ID, headers=EVIL), 403, None),
+        ("list from evil origin", http("GET", "/api/jobs", headers=EVIL), 200, None),
+        ("form-encoded job", post_job(job(), "application/x-www-form-urlencoded"), 415, None),
+        ("text/plain job", post_job(job(), "text/plain"), 415, None),
+        ("job without content type", http("POST", "/api/jobs", job()), 415, None),
+        ("text/plain upload", upload(CUBE_OBJ, ctype="text/plain"), 415, None),
+        ("upload without content type", upload(CUBE_OBJ, ctype=None), 415, None),
+        ("job from our origin", post_job(job(), Origin="http://localhost:8080"), 202, None),
+        ("multipart upload", multipart(CUBE_OBJ, Origin="http://127.0.0.1:8080"), 201, None),
     ]
 
 
@@ -331,17 +363,20 @@ def run_short_bodies(server):
     jobs, meshes = job_total(server), mesh_total(server)
     body = job()
     # The client half-closes after part of the body: the server sees the end at once.
-    status = server.request(b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+    status = server.request(b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n"
                             b"Content-Length: %d\r\n\r\n" % (len(body) + 50) + body, shut_write=True)[0]
     if status != 400:
         fail("short job body", "status %d, expected 400" % status)
-    status = server.request(b"POST /api/meshes?name=c.obj HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n"
+    status = server.request(b"POST /api/meshes?name=c.obj HTTP/1.1\r\nHost: localhost\r\n"
+                            b"Content-Type: application/octet-stream\r\nContent-Length: %d\r\n\r\n"
                             % (len(CUBE_OBJ) + 10) + CUBE_OBJ, shut_write=True)[0]
     if status != 400:
         fail("short mesh body", "status %d, expected 400" % status)
     # The client goes away mid-body.
-    for raw in (b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % (len(body) + 50) + body,
-                b"POST /api/meshes HTTP/1.1\r\nHost: x\r\nContent-Length: 1000\r\n\r\n" + CUBE_OBJ):
+    for raw in (b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n"
+                b"Content-Length: %d\r\n\r\n" % (len(body) + 50) + body,
+                b"POST /api/meshes HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/octet-stream\r\n"
+                b"Content-Length: 1000\r\n\r\n" + CUBE_OBJ):
         s = server.connect()
         s.sendall(raw)
         s.close()
@@ -360,7 +395,7 @@ def run_slow_clients(server):
     slow = []
     for i in range(4 * HTTP_THREADS):
         s = server.connect(timeout=30)
-        s.sendall(b"GET /healthz HTTP/1.1\r\nHost: x\r\n")
+        s.sendall(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n")
         slow.append(s)
     start = time.time()
     worst = 0
@@ -420,6 +455,21 @@ def expect(server, name, raw, wanted):
         check_problem(name, status, headers, body, None)
     healthz_fast(server, name)
     return status, body
+
+
+def run_allowed_host(binary, work):
+    """--allowed-host adds a name the server is reached by (behind a proxy, or on the network)."""
+    server = Server(binary, os.path.join(work, "allowed"), "--allowed-host", "Gems.Example")
+    try:
+        expect(server, "allowed host", http("GET", "/api/jobs", headers={"Host": "gems.example:8443"}), 200)
+        expect(server, "job from the allowed host", post_job(job(), Origin="https://gems.example"), 202)
+        expect(server, "loopback beside an allowed host", http("GET", "/api/jobs", headers={"Host": "localhost"}),
+               200)
+        expect(server, "other host beside an allowed host", http("GET", "/api/jobs", headers={"Host": "evil.example"}),
+               421)
+    finally:
+        server.stop()
+    return 4
 
 
 def run_storage_guard(binary, work):
@@ -547,6 +597,7 @@ def main():
     finally:
         server.stop()
     try:
+        total += run_allowed_host(binary, work)
         total += run_storage_guard(binary, work)
         total += run_real_full_disk(binary, work)
     finally:
