@@ -228,6 +228,13 @@ def cases():
         ("render width 1e9", post_job(job(render={"width": 1e9})), 422, "render.width"),
         ("render width -1", post_job(job(render={"width": -1})), 422, "render.width"),
         ("render yes", post_job(job(render="yes")), 422, "render"),
+        # Issue 31, item 8: a frame count that overflows an int was one frame.
+        ("tilt step 1e-9", post_job(job(render=True, tilt_series={"max_deg": 45, "step_deg": 1e-9})), 422,
+         "tilt_series.step_deg"),
+        ("tilt step 3e-8", post_job(job(render=True, tilt_series={"max_deg": 45, "step_deg": 3e-8})), 422,
+         "tilt_series.step_deg"),
+        ("tilt step 5e-324", post_job(job(render=True, tilt_series={"max_deg": 45, "step_deg": 5e-324})), 422,
+         "tilt_series.step_deg"),
         ("upload GemCad 1e300", upload(corpus("gemcad", "huge_distance.asc"), "huge.asc"), 422, "file"),
         ("upload cube 1e155", upload(corpus("obj", "cube_1e155.obj")), 422, "file"),
         ("upload flat square", upload(corpus("obj", "flat_square.obj")), 422, "file"),
