@@ -243,6 +243,10 @@ def cases():
         ("upload binary junk", upload(b"\x01\x02\xff\xfe junk", "junk"), 422, "file"),
         ("upload format ply", upload(CUBE_OBJ, "m.obj&format=ply"), 422, "format"),
         ("upload open cube", upload(CUBE_OBJ[:CUBE_OBJ.rfind(b"f ")]), 422, "file"),
+        # Issue 31, item 9: face indices beyond an int wrapped to vertex 4.
+        ("upload index 2^32+4", upload(CUBE_OBJ.replace(b"f 2 4 8 6", b"f 2 4294967300 8 6")), 422, "file"),
+        ("upload index 2^64+4", upload(CUBE_OBJ.replace(b"f 2 4 8 6", b"f 2 18446744073709551620 8 6")), 422, "file"),
+        ("upload index -(2^32-4)", upload(CUBE_OBJ.replace(b"f 2 4 8 6", b"f 2 -4294967292 8 6")), 422, "file"),
         ("upload cube", upload(CUBE_OBJ, "cube.obj"), 201, None),
         ("direction 1e308", post_job(job(light={"direction": [1e308, 1e308, -1e308]})), 202, None),
         # Issue 31, item 1: DNS rebinding and cross-site requests.
