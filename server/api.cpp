@@ -196,14 +196,19 @@ void Api::listJobs(const Request& req, Response& res) {
     } catch (const Error& e) {
         return problem(res, 400, e.what(), e.field());
     }
+    // Bounded in bytes as well as in jobs: at least one job, then as many as fit (issue 31).
     json jobs = json::array();
-    for (const auto& job : queue_.jobs(int(limit), int(offset))) jobs.push_back(jobStatusJson(job, queue_));
-    const int64_t total = queue_.jobCount();
-    json doc = {{"jobs", jobs}, {"total", total}, {"limit", limit}, {"offset", offset}, {"next", nullptr}};
-    if (offset + limit < total) {
-        doc["next"] =
-            "/api/jobs?limit=" + std::to_string(limit) + "&offset=" + std::to_string(offset + limit);
+    size_t bytes = 0;
+    for (const auto& job : queue_.jobs(int(limit), int(offset))) {
+        json status = jobStatusJson(job, queue_);
+        bytes += status.dump().size();
+        if (!jobs.empty() && bytes > limits_.maxListBytes) break;
+        jobs.push_back(std::move(status));
     }
+    const int64_t total = queue_.jobCount(), after = offset + int64_t(jobs.size());
+    json doc = {{"jobs", jobs}, {"total", total}, {"limit", limit}, {"offset", offset}, {"next", nullptr}};
+    if (after < total)
+        doc["next"] = "/api/jobs?limit=" + std::to_string(limit) + "&offset=" + std::to_string(after);
     sendJson(res, 200, doc);
 }
 

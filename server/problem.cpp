@@ -2,6 +2,8 @@
 
 #include <iostream>
 
+#include "util/excerpt.h"
+
 namespace facetlight::server {
 
 std::string_view reasonPhrase(int status) {
@@ -35,12 +37,16 @@ std::string_view reasonPhrase(int status) {
     }
 }
 
+// Whatever a message quotes, a problem stays short and valid JSON (issue 31): the excerpts are the backstop
+// of the quoting in the messages, the replacement of bytes that are not UTF-8 that of the readers.
 void problem(httplib::Response& res, int status, const std::string& detail, const std::string& field) {
-    nlohmann::json body = {
-        {"type", "about:blank"}, {"title", reasonPhrase(status)}, {"status", status}, {"detail", detail}};
-    if (!field.empty()) body["field"] = field;
+    nlohmann::json body = {{"type", "about:blank"},
+                           {"title", reasonPhrase(status)},
+                           {"status", status},
+                           {"detail", excerpt(detail, kMaxDetailBytes)}};
+    if (!field.empty()) body["field"] = excerpt(field, kMaxFieldBytes);
     res.status = status;
-    res.set_content(body.dump(), kProblemType);
+    res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), kProblemType);
 }
 
 void sendJson(httplib::Response& res, int status, const nlohmann::json& body) {

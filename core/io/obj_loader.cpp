@@ -9,6 +9,7 @@
 
 #include "io/mesh_io.h"
 #include "util/error.h"
+#include "util/excerpt.h"
 #include "util/number_text.h"
 
 namespace facetlight {
@@ -65,9 +66,7 @@ void checkFaceIndices(size_t line, std::string_view token) {
             continue;  // not a number: tinyobj's 0
         part.remove_prefix(std::min(part.find_first_not_of('0'), part.size()));
         if (part.size() > kMax.size() || (part.size() == kMax.size() && part > kMax)) {
-            const std::string shown =
-                token.size() > 24 ? std::string(token.substr(0, 24)) + "..." : std::string(token);
-            throw Error(lineTag(line) + "face index '" + shown + "' is out of range (at most " +
+            throw Error(lineTag(line) + "face index " + inQuotes(token) + " is out of range (at most " +
                         std::string(kMax) + " either way)");
         }
     }
@@ -86,11 +85,11 @@ std::vector<size_t> checkLines(std::string_view text) {
                 if (token.empty()) throw Error(lineTag(line) + "a vertex needs 3 coordinates");
                 double value = 0;
                 if (!parseNumber(token, value))
-                    throw Error(lineTag(line) + "vertex coordinate '" + std::string(token) +
-                                "' is not a valid number");
+                    throw Error(lineTag(line) + "vertex coordinate " + inQuotes(token) +
+                                " is not a valid number");
                 if (!std::isfinite(value))
-                    throw Error(lineTag(line) + "vertex coordinate '" + std::string(token) +
-                                "' is not a finite number");
+                    throw Error(lineTag(line) + "vertex coordinate " + inQuotes(token) +
+                                " is not a finite number");
             }
         } else if (kind == "f") {
             if (trim(rest).empty())

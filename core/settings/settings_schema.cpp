@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "util/error.h"
+#include "util/excerpt.h"
 
 namespace facetlight::settings {
 namespace {
@@ -62,6 +63,8 @@ bool readBool(const json& j, const std::string& path) {
 
 std::string readText(const json& j, const std::string& path) {
     if (!j.is_string()) throw Error(path, path + " must be a string");
+    if (j.get_ref<const std::string&>().size() > kMaxTextBytes)
+        throw Error(path, path + " is longer than " + std::to_string(kMaxTextBytes) + " bytes");
     return j.get<std::string>();
 }
 
@@ -72,9 +75,8 @@ std::string readChoice(const json& j, const std::string& path, const std::vector
         if (c == name) return name;
         known += (known.empty() ? "" : ", ") + c;
     }
-    // Quotes at most 40 bytes of what was sent: a 100 KB name came back whole.
-    throw Error(path, path + " must be one of " + known + " (got '" + name.substr(0, 40) +
-                          (name.size() > 40 ? "...'" : "'") + ")");
+    // Quotes an excerpt of what was sent: a 100 KB name came back whole.
+    throw Error(path, path + " must be one of " + known + " (got " + inQuotes(name) + ")");
 }
 
 Vec3 readVec3(const json& j, const std::string& path, bool nonZero) {
@@ -92,7 +94,9 @@ void checkObject(const json& j, const std::string& path, const std::vector<Field
     for (const auto& [key, value] : j.items()) {
         bool known = false;
         for (const FieldInfo& f : fields) known = known || f.key == key;
-        if (!known) throw Error(fieldPath(path, key), "unknown field '" + fieldPath(path, key) + "'");
+        if (known) continue;
+        const std::string name = fieldPath(path, excerpt(key));  // a 100 KB key is no field's name
+        throw Error(name, "unknown field '" + name + "'");
     }
 }
 

@@ -127,7 +127,7 @@ TEST(ObjLoader, Errors) {
         expectError([&] { parseObj(square + "f 2 3 " + index + "\n"); },
                     "OBJ line 5: face index '" + std::string(index) + "' is out of range");
     expectError([&] { parseObj(square + "f 2 3 " + std::string(1000, '9') + "\n"); },
-                "OBJ line 5: face index '999999999999999999999999...' is out of range");
+                "OBJ line 5: face index '" + std::string(40, '9') + "...' is out of range");
     // The largest int is an index like any other, and leading zeros are no part of its size.
     expectError([&] { parseObj(square + "f 2 3 2147483647\n"); },
                 "OBJ line 5: face refers to vertex 2147483647 but the file has only 4 vertices");

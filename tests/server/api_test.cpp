@@ -428,6 +428,34 @@ TEST_F(ServiceTest, ListIsNewestFirstAndPaginated) {
     for (const auto& id : ids) waitFinished(id);
 }
 
+// Issue 31: 40 jobs named with 900 000 characters each made a page 36 MB. Names are capped, and a page stops
+// at the job that passes --max-list-bytes (here 1 byte: a job a page), its next link going on from there.
+TEST_F(ServiceTest, ListPagesAreBoundedInBytesAndNamesInLength) {
+    stopService();
+    ServiceLimits limits;
+    limits.maxListBytes = 1;
+    start(limits);
+    json named = smallJob();
+    named["name"] = std::string(1025, 'n');
+    expectProblem(submit(named), 422, "name");
+    std::vector<std::string> ids;
+    for (int i = 0; i < 3; ++i) ids.push_back(submitOk(smallJob()));
+    std::string next = "/api/jobs?limit=100";
+    for (int i = 2; i >= 0; --i) {
+        const json page = getJson(next);
+        EXPECT_EQ(page["total"], 3);
+        ASSERT_EQ(page["jobs"].size(), 1u);
+        EXPECT_EQ(page["jobs"][0]["id"], ids[size_t(i)]);
+        if (i == 0) {
+            EXPECT_TRUE(page["next"].is_null());
+        } else {
+            ASSERT_TRUE(page["next"].is_string());
+            next = page["next"];
+        }
+    }
+    for (const auto& id : ids) waitFinished(id);
+}
+
 TEST_F(ServiceTest, BadJobsAreRefusedNamingTheField) {
     expectProblem(client_->Post("/api/jobs", "{\"mesh\":", kJson), 400);
     expectProblem(client_->Post("/api/jobs", "[1,2]", kJson), 400);

@@ -273,6 +273,7 @@ void expectOpenApiAgrees(const json& api, const FieldInfo& f, const std::string&
         case FieldType::Text:
             EXPECT_EQ(api.value("type", ""), "string");
             EXPECT_FALSE(api.contains("enum"));
+            EXPECT_EQ(api.value("maxLength", json()), json(settings::kMaxTextBytes));
             break;
         case FieldType::Choice:
             EXPECT_EQ(api.value("type", ""), "string");
