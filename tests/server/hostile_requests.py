@@ -497,6 +497,37 @@ def run_allowed_host(binary, work):
     return 4
 
 
+def run_durable_cancel(binary, work):
+    """Issue 31, item 7: an acknowledged cancel survives kill -9, for a queued job (200) and a running one (202)."""
+    folder = os.path.join(work, "cancel")
+    server = Server(binary, folder)
+    try:
+        running = json.loads(server.request(post_job(job(photons=100000000)))[2])["id"]
+        queued = json.loads(server.request(post_job(job()))[2])["id"]
+        for _ in range(200):
+            if server.get_json("/api/jobs/" + running)["state"] == "running":
+                break
+            time.sleep(0.05)
+        expect(server, "cancel queued", http("POST", "/api/jobs/%s/cancel" % queued), 200)
+        # Killed at once after the answer: the worker has had no time to record the end of the job.
+        status = server.request(http("POST", "/api/jobs/%s/cancel" % running))[0]
+        server.proc.kill()
+        server.proc.wait()
+        if status != 202:
+            fail("cancel running", "status %d, expected 202" % status)
+    finally:
+        server.stop()
+    server = Server(binary, folder)
+    try:
+        for name, job_id in (("queued", queued), ("running", running)):
+            state = server.get_json("/api/jobs/" + job_id)["state"]
+            if state != "canceled":
+                fail("cancel %s after kill -9" % name, "the job is %s, not canceled" % state)
+    finally:
+        server.stop()
+    return 4
+
+
 def run_storage_guard(binary, work):
     """A disk with less than --min-free left refuses new jobs and uploads with 507 and keeps answering."""
     server = Server(binary, os.path.join(work, "full"), "--min-free", str(10 ** 18))
@@ -623,6 +654,7 @@ def main():
         server.stop()
     try:
         total += run_allowed_host(binary, work)
+        total += run_durable_cancel(binary, work)
         total += run_storage_guard(binary, work)
         total += run_real_full_disk(binary, work)
     finally:
