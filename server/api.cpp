@@ -7,6 +7,7 @@
 #include <iostream>
 #include <map>
 
+#include "http_server.h"
 #include "job_status.h"
 #include "problem.h"
 #include "request_body.h"
@@ -393,6 +394,11 @@ void Api::install(httplib::Server& server, bool accessLog) {
     });
     server.set_error_handler(httplib::Server::HandlerWithResponse([](const Request&, Response& res) {
         if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+        if (const std::string& head = HttpServer::headRefusal(); !head.empty()) {
+            res.set_header("Connection", "close");
+            problem(res, 431, head);
+            return httplib::Server::HandlerResponse::Handled;
+        }
         problem(res, res.status,
                 res.status == 404 ? "no such resource (see /api/openapi.json)"
                                   : std::string(reasonPhrase(res.status)));

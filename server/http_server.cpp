@@ -25,6 +25,8 @@ using Clock = std::chrono::steady_clock;
 // Set while a response is written that must end its connection. httplib 0.11 writes "Connection: close" but
 // goes on reading: the unread body of a refused request would be taken for the next request.
 thread_local bool closeAfterResponse = false;
+// Set when the request's head passed its limits (ConnectionLimits::maxHeadBytes, maxHeaderLines).
+thread_local std::string headRefused;
 
 // Threads added while every one is busy, up to a cap; they stay until shutdown.
 class GrowingThreadPool : public httplib::TaskQueue {
@@ -113,16 +115,21 @@ std::string peerAddress(int sock, int& port, bool local) {
 class DeadlineStream : public httplib::Stream {
   public:
     DeadlineStream(int sock, std::string peer, int peerPort, std::chrono::microseconds readTimeout,
-                   std::chrono::microseconds writeTimeout)
+                   std::chrono::microseconds writeTimeout, const ConnectionLimits& limits)
         : sock_(sock),
           peer_(std::move(peer)),
           peerPort_(peerPort),
           readTimeout_(readTimeout),
-          writeTimeout_(writeTimeout) {
+          writeTimeout_(writeTimeout),
+          limits_(limits) {
         local_ = peerAddress(sock, localPort_, true);
     }
 
-    void startRequest(Clock::time_point deadline) { deadline_ = deadline; }
+    void startRequest(Clock::time_point deadline) {
+        deadline_ = deadline;
+        inHead_ = true, lineEmpty_ = false, headBytes_ = 0, headLines_ = 0;
+        headRefused.clear();
+    }
 
     bool is_readable() const override {
         const auto now = Clock::now();
@@ -130,8 +137,20 @@ class DeadlineStream : public httplib::Stream {
     }
     bool is_writable() const override { return waitFor(sock_, POLLOUT, Clock::now() + writeTimeout_); }
 
-    // Bytes already there are taken without a poll() first: one system call less per request.
+    // Bytes already there are taken without a poll() first: one system call less per request. A head past
+    // its limits reads as the end of the connection: httplib answers 400, which the error handler makes 431.
     ssize_t read(char* ptr, size_t size) override {
+        const ssize_t n = readBytes(ptr, size);
+        if (n > 0 && !withinHeadLimits(ptr, size_t(n))) {
+            headRefused = "the request's head is larger than " + std::to_string(limits_.maxHeadBytes) +
+                          " bytes or " + std::to_string(limits_.maxHeaderLines) + " header lines";
+            closeAfterResponse = true;
+            return -1;
+        }
+        return n;
+    }
+
+    ssize_t readBytes(char* ptr, size_t size) {
         if (bufferBegin_ == bufferEnd_) {
             char* into = size < sizeof buffer_ ? buffer_ : ptr;
             const size_t most = size < sizeof buffer_ ? sizeof buffer_ : size;
@@ -174,6 +193,22 @@ class DeadlineStream : public httplib::Stream {
     bool hasBufferedBytes() const { return bufferBegin_ < bufferEnd_; }
 
   private:
+    // Counts the head's bytes and lines as they are read, until the empty line that ends it.
+    bool withinHeadLimits(const char* p, size_t n) {
+        for (size_t i = 0; i < n && inHead_; ++i) {
+            ++headBytes_;
+            if (p[i] == '\n') {
+                ++headLines_;
+                inHead_ = !lineEmpty_;
+                lineEmpty_ = true;
+            } else if (p[i] != '\r') {
+                lineEmpty_ = false;
+            }
+        }
+        // The request line and the empty line are no header lines.
+        return headBytes_ <= limits_.maxHeadBytes && headLines_ <= limits_.maxHeaderLines + 2;
+    }
+
     ssize_t recvRetrying(char* ptr, size_t size, int flags) {
         for (;;) {
             const ssize_t n = ::recv(sock_, ptr, size, flags);
@@ -187,7 +222,10 @@ class DeadlineStream : public httplib::Stream {
     std::string local_;
     int localPort_ = 0;
     const std::chrono::microseconds readTimeout_, writeTimeout_;
+    const ConnectionLimits& limits_;
     Clock::time_point deadline_ = Clock::time_point::max();
+    bool inHead_ = true, lineEmpty_ = false;
+    size_t headBytes_ = 0, headLines_ = 0;
     char buffer_[4096];
     size_t bufferBegin_ = 0, bufferEnd_ = 0;
 };
@@ -197,9 +235,10 @@ void sendTooManyConnections(int sock, size_t limit) {
         "{\"type\":\"about:blank\",\"title\":\"Too Many Requests\",\"status\":429,\"detail\":\"too many "
         "connections from your address at once (the limit is " +
         std::to_string(limit) + ")\"}";
-    const std::string response = "HTTP/1.1 429 Too Many Requests\r\nContent-Type: application/problem+json\r\n"
-                                 "Retry-After: 1\r\nConnection: close\r\nContent-Length: " +
-                                 std::to_string(body.size()) + "\r\n\r\n" + body;
+    const std::string response =
+        "HTTP/1.1 429 Too Many Requests\r\nContent-Type: application/problem+json\r\n"
+        "Retry-After: 1\r\nConnection: close\r\nContent-Length: " +
+        std::to_string(body.size()) + "\r\n\r\n" + body;
     [[maybe_unused]] const ssize_t sent =
         ::send(sock, response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
 }
@@ -215,6 +254,10 @@ HttpServer::HttpServer(const ConnectionLimits& limits) : limits_(limits) {
         closeAfterResponse = res.get_header_value("Connection") == "close" || res.status == 400 ||
                              res.status == 413 || res.status == 414;
     });
+}
+
+const std::string& HttpServer::headRefusal() {
+    return headRefused;
 }
 
 bool HttpServer::bind(const std::string& host, int port) {
@@ -258,7 +301,8 @@ bool HttpServer::process_and_close_socket(socket_t sock) {
         DeadlineStream stream(
             sock, peer, port,
             std::chrono::seconds(read_timeout_sec_) + std::chrono::microseconds(read_timeout_usec_),
-            std::chrono::seconds(write_timeout_sec_) + std::chrono::microseconds(write_timeout_usec_));
+            std::chrono::seconds(write_timeout_sec_) + std::chrono::microseconds(write_timeout_usec_),
+            limits_);
         for (size_t left = keep_alive_max_count_; left > 0 && svr_sock_ != INVALID_SOCKET; --left) {
             if (!stream.hasBufferedBytes() &&
                 !waitFor(sock, POLLIN, Clock::now() + std::chrono::seconds(keep_alive_timeout_sec_)))
