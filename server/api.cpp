@@ -394,9 +394,9 @@ void Api::install(httplib::Server& server, bool accessLog) {
     });
     server.set_error_handler(httplib::Server::HandlerWithResponse([](const Request&, Response& res) {
         if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
-        if (const std::string& head = HttpServer::headRefusal(); !head.empty()) {
+        if (const HttpServer::HeadRefusal& head = HttpServer::headRefusal(); head.status != 0) {
             res.set_header("Connection", "close");
-            problem(res, 431, head);
+            problem(res, head.status, head.detail);
             return httplib::Server::HandlerResponse::Handled;
         }
         problem(res, res.status,

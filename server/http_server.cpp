@@ -26,7 +26,7 @@ using Clock = std::chrono::steady_clock;
 // goes on reading: the unread body of a refused request would be taken for the next request.
 thread_local bool closeAfterResponse = false;
 // Set when the request's head passed its limits (ConnectionLimits::maxHeadBytes, maxHeaderLines).
-thread_local std::string headRefused;
+thread_local HttpServer::HeadRefusal headRefused;
 
 // Threads added while every one is busy, up to a cap; they stay until shutdown.
 class GrowingThreadPool : public httplib::TaskQueue {
@@ -127,8 +127,8 @@ class DeadlineStream : public httplib::Stream {
 
     void startRequest(Clock::time_point deadline) {
         deadline_ = deadline;
-        inHead_ = true, lineEmpty_ = false, headBytes_ = 0, headLines_ = 0;
-        headRefused.clear();
+        inHead_ = true, lineEmpty_ = false, sawColon_ = false, headBytes_ = 0, headLines_ = 0;
+        headRefused = {};
     }
 
     bool is_readable() const override {
@@ -137,19 +137,17 @@ class DeadlineStream : public httplib::Stream {
     }
     bool is_writable() const override { return waitFor(sock_, POLLOUT, Clock::now() + writeTimeout_); }
 
-    // Bytes already there are taken without a poll() first: one system call less per request. A head past
-    // its limits reads as the end of the connection: httplib answers 400, which the error handler makes 431.
+    // A head past its limits or with a malformed line reads as the end of the connection: httplib answers
+    // 400, which the error handler makes the refusal's problem.
     ssize_t read(char* ptr, size_t size) override {
         const ssize_t n = readBytes(ptr, size);
-        if (n > 0 && !withinHeadLimits(ptr, size_t(n))) {
-            headRefused = "the request's head is larger than " + std::to_string(limits_.maxHeadBytes) +
-                          " bytes or " + std::to_string(limits_.maxHeaderLines) + " header lines";
-            closeAfterResponse = true;
-            return -1;
-        }
-        return n;
+        if (n > 0) headRefused = checkHead(ptr, size_t(n));
+        if (headRefused.status == 0) return n;
+        closeAfterResponse = true;
+        return -1;
     }
 
+    // Bytes already there are taken without a poll() first: one system call less per request.
     ssize_t readBytes(char* ptr, size_t size) {
         if (bufferBegin_ == bufferEnd_) {
             char* into = size < sizeof buffer_ ? buffer_ : ptr;
@@ -193,20 +191,34 @@ class DeadlineStream : public httplib::Stream {
     bool hasBufferedBytes() const { return bufferBegin_ < bufferEnd_; }
 
   private:
-    // Counts the head's bytes and lines as they are read, until the empty line that ends it.
-    bool withinHeadLimits(const char* p, size_t n) {
+    // Reads the head's bytes as they come, until the empty line that ends it: its size and lines within the
+    // limits, and header lines httplib 0.11 would take or drop silently refused (issue 31): a NUL byte, a
+    // line without a colon, white space before the colon (e.g. "Transfer-Encoding : chunked", which a proxy
+    // in front may read as chunked while httplib does not).
+    HttpServer::HeadRefusal checkHead(const char* p, size_t n) {
         for (size_t i = 0; i < n && inHead_; ++i) {
             ++headBytes_;
-            if (p[i] == '\n') {
+            const char c = p[i];
+            const bool headerLine = headLines_ > 0;  // the request line is no header line
+            if (c == '\0') return {400, "the request's head holds a NUL byte"};
+            if (c == '\n') {
+                if (headerLine && !lineEmpty_ && !sawColon_)
+                    return {400, "header line " + std::to_string(headLines_) + " has no colon"};
                 ++headLines_;
                 inHead_ = !lineEmpty_;
-                lineEmpty_ = true;
-            } else if (p[i] != '\r') {
-                lineEmpty_ = false;
+                lineEmpty_ = true, sawColon_ = false;
+                continue;
             }
+            if (headerLine && !sawColon_ && (c == ' ' || c == '\t'))
+                return {400, "header line " + std::to_string(headLines_) + " has white space in its name"};
+            sawColon_ = sawColon_ || c == ':';
+            if (c != '\r') lineEmpty_ = false;
         }
         // The request line and the empty line are no header lines.
-        return headBytes_ <= limits_.maxHeadBytes && headLines_ <= limits_.maxHeaderLines + 2;
+        if (headBytes_ > limits_.maxHeadBytes || headLines_ > limits_.maxHeaderLines + 2)
+            return {431, "the request's head is larger than " + std::to_string(limits_.maxHeadBytes) +
+                             " bytes or " + std::to_string(limits_.maxHeaderLines) + " header lines"};
+        return {};
     }
 
     ssize_t recvRetrying(char* ptr, size_t size, int flags) {
@@ -224,7 +236,7 @@ class DeadlineStream : public httplib::Stream {
     const std::chrono::microseconds readTimeout_, writeTimeout_;
     const ConnectionLimits& limits_;
     Clock::time_point deadline_ = Clock::time_point::max();
-    bool inHead_ = true, lineEmpty_ = false;
+    bool inHead_ = true, lineEmpty_ = false, sawColon_ = false;
     size_t headBytes_ = 0, headLines_ = 0;
     char buffer_[4096];
     size_t bufferBegin_ = 0, bufferEnd_ = 0;
@@ -256,7 +268,7 @@ HttpServer::HttpServer(const ConnectionLimits& limits) : limits_(limits) {
     });
 }
 
-const std::string& HttpServer::headRefusal() {
+const HttpServer::HeadRefusal& HttpServer::headRefusal() {
     return headRefused;
 }
 

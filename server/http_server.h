@@ -34,9 +34,13 @@ class HttpServer : public httplib::Server {
     bool bind(const std::string& host, int port);
     int bindToAnyPort(const std::string& host);
 
-    // Why the request this thread is answering was cut off in its head (431), or empty: for the error
-    // handler, which httplib calls with a plain 400.
-    static const std::string& headRefusal();
+    // Why the request this thread is answering was cut off in its head (status 0: it was not), for the error
+    // handler, which httplib calls with a plain 400: 431 past the head's limits, 400 for a malformed line.
+    struct HeadRefusal {
+        int status = 0;
+        std::string detail;
+    };
+    static const HeadRefusal& headRefusal();
 
   private:
     // Replaces httplib's connection loop (same keep-alive rules) with one reading through DeadlineStream.

@@ -203,6 +203,15 @@ def cases():
         ("99 header lines", http("GET", "/healthz", headers={"X-%d" % i: "1" for i in range(98)}), 200, None),
         ("101 header lines", http("GET", "/healthz", headers={"X-%d" % i: "1" for i in range(100)}), 431, None),
         ("head of 70 KB", http("GET", "/healthz", headers={"X-%d" % i: "a" * 1000 for i in range(70)}), 431, None),
+        ("header line without colon", b"GET /healthz HTTP/1.1\r\nHost: localhost\r\nX-No-Colon\r\n\r\n", 400, None),
+        ("NUL in a header value", b"GET /healthz HTTP/1.1\r\nHost: localhost\r\nX-A: a\x00b\r\n\r\n", 400, None),
+        ("folded header line", b"GET /healthz HTTP/1.1\r\nHost: localhost\r\nX-A: 1\r\n\tmore: 2\r\n\r\n", 400, None),
+        ("Transfer-Encoding with a space before its colon",
+         b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\nContent-Length: %d\r\n"
+         b"Transfer-Encoding : chunked\r\n\r\n" % len(job()) + job(), 400, None),
+        ("Transfer-Encoding beside Content-Length",
+         b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\nContent-Length: %d\r\n"
+         b"transfer-encoding: chunked\r\n\r\n" % len(job()) + job(), {400, 411}, None),
         ("not JSON", post_job(b"{photons: 5}"), 400, None),
         ("JSON array", post_job(b"[]"), 400, None),
         ("JSON trailing junk", post_job(b"{} {}"), 400, None),
