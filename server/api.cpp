@@ -1,10 +1,13 @@
 #include "api.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <functional>
 #include <iostream>
 #include <map>
 
+#include "http_server.h"
 #include "job_status.h"
 #include "problem.h"
 #include "request_body.h"
@@ -31,8 +34,13 @@ void logRequest(const Request& req, const Response& res) {
 }  // namespace
 
 Api::Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
-         std::string readOnly)
-    : results_(results), queue_(queue), catalog_(catalog), limits_(limits), readOnly_(std::move(readOnly)) {}
+         std::string readOnly, const std::vector<std::string>& allowedHosts)
+    : results_(results),
+      queue_(queue),
+      catalog_(catalog),
+      limits_(limits),
+      readOnly_(std::move(readOnly)),
+      allowedHosts_(allowedHosts.begin(), allowedHosts.end()) {}
 
 std::vector<Route> Api::routes() {
     std::vector<Route> routes = {
@@ -94,17 +102,12 @@ json Api::storageJson() const {
 }
 
 void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
-    const std::string type = mediaType(req);
     BodyCollector body(limits_, req);
     body.read(reader);
     if (body.tooLarge())
         return problem(res, 413, "the job is larger than " + std::to_string(body.limit()) + " bytes");
     if (!body.complete()) return problem(res, 400, kShortBody);
     if (refuseWhenStorageLow(res)) return;
-    if (!type.empty() && type != kJsonType && type != "application/x-www-form-urlencoded" &&
-        type != "text/plain") {
-        return problem(res, 415, "send the job as application/json (got " + type + ")");
-    }
     json j;
     try {
         j = parseUntrustedJson(body.bytes(), "the body");
@@ -196,14 +199,19 @@ void Api::listJobs(const Request& req, Response& res) {
     } catch (const Error& e) {
         return problem(res, 400, e.what(), e.field());
     }
+    // Bounded in bytes as well as in jobs: at least one job, then as many as fit (issue 31).
     json jobs = json::array();
-    for (const auto& job : queue_.jobs(int(limit), int(offset))) jobs.push_back(jobStatusJson(job, queue_));
-    const int64_t total = queue_.jobCount();
-    json doc = {{"jobs", jobs}, {"total", total}, {"limit", limit}, {"offset", offset}, {"next", nullptr}};
-    if (offset + limit < total) {
-        doc["next"] =
-            "/api/jobs?limit=" + std::to_string(limit) + "&offset=" + std::to_string(offset + limit);
+    size_t bytes = 0;
+    for (const auto& job : queue_.jobs(int(limit), int(offset))) {
+        json status = jobStatusJson(job, queue_);
+        bytes += status.dump().size();
+        if (!jobs.empty() && bytes > limits_.maxListBytes) break;
+        jobs.push_back(std::move(status));
     }
+    const int64_t total = queue_.jobCount(), after = offset + int64_t(jobs.size());
+    json doc = {{"jobs", jobs}, {"total", total}, {"limit", limit}, {"offset", offset}, {"next", nullptr}};
+    if (after < total)
+        doc["next"] = "/api/jobs?limit=" + std::to_string(limit) + "&offset=" + std::to_string(after);
     sendJson(res, 200, doc);
 }
 
@@ -371,7 +379,13 @@ void Api::install(httplib::Server& server, bool accessLog) {
     RequestRules rules{routes(),
                        limits.maxUrlBytes,
                        [limits](const std::string& path) { return bodyLimit(limits, path); },
-                       {"POST /api/jobs", "POST /api/meshes"}};
+                       {{"POST /api/jobs", {kJsonType}},
+                        {"POST /api/meshes", {"application/octet-stream", "multipart/form-data"}}}};
+    for (std::string host : allowedHosts_) {
+        std::transform(host.begin(), host.end(), host.begin(),
+                       [](unsigned char c) { return std::tolower(c); });
+        rules.allowedHosts.insert(std::move(host));
+    }
     server.set_payload_max_length(std::max(limits.maxBodyBytes, limits.maxUploadBytes));
     server.set_pre_routing_handler([rules = std::move(rules)](const Request& req, Response& res) {
         const auto refusal = checkRequest(req, rules);
@@ -382,6 +396,11 @@ void Api::install(httplib::Server& server, bool accessLog) {
     });
     server.set_error_handler(httplib::Server::HandlerWithResponse([](const Request&, Response& res) {
         if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+        if (const HttpServer::HeadRefusal& head = HttpServer::headRefusal(); head.status != 0) {
+            res.set_header("Connection", "close");
+            problem(res, head.status, head.detail);
+            return httplib::Server::HandlerResponse::Handled;
+        }
         problem(res, res.status,
                 res.status == 404 ? "no such resource (see /api/openapi.json)"
                                   : std::string(reasonPhrase(res.status)));

@@ -3,6 +3,7 @@
 // the access log. Answers are written with problem.h (problem+json, RFC 9457), a job's status with
 // job_status.h, bodies read with request_body.h. Handlers only read and write the store and the queue; jobs
 // run on the queue's worker.
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,8 +25,9 @@ std::string_view openApiDocument();
 class Api {
   public:
     // `readOnly`: why the store cannot be written (empty: it can); then every route that writes answers 503.
+    // `allowedHosts`: names the server is reached by besides the loopback ones (RequestRules::allowedHosts).
     Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
-        std::string readOnly);
+        std::string readOnly, const std::vector<std::string>& allowedHosts);
     // Registers every route, the guards that run before them, the error handlers and the access log.
     void install(httplib::Server& server, bool accessLog);
     static std::vector<Route> routes();
@@ -50,6 +52,7 @@ class Api {
     MeshCatalog& catalog_;
     ServiceLimits limits_;
     std::string readOnly_;
+    std::set<std::string> allowedHosts_;
 };
 
 }  // namespace facetlight::server

@@ -35,6 +35,9 @@ const char* const kMigrations[] = {
            format TEXT NOT NULL,
            created_at TEXT NOT NULL,
            summary TEXT NOT NULL);)",
+    // A cancel of a running job is recorded before it is acknowledged (issue 31): a crash before the job
+    // stops does not run it again.
+    "ALTER TABLE jobs ADD COLUMN cancel_requested INTEGER NOT NULL DEFAULT 0;",
 };
 
 // Whether a file can be created in `dir`: EROFS (or a permission error) means a read-only store.

@@ -25,6 +25,8 @@ using Clock = std::chrono::steady_clock;
 // Set while a response is written that must end its connection. httplib 0.11 writes "Connection: close" but
 // goes on reading: the unread body of a refused request would be taken for the next request.
 thread_local bool closeAfterResponse = false;
+// Set when the request's head passed its limits (ConnectionLimits::maxHeadBytes, maxHeaderLines).
+thread_local HttpServer::HeadRefusal headRefused;
 
 // Threads added while every one is busy, up to a cap; they stay until shutdown.
 class GrowingThreadPool : public httplib::TaskQueue {
@@ -113,16 +115,21 @@ std::string peerAddress(int sock, int& port, bool local) {
 class DeadlineStream : public httplib::Stream {
   public:
     DeadlineStream(int sock, std::string peer, int peerPort, std::chrono::microseconds readTimeout,
-                   std::chrono::microseconds writeTimeout)
+                   std::chrono::microseconds writeTimeout, const ConnectionLimits& limits)
         : sock_(sock),
           peer_(std::move(peer)),
           peerPort_(peerPort),
           readTimeout_(readTimeout),
-          writeTimeout_(writeTimeout) {
+          writeTimeout_(writeTimeout),
+          limits_(limits) {
         local_ = peerAddress(sock, localPort_, true);
     }
 
-    void startRequest(Clock::time_point deadline) { deadline_ = deadline; }
+    void startRequest(Clock::time_point deadline) {
+        deadline_ = deadline;
+        inHead_ = true, lineEmpty_ = false, sawColon_ = false, headBytes_ = 0, headLines_ = 0;
+        headRefused = {};
+    }
 
     bool is_readable() const override {
         const auto now = Clock::now();
@@ -130,8 +137,18 @@ class DeadlineStream : public httplib::Stream {
     }
     bool is_writable() const override { return waitFor(sock_, POLLOUT, Clock::now() + writeTimeout_); }
 
-    // Bytes already there are taken without a poll() first: one system call less per request.
+    // A head past its limits or with a malformed line reads as the end of the connection: httplib answers
+    // 400, which the error handler makes the refusal's problem.
     ssize_t read(char* ptr, size_t size) override {
+        const ssize_t n = readBytes(ptr, size);
+        if (n > 0) headRefused = checkHead(ptr, size_t(n));
+        if (headRefused.status == 0) return n;
+        closeAfterResponse = true;
+        return -1;
+    }
+
+    // Bytes already there are taken without a poll() first: one system call less per request.
+    ssize_t readBytes(char* ptr, size_t size) {
         if (bufferBegin_ == bufferEnd_) {
             char* into = size < sizeof buffer_ ? buffer_ : ptr;
             const size_t most = size < sizeof buffer_ ? sizeof buffer_ : size;
@@ -174,6 +191,36 @@ class DeadlineStream : public httplib::Stream {
     bool hasBufferedBytes() const { return bufferBegin_ < bufferEnd_; }
 
   private:
+    // Reads the head's bytes as they come, until the empty line that ends it: its size and lines within the
+    // limits, and header lines httplib 0.11 would take or drop silently refused (issue 31): a NUL byte, a
+    // line without a colon, white space before the colon (e.g. "Transfer-Encoding : chunked", which a proxy
+    // in front may read as chunked while httplib does not).
+    HttpServer::HeadRefusal checkHead(const char* p, size_t n) {
+        for (size_t i = 0; i < n && inHead_; ++i) {
+            ++headBytes_;
+            const char c = p[i];
+            const bool headerLine = headLines_ > 0;  // the request line is no header line
+            if (c == '\0') return {400, "the request's head holds a NUL byte"};
+            if (c == '\n') {
+                if (headerLine && !lineEmpty_ && !sawColon_)
+                    return {400, "header line " + std::to_string(headLines_) + " has no colon"};
+                ++headLines_;
+                inHead_ = !lineEmpty_;
+                lineEmpty_ = true, sawColon_ = false;
+                continue;
+            }
+            if (headerLine && !sawColon_ && (c == ' ' || c == '\t'))
+                return {400, "header line " + std::to_string(headLines_) + " has white space in its name"};
+            sawColon_ = sawColon_ || c == ':';
+            if (c != '\r') lineEmpty_ = false;
+        }
+        // The request line and the empty line are no header lines.
+        if (headBytes_ > limits_.maxHeadBytes || headLines_ > limits_.maxHeaderLines + 2)
+            return {431, "the request's head is larger than " + std::to_string(limits_.maxHeadBytes) +
+                             " bytes or " + std::to_string(limits_.maxHeaderLines) + " header lines"};
+        return {};
+    }
+
     ssize_t recvRetrying(char* ptr, size_t size, int flags) {
         for (;;) {
             const ssize_t n = ::recv(sock_, ptr, size, flags);
@@ -187,7 +234,10 @@ class DeadlineStream : public httplib::Stream {
     std::string local_;
     int localPort_ = 0;
     const std::chrono::microseconds readTimeout_, writeTimeout_;
+    const ConnectionLimits& limits_;
     Clock::time_point deadline_ = Clock::time_point::max();
+    bool inHead_ = true, lineEmpty_ = false, sawColon_ = false;
+    size_t headBytes_ = 0, headLines_ = 0;
     char buffer_[4096];
     size_t bufferBegin_ = 0, bufferEnd_ = 0;
 };
@@ -197,9 +247,10 @@ void sendTooManyConnections(int sock, size_t limit) {
         "{\"type\":\"about:blank\",\"title\":\"Too Many Requests\",\"status\":429,\"detail\":\"too many "
         "connections from your address at once (the limit is " +
         std::to_string(limit) + ")\"}";
-    const std::string response = "HTTP/1.1 429 Too Many Requests\r\nContent-Type: application/problem+json\r\n"
-                                 "Retry-After: 1\r\nConnection: close\r\nContent-Length: " +
-                                 std::to_string(body.size()) + "\r\n\r\n" + body;
+    const std::string response =
+        "HTTP/1.1 429 Too Many Requests\r\nContent-Type: application/problem+json\r\n"
+        "Retry-After: 1\r\nConnection: close\r\nContent-Length: " +
+        std::to_string(body.size()) + "\r\n\r\n" + body;
     [[maybe_unused]] const ssize_t sent =
         ::send(sock, response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
 }
@@ -215,6 +266,10 @@ HttpServer::HttpServer(const ConnectionLimits& limits) : limits_(limits) {
         closeAfterResponse = res.get_header_value("Connection") == "close" || res.status == 400 ||
                              res.status == 413 || res.status == 414;
     });
+}
+
+const HttpServer::HeadRefusal& HttpServer::headRefusal() {
+    return headRefused;
 }
 
 bool HttpServer::bind(const std::string& host, int port) {
@@ -258,7 +313,8 @@ bool HttpServer::process_and_close_socket(socket_t sock) {
         DeadlineStream stream(
             sock, peer, port,
             std::chrono::seconds(read_timeout_sec_) + std::chrono::microseconds(read_timeout_usec_),
-            std::chrono::seconds(write_timeout_sec_) + std::chrono::microseconds(write_timeout_usec_));
+            std::chrono::seconds(write_timeout_sec_) + std::chrono::microseconds(write_timeout_usec_),
+            limits_);
         for (size_t left = keep_alive_max_count_; left > 0 && svr_sock_ != INVALID_SOCKET; --left) {
             if (!stream.hasBufferedBytes() &&
                 !waitFor(sock, POLLIN, Clock::now() + std::chrono::seconds(keep_alive_timeout_sec_)))

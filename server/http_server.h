@@ -15,12 +15,15 @@
 namespace facetlight::server {
 
 struct ConnectionLimits {
-    size_t threads = 8;                // started at once
-    size_t maxThreads = 256;           // added while all are busy, never more
-    size_t maxPerPeer = 64;            // connections open at once from one address
+    size_t threads = 8;                                // started at once
+    size_t maxThreads = 256;                           // added while all are busy, never more
+    size_t maxPerPeer = 64;                            // connections open at once from one address
     std::chrono::milliseconds requestTimeout{30'000};  // request line, headers and body, from the first byte
-    int backlog = 1024;                // connections waiting to be accepted (the kernel caps it at somaxconn)
-    size_t keepAliveRequests = 1000;   // requests on one connection (httplib's 5 made pollers reconnect)
+    int backlog = 1024;               // connections waiting to be accepted (the kernel caps it at somaxconn)
+    size_t keepAliveRequests = 1000;  // requests on one connection (httplib's 5 made pollers reconnect)
+    // A request's head (its line and headers): 0.11 kept every header line it was sent, 110 MB a connection.
+    size_t maxHeadBytes = 64 << 10;
+    size_t maxHeaderLines = 100;  // Host, Content-Type and the others, each a line
 };
 
 class HttpServer : public httplib::Server {
@@ -30,6 +33,14 @@ class HttpServer : public httplib::Server {
     // As bind_to_port and bind_to_any_port, with the listen backlog raised.
     bool bind(const std::string& host, int port);
     int bindToAnyPort(const std::string& host);
+
+    // Why the request this thread is answering was cut off in its head (status 0: it was not), for the error
+    // handler, which httplib calls with a plain 400: 431 past the head's limits, 400 for a malformed line.
+    struct HeadRefusal {
+        int status = 0;
+        std::string detail;
+    };
+    static const HeadRefusal& headRefusal();
 
   private:
     // Replaces httplib's connection loop (same keep-alive rules) with one reading through DeadlineStream.

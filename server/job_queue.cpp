@@ -44,6 +44,12 @@ JobQueue::~JobQueue() {
 void JobQueue::start(bool runJobs) {
     std::lock_guard lock(mutex_);
     for (JobRecord& job : store_.unfinishedJobs()) {
+        if (job.cancelRequested) {  // acknowledged, then a crash came before the job stopped
+            job.state = JobState::Canceled;
+            job.finishedAt = nowIso8601();
+            record(job);
+            continue;
+        }
         const bool wasRunning = job.state == JobState::Running;
         job.state = JobState::Queued;
         job.startedAt.clear();
@@ -130,6 +136,15 @@ JobQueue::CancelOutcome JobQueue::cancel(const std::string& id) {
         return CancelOutcome::Canceled;
     }
     if (running_ && runningId_ == id) {
+        // Recorded before the answer, so that a crash before the job stops cannot run it again (issue 31).
+        // A store that refuses writes is the degraded mode of record(): the job stops, and its end is kept
+        // in memory until the store takes writes.
+        try {
+            store_.requestCancel(id);
+        } catch (const StorageError& e) {
+            std::cerr << "facetlight-server: job " << id << ": recording the cancel failed: " << e.what()
+                      << "\n";
+        }
         running_->cancel();
         return CancelOutcome::Requested;
     }

@@ -9,7 +9,9 @@ namespace facetlight::server {
 namespace {
 
 constexpr const char* kJobColumns =
-    "SELECT seq, id, state, request, created_at, started_at, finished_at, error, threads_used FROM jobs ";
+    "SELECT seq, id, state, request, created_at, started_at, finished_at, error, threads_used, "
+    "cancel_requested "
+    "FROM jobs ";
 
 JobRecord readJob(const Statement& s) {
     JobRecord j;
@@ -26,6 +28,7 @@ JobRecord readJob(const Statement& s) {
     j.startedAt = s.text(5);
     j.finishedAt = s.text(6);
     j.error = s.text(7);
+    j.cancelRequested = s.integer(9) != 0;
     j.threadsUsed = int(s.integer(8));
     return j;
 }
@@ -108,6 +111,13 @@ void JobStore::saveState(const JobRecord& job) {
         .bind(4, job.error)
         .bind(5, int64_t(job.threadsUsed))
         .bind(6, job.id);
+    s.step();
+}
+
+void JobStore::requestCancel(const std::string& id) {
+    std::lock_guard lock(db_.mutex());
+    Statement s(db_.handle(), "UPDATE jobs SET cancel_requested = 1 WHERE id = ?");
+    s.bind(1, id);
     s.step();
 }
 

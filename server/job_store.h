@@ -33,7 +33,8 @@ struct JobRecord {
     std::string specError;
     std::string createdAt, startedAt, finishedAt;  // ISO 8601 UTC; empty until it happens
     std::string error;                             // why it failed
-    int threadsUsed = 0;  // threads the worker gave it (the request capped at the cores)
+    int threadsUsed = 0;           // threads the worker gave it (the request capped at the cores)
+    bool cancelRequested = false;  // a cancel of it running was acknowledged: a restart cancels it
 };
 
 class JobStore {
@@ -49,6 +50,8 @@ class JobStore {
 
     // Writes the job's state, times, error and threads. Throws StorageError when the store cannot be written.
     void saveState(const JobRecord& job);
+    // Records that the running job was asked to stop, before the client is told. Throws StorageError.
+    void requestCancel(const std::string& id);
     // Removes a job; false when there was no such job.
     bool deleteJob(const std::string& id);
 

@@ -67,6 +67,10 @@ int main(int argc, char** argv) {
     app.add_option("--cores", config.cores, "Cap on a job's threads (0: all the machine's cores)")
         ->capture_default_str()
         ->check(CLI::Range(0, 1024));
+    app.add_option(
+        "--allowed-host", config.allowedHosts,
+        "A name the server is reached by besides localhost, 127.0.0.1 and [::1] (and --host), without "
+        "a port; repeatable. Requests for other Host names get 421, changes from other Origins 403");
     app.add_flag("!--no-access-log", config.accessLog, "Do not log each request on stderr");
     std::string launcher;
     facetlight::server::LaunchSettings launch;
@@ -79,6 +83,9 @@ int main(int argc, char** argv) {
                    "With --launcher: folder for the children's job files, shared by every node");
     CLI11_PARSE(app, argc, argv);
     config.http.requestTimeout = std::chrono::milliseconds(int64_t(requestTimeout * 1000));
+    // The address bound, unless it is every address, is a name the server is reached by.
+    if (host != "0.0.0.0" && host != "::")
+        config.allowedHosts.push_back(host.find(':') == std::string::npos ? host : "[" + host + "]");
     if (!launcher.empty()) {
         try {
             launch.launcher = facetlight::server::splitWords(launcher);

@@ -2,12 +2,16 @@
 
 #include <iostream>
 
+#include "util/excerpt.h"
+
 namespace facetlight::server {
 
 std::string_view reasonPhrase(int status) {
     switch (status) {
         case 400:
             return "Bad Request";
+        case 403:
+            return "Forbidden";
         case 404:
             return "Not Found";
         case 405:
@@ -22,8 +26,12 @@ std::string_view reasonPhrase(int status) {
             return "URI Too Long";
         case 415:
             return "Unsupported Media Type";
+        case 421:
+            return "Misdirected Request";
         case 422:
             return "Unprocessable Content";
+        case 431:
+            return "Request Header Fields Too Large";
         case 500:
             return "Internal Server Error";
         case 503:
@@ -35,12 +43,16 @@ std::string_view reasonPhrase(int status) {
     }
 }
 
+// Whatever a message quotes, a problem stays short and valid JSON (issue 31): the excerpts are the backstop
+// of the quoting in the messages, the replacement of bytes that are not UTF-8 that of the readers.
 void problem(httplib::Response& res, int status, const std::string& detail, const std::string& field) {
-    nlohmann::json body = {
-        {"type", "about:blank"}, {"title", reasonPhrase(status)}, {"status", status}, {"detail", detail}};
-    if (!field.empty()) body["field"] = field;
+    nlohmann::json body = {{"type", "about:blank"},
+                           {"title", reasonPhrase(status)},
+                           {"status", status},
+                           {"detail", excerpt(detail, kMaxDetailBytes)}};
+    if (!field.empty()) body["field"] = excerpt(field, kMaxFieldBytes);
     res.status = status;
-    res.set_content(body.dump(), kProblemType);
+    res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), kProblemType);
 }
 
 void sendJson(httplib::Response& res, int status, const nlohmann::json& body) {

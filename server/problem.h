@@ -1,6 +1,7 @@
 #pragma once
 // The service's JSON answers: a document, or a problem (RFC 9457 problem+json) titled by its status, with the
 // dotted path of the request's field at fault when there is one.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -14,6 +15,10 @@ namespace facetlight::server {
 
 constexpr const char* kProblemType = "application/problem+json";
 constexpr const char* kJsonType = "application/json";
+
+// The most bytes of a problem's detail and field: a 100 KB input quoted in either came back whole.
+constexpr size_t kMaxDetailBytes = 1024;
+constexpr size_t kMaxFieldBytes = 128;
 
 std::string_view reasonPhrase(int status);
 void problem(httplib::Response& res, int status, const std::string& detail, const std::string& field = {});

@@ -28,14 +28,6 @@ void BodyCollector::readMultipart(const httplib::ContentReader& reader,
         reader(header, [&](const char* data, size_t n) { return wanted() ? (*this)(data, n) : true; });
 }
 
-std::string mediaType(const httplib::Request& req) {
-    std::string type = req.get_header_value("Content-Type");
-    type = type.substr(0, type.find(';'));
-    while (!type.empty() && type.back() == ' ') type.pop_back();
-    for (char& c : type) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return type;
-}
-
 int64_t queryInt(const httplib::Request& req, const std::string& name, int64_t fallback, int64_t lo,
                  int64_t hi) {
     if (!req.has_param(name)) return fallback;

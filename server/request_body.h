@@ -1,5 +1,5 @@
 #pragma once
-// Reading a request: its body as it arrives, within its route's limit; its media type; a query parameter.
+// Reading a request: its body as it arrives, within its route's limit; a query parameter.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -40,9 +40,6 @@ class BodyCollector {
 
 // A body that stopped short of its Content-Length (the client went away, or lied): nothing is stored.
 constexpr const char* kShortBody = "the body ended before its Content-Length; nothing was stored";
-
-// The Content-Type without its parameters, in lower case.
-std::string mediaType(const httplib::Request& req);
 
 // A query parameter as an integer in [lo, hi]; `fallback` when absent. Throws Error naming it.
 int64_t queryInt(const httplib::Request& req, const std::string& name, int64_t fallback, int64_t lo,

@@ -34,6 +34,40 @@ Refusal refuse(int status, std::string detail) {
     return {status, std::move(detail), {{"Connection", "close"}}};
 }
 
+std::string lowerCase(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+// Whether `authority` (a Host header, or an Origin after its scheme) is one of `hosts`, with or without a
+// port. "[::1]" holds colons of its own: a port comes after the last one, outside the brackets.
+bool isAllowedHost(std::string_view authority, const std::set<std::string>& hosts) {
+    std::string name = lowerCase(authority);
+    if (const size_t colon = name.rfind(':');
+        colon != std::string::npos && name.find(']', colon) == std::string::npos) {
+        const std::string_view port = std::string_view(name).substr(colon + 1);
+        if (port.empty() || port.size() > 5 || port.find_first_not_of("0123456789") != std::string::npos)
+            return false;
+        name.resize(colon);
+    }
+    return hosts.count(name) > 0;
+}
+
+// An Origin of ours: http or https (behind a proxy) and an allowed host; "null" (a sandboxed or file page) is
+// not.
+bool isOurOrigin(std::string_view origin, const std::set<std::string>& hosts) {
+    const std::string lower = lowerCase(origin);
+    for (std::string_view scheme : {"http://", "https://"})
+        if (lower.starts_with(scheme))
+            return isAllowedHost(std::string_view(lower).substr(scheme.size()), hosts);
+    return false;
+}
+
+bool changesState(const std::string& method) {
+    return method == "POST" || method == "PUT" || method == "PATCH" || method == "DELETE";
+}
+
 }  // namespace
 
 std::vector<std::string> methodsAllowed(const std::vector<Route>& routes, std::string_view path) {
@@ -52,6 +86,14 @@ std::optional<Refusal> checkRequest(const httplib::Request& req, const RequestRu
     if (req.target.size() > rules.maxUrlBytes)
         return refuse(414, "the URL is longer than " + std::to_string(rules.maxUrlBytes) + " bytes");
     if (hasControlCharacter(req.path)) return refuse(400, "the path contains control characters");
+    // HTTP/1.0 clients may send no Host; HTTP/1.1 requires one (httplib drops an empty one).
+    if (!req.has_header("Host")) {
+        if (req.version == "HTTP/1.1") return refuse(400, "an HTTP/1.1 request needs a Host header");
+    } else if (!isAllowedHost(req.get_header_value("Host"), rules.allowedHosts))
+        return refuse(421, "this server is not reached by that Host name; start it with --allowed-host NAME");
+    if (changesState(req.method) && req.has_header("Origin") &&
+        !isOurOrigin(req.get_header_value("Origin"), rules.allowedHosts))
+        return refuse(403, "changes are taken only from this server's own pages: the Origin is not ours");
     if (req.has_header("Transfer-Encoding"))
         return refuse(411, "chunked request bodies are not accepted: send Content-Length");
 
@@ -60,7 +102,8 @@ std::optional<Refusal> checkRequest(const httplib::Request& req, const RequestRu
         const std::string& v = it->second;
         if (v.empty() || v.size() > 15 || v.find_first_not_of("0123456789") != std::string::npos)
             return refuse(400, "Content-Length must be a whole number of bytes");
-        if (length && *length != v) return refuse(400, "the request has two different Content-Length headers");
+        if (length && *length != v)
+            return refuse(400, "the request has two different Content-Length headers");
         length = v;
     }
 
@@ -73,15 +116,31 @@ std::optional<Refusal> checkRequest(const httplib::Request& req, const RequestRu
         return r;
     }
 
-    for (const std::string& route : rules.bodyRoutes) {
-        const size_t space = route.find(' ');
-        if (!length && route.substr(0, space) == req.method && matchesTemplate(route.substr(space + 1), req.path))
-            return refuse(411, "send the body with a Content-Length header");
-    }
     const size_t limit = rules.bodyLimit(req.path);
     if (length && std::stoull(*length) > limit)
         return refuse(413, "the request body is larger than " + std::to_string(limit) + " bytes");
+    for (const auto& [route, types] : rules.bodyRoutes) {
+        const size_t space = route.find(' ');
+        if (route.substr(0, space) != req.method || !matchesTemplate(route.substr(space + 1), req.path))
+            continue;
+        if (!length) return refuse(411, "send the body with a Content-Length header");
+        // A browser sends form and text bodies to any site without asking first: only our own types pass.
+        if (const std::string type = mediaType(req); !types.count(type)) {
+            std::string list;
+            for (const auto& t : types) list += (list.empty() ? "" : " or ") + t;
+            return refuse(415, "send the body as " + list + " (got " +
+                                   (type.empty() ? std::string("no Content-Type") : escapeForLog(type, 80)) +
+                                   ")");
+        }
+    }
     return std::nullopt;
+}
+
+std::string mediaType(const httplib::Request& req) {
+    std::string type = req.get_header_value("Content-Type");
+    type = type.substr(0, type.find(';'));
+    while (!type.empty() && type.back() == ' ') type.pop_back();
+    return lowerCase(type);
 }
 
 std::string escapeForLog(std::string_view text, size_t maxBytes) {

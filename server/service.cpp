@@ -17,12 +17,14 @@ Service::Service(ServiceConfig config) : config_(std::move(config)), http_(confi
     queue_ = std::make_unique<JobQueue>(*store_, *results_, *runner_, config_.limits.maxQueued,
                                         config_.limits.minFreeBytes, cores);
     const std::string& readOnly = database_->readOnlyReason();
-    api_ = std::make_unique<Api>(*results_, *queue_, *catalog_, config_.limits, readOnly);
+    api_ =
+        std::make_unique<Api>(*results_, *queue_, *catalog_, config_.limits, readOnly, config_.allowedHosts);
     http_.set_tcp_nodelay(true);  // headers and body go out as two writes: no Nagle delay between them
     api_->install(http_, config_.accessLog);
     std::error_code ec;
     if (!config_.webDir.empty() && std::filesystem::is_directory(config_.webDir, ec)) {
-        // The page's ES modules: JavaScript's media type (RFC 9239), which browsers require of module scripts.
+        // The page's ES modules: JavaScript's media type (RFC 9239), which browsers require of module
+        // scripts.
         http_.set_file_extension_and_mimetype_mapping("js", "text/javascript");
         http_.set_file_extension_and_mimetype_mapping("mjs", "text/javascript");
         if (!http_.set_mount_point("/", config_.webDir.string())) {

@@ -1,10 +1,12 @@
 #pragma once
-// The whole service in one object, for main() and the tests: the stores (jobs, meshes, result files), the mesh
-// catalog, the runner, the queue with its worker and the HTTP server, started and stopped in the right order.
+// The whole service in one object, for main() and the tests: the stores (jobs, meshes, result files), the
+// mesh catalog, the runner, the queue with its worker and the HTTP server, started and stopped in the right
+// order.
 #include <atomic>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <httplib.h>
 
@@ -26,8 +28,11 @@ struct ServiceConfig {
     std::filesystem::path webDir = "web";
     ServiceLimits limits;
     ConnectionLimits http;  // threads, per-peer connections, request deadline
-    int cores = 0;  // 0: std::thread::hardware_concurrency()
+    int cores = 0;          // 0: std::thread::hardware_concurrency()
     bool accessLog = true;
+    // Names the server is reached by besides localhost, 127.0.0.1 and [::1] (--allowed-host): requests for
+    // other Host names are refused.
+    std::vector<std::string> allowedHosts;
     std::optional<LaunchSettings> launch;  // run jobs through a launcher such as mpirun (docs/distributed.md)
 };
 

@@ -14,6 +14,7 @@
 #include "geometry/halfspace.h"
 #include "io/mesh_io.h"
 #include "util/error.h"
+#include "util/excerpt.h"
 #include "util/number_text.h"
 
 namespace facetlight {
@@ -86,7 +87,7 @@ class GemCadParser {
     double number(std::string_view word, const char* what) const {
         double value = 0;
         if (!parseNumber(word, value) || !std::isfinite(value))
-            throw Error(where() + what + " '" + std::string(word.substr(0, 40)) + "' is not a valid number");
+            throw Error(where() + what + " " + inQuotes(word) + " is not a valid number");
         return value;
     }
 
@@ -100,8 +101,8 @@ class GemCadParser {
             if (words.size() < 2) throw Error(where() + "the gear line needs the number of teeth");
             long long teeth = 0;
             if (!parseInteger(words[1], teeth) || teeth <= 0 || teeth > kMaxGear)
-                throw Error(where() + "the gear '" + std::string(words[1].substr(0, 40)) +
-                            "' must be a whole number of teeth from 1 to " + std::to_string(kMaxGear));
+                throw Error(where() + "the gear " + inQuotes(words[1]) +
+                            " must be a whole number of teeth from 1 to " + std::to_string(kMaxGear));
             gear_ = double(teeth);
             gearOffset_ = words.size() > 2 ? number(words[2], "the gear offset") : 0.0;
         } else if (kind == "y") {
@@ -114,7 +115,7 @@ class GemCadParser {
         } else if (kind == "a") {
             parseTier(words);
         } else if (kind != "H" && kind != "F") {
-            warn(where() + "ignored a line of unknown kind '" + std::string(kind.substr(0, 40)) + "'");
+            warn(where() + "ignored a line of unknown kind " + inQuotes(kind));
         }
     }
 

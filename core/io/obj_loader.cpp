@@ -9,6 +9,7 @@
 
 #include "io/mesh_io.h"
 #include "util/error.h"
+#include "util/excerpt.h"
 #include "util/number_text.h"
 
 namespace facetlight {
@@ -53,8 +54,26 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-// Vertex coordinates must be finite numbers (tinyobj would read "nan" or "1,5" as 0); records each face's
-// line for the messages of the second pass.
+// tinyobj reads a face's indices ("v", "v/vt/vn", "-2") into an int, so 4294967300, 2^64 + 4 and -4294967292
+// would each wrap to vertex 4 (issue 31): an index must fit an int, read digit by digit.
+void checkFaceIndices(size_t line, std::string_view token) {
+    constexpr std::string_view kMax = "2147483647";
+    for (std::string_view rest = token; !rest.empty();) {
+        std::string_view part = rest.substr(0, rest.find('/'));
+        rest.remove_prefix(std::min(rest.size(), part.size() + 1));
+        if (!part.empty() && (part[0] == '-' || part[0] == '+')) part.remove_prefix(1);
+        if (part.find_first_not_of("0123456789") != std::string_view::npos)
+            continue;  // not a number: tinyobj's 0
+        part.remove_prefix(std::min(part.find_first_not_of('0'), part.size()));
+        if (part.size() > kMax.size() || (part.size() == kMax.size() && part > kMax)) {
+            throw Error(lineTag(line) + "face index " + inQuotes(token) + " is out of range (at most " +
+                        std::string(kMax) + " either way)");
+        }
+    }
+}
+
+// Vertex coordinates must be finite numbers (tinyobj would read "nan" or "1,5" as 0) and face indices fit an
+// int; records each face's line for the messages of the second pass.
 std::vector<size_t> checkLines(std::string_view text) {
     std::vector<size_t> faceLines;
     forEachLine(text, [&](size_t line, std::string_view content) {
@@ -66,15 +85,17 @@ std::vector<size_t> checkLines(std::string_view text) {
                 if (token.empty()) throw Error(lineTag(line) + "a vertex needs 3 coordinates");
                 double value = 0;
                 if (!parseNumber(token, value))
-                    throw Error(lineTag(line) + "vertex coordinate '" + std::string(token) +
-                                "' is not a valid number");
+                    throw Error(lineTag(line) + "vertex coordinate " + inQuotes(token) +
+                                " is not a valid number");
                 if (!std::isfinite(value))
-                    throw Error(lineTag(line) + "vertex coordinate '" + std::string(token) +
-                                "' is not a finite number");
+                    throw Error(lineTag(line) + "vertex coordinate " + inQuotes(token) +
+                                " is not a finite number");
             }
         } else if (kind == "f") {
             if (trim(rest).empty())
                 throw Error(lineTag(line) + "a face needs at least 3 vertices, it has none");
+            for (std::string_view token = nextToken(rest); !token.empty(); token = nextToken(rest))
+                checkFaceIndices(line, token);
             faceLines.push_back(line);
         }
     });

@@ -11,6 +11,7 @@
 #include "io/mesh_io.h"
 #include "io/stl_format.h"
 #include "util/error.h"
+#include "util/excerpt.h"
 #include "util/number_text.h"
 
 namespace facetlight {
@@ -142,24 +143,24 @@ bool equalsIgnoreCase(std::string_view a, std::string_view b) {
            });
 }
 
-std::string quoted(std::string_view token) {
-    if (token.empty()) return "the end of the file";
-    return "'" + std::string(token.substr(0, 40)) + (token.size() > 40 ? "...'" : "'");
+std::string quotedToken(std::string_view token) {
+    return token.empty() ? "the end of the file" : inQuotes(token);
 }
 
 void expect(Lexer& lex, std::string_view keyword) {
     const std::string_view token = lex.next();
     if (!equalsIgnoreCase(token, keyword))
-        throw Error(lex.where() + "expected '" + std::string(keyword) + "', found " + quoted(token));
+        throw Error(lex.where() + "expected '" + std::string(keyword) + "', found " + quotedToken(token));
 }
 
 // Normals are recomputed from the corners, so only corner coordinates must be finite.
 double readNumber(Lexer& lex, bool finite) {
     const std::string_view token = lex.next();
     double value = 0;
-    if (!parseNumber(token, value)) throw Error(lex.where() + "expected a number, found " + quoted(token));
+    if (!parseNumber(token, value))
+        throw Error(lex.where() + "expected a number, found " + quotedToken(token));
     if (finite && !std::isfinite(value))
-        throw Error(lex.where() + "vertex coordinate " + quoted(token) + " is not a finite number");
+        throw Error(lex.where() + "vertex coordinate " + quotedToken(token) + " is not a finite number");
     return value;
 }
 
@@ -174,7 +175,7 @@ PolygonMesh parseAscii(std::string_view text, const MeshLimits& limits) {
             const std::string_view token = lex.next();
             if (equalsIgnoreCase(token, "endsolid")) break;
             if (!equalsIgnoreCase(token, "facet"))
-                throw Error(lex.where() + "expected 'facet' or 'endsolid', found " + quoted(token));
+                throw Error(lex.where() + "expected 'facet' or 'endsolid', found " + quotedToken(token));
             expect(lex, "normal");
             for (int a = 0; a < 3; ++a) readNumber(lex, false);
             expect(lex, "outer");
@@ -190,7 +191,7 @@ PolygonMesh parseAscii(std::string_view text, const MeshLimits& limits) {
                 corners.push_back(p);
             }
             if (!equalsIgnoreCase(next, "endloop"))
-                throw Error(lex.where() + "expected 'vertex' or 'endloop', found " + quoted(next));
+                throw Error(lex.where() + "expected 'vertex' or 'endloop', found " + quotedToken(next));
             if (corners.size() < 3)
                 throw Error(where + "a facet needs at least 3 vertices, it has " +
                             std::to_string(corners.size()));

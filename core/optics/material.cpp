@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "util/error.h"
+#include "util/excerpt.h"
 
 namespace facetlight {
 namespace {
@@ -43,9 +44,8 @@ Material Material::byName(std::string_view name) {
     }
     std::string known;
     for (const std::string& n : materialNames()) known += (known.empty() ? "" : ", ") + n;
-    // Names the field as the settings readers do, and quotes at most 40 bytes of what was sent.
-    throw Error("material must be one of " + known + " (got '" + std::string(name.substr(0, 40)) +
-                (name.size() > 40 ? "...'" : "'") + ")");
+    // Names the field as the settings readers do, and quotes an excerpt of what was sent.
+    throw Error("material must be one of " + known + " (got " + inQuotes(name) + ")");
 }
 
 Material Material::constant(double n) {

@@ -46,8 +46,11 @@ const Schema<TiltSeriesSettings>& tiltSeriesSettingsSchema() {
             const std::string step = fieldPath(path, "step_deg");
             if (s.stepDeg > s.maxDeg)
                 throw Error(step, step + " must be no more than " + fieldPath(path, "max_deg"));
-            if (s.frames() > kMaxTiltFrames) {
-                throw Error(step, step + " gives " + std::to_string(s.frames()) + " frames, more than " +
+            // Counted in double before any conversion: a step of 1e-9 deg gives 9e10 frames, which an int
+            // does not hold (issue 31).
+            if (const double frames = s.frameCount(); !(frames <= kMaxTiltFrames)) {
+                const std::string count = frames < 1e9 ? std::to_string(int64_t(frames)) : "over a billion";
+                throw Error(step, step + " gives " + count + " frames, more than " +
                                       std::to_string(kMaxTiltFrames) + ": raise it");
             }
         });
@@ -63,8 +66,12 @@ AsetSettings AsetSettings::fromJson(const nlohmann::json& j) {
     return asetSettingsSchema().read(j, "aset");
 }
 
+double TiltSeriesSettings::frameCount() const {
+    return 2 * std::floor(maxDeg / stepDeg + 1e-9) + 1;
+}
+
 int TiltSeriesSettings::frames() const {
-    return 2 * int(std::floor(maxDeg / stepDeg + 1e-9)) + 1;
+    return int(frameCount());
 }
 
 double TiltSeriesSettings::tiltDeg(int frame) const {

@@ -29,7 +29,8 @@ struct TiltSeriesSettings {
     double stepDeg = 1;
     double axisDeg = 0;
 
-    int frames() const;  // 2 * maxDeg / stepDeg + 1
+    double frameCount() const;  // 2 * floor(maxDeg / stepDeg) + 1, however many
+    int frames() const;         // frameCount() of validated settings: at most kMaxTiltFrames
     double tiltDeg(int frame) const;
     void validate() const;  // throws Error naming the field ("tilt_series.step_deg")
     static TiltSeriesSettings fromJson(const nlohmann::json& j);

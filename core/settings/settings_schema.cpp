@@ -5,16 +5,12 @@
 
 #include "util/closest_name.h"
 #include "util/error.h"
+#include "util/excerpt.h"
 
 namespace facetlight::settings {
 namespace {
 
 using nlohmann::json;
-
-// What was sent, in quotes, at most 40 bytes of it: a 100 KB name would otherwise come back whole.
-std::string quoted(const std::string& text) {
-    return "'" + text.substr(0, 40) + (text.size() > 40 ? "...'" : "'");
-}
 
 std::string numberText(double v) {
     std::ostringstream s;
@@ -68,6 +64,8 @@ bool readBool(const json& j, const std::string& path) {
 
 std::string readText(const json& j, const std::string& path) {
     if (!j.is_string()) throw Error(path, path + " must be a string");
+    if (j.get_ref<const std::string&>().size() > kMaxTextBytes)
+        throw Error(path, path + " is longer than " + std::to_string(kMaxTextBytes) + " bytes");
     return j.get<std::string>();
 }
 
@@ -78,8 +76,8 @@ std::string readChoice(const json& j, const std::string& path, const std::vector
         if (c == name) return name;
         known += (known.empty() ? "" : ", ") + c;
     }
-    throw Error(
-        path, path + " must be one of " + known + " (got " + quoted(name) + ")" + didYouMean(name, choices));
+    throw Error(path, path + " must be one of " + known + " (got " + inQuotes(name) + ")" +
+                          didYouMean(name, choices));
 }
 
 Vec3 readVec3(const json& j, const std::string& path, bool nonZero) {
@@ -101,9 +99,9 @@ void checkObject(const json& j, const std::string& path, const std::vector<Field
         std::vector<std::string> keys;
         for (const FieldInfo& f : fields) keys.emplace_back(f.key);
         const std::optional<std::string> meant = closestName(key, keys);
-        throw Error(fieldPath(path, key),
-                    "unknown field " + quoted(fieldPath(path, key)) +
-                        (meant ? "; did you mean '" + fieldPath(path, *meant) + "'?" : ""));
+        const std::string name = fieldPath(path, excerpt(key));  // a 100 KB key is no field's name
+        throw Error(name, "unknown field '" + name + "'" +
+                              (meant ? "; did you mean '" + fieldPath(path, *meant) + "'?" : ""));
     }
 }
 

@@ -67,6 +67,9 @@ std::string fieldPath(const std::string& parent, const std::string& key);
 uint64_t readCount(const nlohmann::json& j, const std::string& path, uint64_t lo, uint64_t hi);
 double readNumber(const nlohmann::json& j, const std::string& path, const NumberRange& range);
 bool readBool(const nlohmann::json& j, const std::string& path);
+// Free text (a job's name, a mesh, a constraint, a choice) is at most this long: 40 jobs named with 900 000
+// characters each made one page of the job list 36 MB (issue 31).
+constexpr size_t kMaxTextBytes = 1024;
 std::string readText(const nlohmann::json& j, const std::string& path);
 std::string readChoice(const nlohmann::json& j, const std::string& path,
                        const std::vector<std::string>& choices);

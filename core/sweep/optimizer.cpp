@@ -5,6 +5,7 @@
 
 #include "sweep/sweep_figures.h"
 #include "util/error.h"
+#include "util/excerpt.h"
 #include "util/number_text.h"
 
 namespace facetlight {
@@ -103,7 +104,8 @@ SweepConstraint parseSweepConstraint(const std::string& text) {
     if (!atMost) at = text.find(">=");
     SweepConstraint c;
     if (at == std::string::npos || at == 0 || !parseNumber(text.substr(at + 2), c.limit))
-        throw Error("constraint '" + text + "': write NAME<=VALUE or NAME>=VALUE, e.g. total_depth<=62");
+        throw Error("constraint " + inQuotes(text) +
+                    ": write NAME<=VALUE or NAME>=VALUE, e.g. total_depth<=62");
     c.atMost = atMost;
     std::string name = text.substr(0, at);
     if (name.size() > 4 && name.compare(name.size() - 4, 4, "_pct") == 0) name.resize(name.size() - 4);
@@ -116,7 +118,8 @@ SweepConstraint parseSweepConstraint(const std::string& text) {
         std::string names;
         for (const std::string& n : kProportions) names += n + ", ";
         for (const std::string& n : figures) names += n + (n == figures.back() ? "" : ", ");
-        throw Error("constraint '" + text + "': no quantity '" + name + "'; the quantities are: " + names);
+        throw Error("constraint " + inQuotes(text) + ": no quantity " + inQuotes(name) +
+                    "; the quantities are: " + names);
     }
     c.quantity = name;
     return c;
@@ -127,29 +130,28 @@ GridObjective sweepObjective(const SweepPlan& base, const std::string& figure,
                              std::vector<SweepResult>& rounds, Communicator& comm,
                              const SweepRoundHooks& hooks) {
     checkSweepFigure(figure, base.trace);
-    return
-        [base, figure, constraints, &control, &rounds, &comm, hooks](const std::vector<SweepAxis>& axes,
-                                                                     uint64_t photons) {
-            SweepPlan plan = base;
-            plan.axes = axes;
-            plan.trace.photons = photons;
-            // The viewer's samples grow with the photons, round by round.
-            const double growth = double(photons) / double(base.trace.photons);
-            ViewerSettings& viewer = plan.trace.viewer;
-            viewer.office.points = std::min(kMaxViewerPoints, uint64_t(double(viewer.office.points) * growth));
-            viewer.spot.photons = std::min(kMaxViewerPhotons, uint64_t(double(viewer.spot.photons) * growth));
-            rounds.push_back(
-                runSweep(plan, control, hooks ? hooks(rounds.size(), plan) : SweepPointHooks{}, comm));
-            std::vector<DesignEstimate> out;
-            for (const SweepPoint& p : rounds.back().points) {
-                DesignEstimate e;
-                e.feasible = p.ok() && std::all_of(constraints.begin(), constraints.end(),
-                                                   [&](const SweepConstraint& c) { return c.holds(p); });
-                if (p.ok()) e.value = p.figure(figure), e.sigma = p.stderrOf(figure);
-                out.push_back(e);
-            }
-            return out;
-        };
+    return [base, figure, constraints, &control, &rounds, &comm, hooks](const std::vector<SweepAxis>& axes,
+                                                                        uint64_t photons) {
+        SweepPlan plan = base;
+        plan.axes = axes;
+        plan.trace.photons = photons;
+        // The viewer's samples grow with the photons, round by round.
+        const double growth = double(photons) / double(base.trace.photons);
+        ViewerSettings& viewer = plan.trace.viewer;
+        viewer.office.points = std::min(kMaxViewerPoints, uint64_t(double(viewer.office.points) * growth));
+        viewer.spot.photons = std::min(kMaxViewerPhotons, uint64_t(double(viewer.spot.photons) * growth));
+        rounds.push_back(
+            runSweep(plan, control, hooks ? hooks(rounds.size(), plan) : SweepPointHooks{}, comm));
+        std::vector<DesignEstimate> out;
+        for (const SweepPoint& p : rounds.back().points) {
+            DesignEstimate e;
+            e.feasible = p.ok() && std::all_of(constraints.begin(), constraints.end(),
+                                               [&](const SweepConstraint& c) { return c.holds(p); });
+            if (p.ok()) e.value = p.figure(figure), e.sigma = p.stderrOf(figure);
+            out.push_back(e);
+        }
+        return out;
+    };
 }
 
 }  // namespace facetlight

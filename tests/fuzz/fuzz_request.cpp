@@ -9,17 +9,19 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace facetlight::server;
-    static const RequestRules rules{{{"GET", "/healthz"},
-                                     {"GET", "/api/jobs"},
-                                     {"POST", "/api/jobs"},
-                                     {"GET", "/api/jobs/{id}"},
-                                     {"DELETE", "/api/jobs/{id}"},
-                                     {"POST", "/api/jobs/{id}/cancel"},
-                                     {"GET", "/api/jobs/{id}/stats.csv"},
-                                     {"POST", "/api/meshes"}},
-                                    256,
-                                    [](const std::string& path) { return path == "/api/meshes" ? 4096 : 1024; },
-                                    {"POST /api/jobs", "POST /api/meshes"}};
+    static const RequestRules rules{
+        {{"GET", "/healthz"},
+         {"GET", "/api/jobs"},
+         {"POST", "/api/jobs"},
+         {"GET", "/api/jobs/{id}"},
+         {"DELETE", "/api/jobs/{id}"},
+         {"POST", "/api/jobs/{id}/cancel"},
+         {"GET", "/api/jobs/{id}/stats.csv"},
+         {"POST", "/api/meshes"}},
+        256,
+        [](const std::string& path) { return path == "/api/meshes" ? 4096 : 1024; },
+        {{"POST /api/jobs", {"application/json"}},
+         {"POST /api/meshes", {"application/octet-stream", "multipart/form-data"}}}};
     std::string_view text(reinterpret_cast<const char*>(data), size);
     httplib::Request req;
     for (bool first = true; !text.empty(); first = false) {
@@ -34,7 +36,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             req.headers.emplace(std::string(line.substr(0, colon)), std::string(line.substr(colon + 1)));
         }
     }
-    if (const auto refusal = checkRequest(req, rules); refusal && (refusal->status < 400 || refusal->status > 499))
+    if (const auto refusal = checkRequest(req, rules);
+        refusal && (refusal->status < 400 || refusal->status > 499))
         std::abort();
     if (escapeForLog(req.path).find_first_of("\n\r\"") != std::string::npos) std::abort();
     return 0;

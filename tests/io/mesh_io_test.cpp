@@ -120,6 +120,19 @@ TEST(ObjLoader, Errors) {
     expectError([] { parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n"); },
                 "OBJ line 4: relative vertex index -4");
     expectError([] { parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"); }, "vertex index 0 is not valid");
+    // Indices beyond an int wrapped to vertex 4 (issue 31): 2^32 + 4, 2^63 + 4, 2^64 + 4, -(2^32 - 4).
+    const std::string square = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n";
+    for (const char* index : {"4294967300", "9223372036854775812", "18446744073709551620", "-4294967292",
+                              "4294967300/1/1", "1/4294967300", "+2147483648"})
+        expectError([&] { parseObj(square + "f 2 3 " + index + "\n"); },
+                    "OBJ line 5: face index '" + std::string(index) + "' is out of range");
+    expectError([&] { parseObj(square + "f 2 3 " + std::string(1000, '9') + "\n"); },
+                "OBJ line 5: face index '" + std::string(40, '9') + "...' is out of range");
+    // The largest int is an index like any other, and leading zeros are no part of its size.
+    expectError([&] { parseObj(square + "f 2 3 2147483647\n"); },
+                "OBJ line 5: face refers to vertex 2147483647 but the file has only 4 vertices");
+    EXPECT_EQ(parseObj(square + "f 2 3 00000000000004\n").polygons[0].vertices,
+              (std::vector<uint32_t>{1, 2, 3}));
     expectError([] { parseObj("v 0 0 0\nv nan 0 0\n"); },
                 "OBJ line 2: vertex coordinate 'nan' is not a finite number");
     expectError([] { parseObj("v 0 0 0\nv 1 inf 0\n"); },
@@ -313,12 +326,14 @@ TEST(GemCadLoader, Errors) {
 TEST(GemCadLoader, HugeDistanceIsRefusedNotACrash) {
     const std::string design =
         "GemCad 5.0\ng 96 0.0\ny 1 y\nI 2.417\na -45 1e300 0 24 48 72\na 45 1 0 24 48 72\na 0 1\n";
-    expectError([&] { Stone::build(parseGemCad(design), "huge"); }, "GemCad line 5: facet 'tier1_1' lies too far");
+    expectError([&] { Stone::build(parseGemCad(design), "huge"); },
+                "GemCad line 5: facet 'tier1_1' lies too far");
 }
 
 // Issue 18: a rotated cube scaled 1e155 has finite coordinates whose products overflow.
 TEST(ObjLoader, HugeCoordinatesAreRefusedNotACrash) {
-    const std::string obj = readFile(std::string(FACETLIGHT_SOURCE_DIR) + "/tests/fuzz/corpus/obj/cube_1e155.obj");
+    const std::string obj =
+        readFile(std::string(FACETLIGHT_SOURCE_DIR) + "/tests/fuzz/corpus/obj/cube_1e155.obj");
     ASSERT_FALSE(obj.empty());
     expectError([&] { Stone::build(parseObj(obj), "huge"); }, "vertex 1 lies too far out");
 }
@@ -361,7 +376,8 @@ TEST(MeshIo, LoadStoneNamesThePathOnFailure) {
 TEST(MeshIo, LoadStoneReadsNoMoreThanTheCap) {
     StoneOptions options;
     options.limits.maxFileBytes = 1 << 20;
-    expectError([&] { loadStone("/dev/zero", options); }, "/dev/zero: the stone file is larger than 1048576 bytes");
+    expectError([&] { loadStone("/dev/zero", options); },
+                "/dev/zero: the stone file is larger than 1048576 bytes");
     options.limits.maxFileBytes = 100;
     expectError([&] { loadStone(kData + "cube_quads.obj", options); }, "is larger than 100 bytes");
 }

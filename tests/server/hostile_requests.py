@@ -47,7 +47,7 @@ class Server:
         deadline = time.time() + 20
         while time.time() < deadline:
             try:
-                if self.request(b"GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n", timeout=1)[0] == 200:
+                if self.request(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n\r\n", timeout=1)[0] == 200:
                     return
             except OSError:
                 time.sleep(0.05)
@@ -106,8 +106,8 @@ def read_response(s):
 
 
 def http(method, path, body=b"", headers=None, length=True):
-    head = "%s %s HTTP/1.1\r\nHost: x\r\n" % (method, path)
-    for k, v in (headers or {}).items():
+    head = "%s %s HTTP/1.1\r\n" % (method, path)
+    for k, v in {"Host": "localhost", **(headers or {})}.items():
         head += "%s: %s\r\n" % (k, v)
     if length and (body or method in ("POST", "PUT", "PATCH")):
         head += "Content-Length: %d\r\n" % len(body)
@@ -120,12 +120,21 @@ def job(**fields):
     return json.dumps(j).encode()
 
 
-def post_job(body, ctype="application/json"):
-    return http("POST", "/api/jobs", body, {"Content-Type": ctype})
+def post_job(body, ctype="application/json", **headers):
+    return http("POST", "/api/jobs", body, {"Content-Type": ctype, **headers})
 
 
-def upload(data, name="m.obj"):
-    return http("POST", "/api/meshes?name=" + name, data, {"Content-Type": "application/octet-stream"})
+def upload(data, name="m.obj", ctype="application/octet-stream"):
+    return http("POST", "/api/meshes?name=" + name, data, {"Content-Type": ctype} if ctype else {})
+
+
+def multipart(data, **headers):
+    body = (b"--b0undary\r\nContent-Disposition: form-data; name=\"file\"; filename=\"m.obj\"\r\n\r\n" + data +
+            b"\r\n--b0undary--\r\n")
+    return http("POST", "/api/meshes", body, {"Content-Type": "multipart/form-data; boundary=b0undary", **headers})
+
+
+EVIL = {"Origin": "http://evil.example"}
 
 
 CUBE_OBJ = (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
@@ -174,22 +183,35 @@ def cases():
         ("OPTIONS jobs", http("OPTIONS", "/api/jobs"), 405, None),
         ("POST job without length", http("POST", "/api/jobs", length=False), 411, None),
         ("POST mesh without length", http("POST", "/api/meshes", length=False), 411, None),
-        ("chunked job", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n5\r\n{\"a\":\r\n0\r\n\r\n",
+        ("chunked job", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nTransfer-Encoding: chunked\r\n\r\n5\r\n{\"a\":\r\n0\r\n\r\n",
          411, None),
-        ("length abc", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: abc\r\n\r\n", 400, None),
-        ("length -1", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: -1\r\n\r\n", 400, None),
-        ("length 1e3", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 1e3\r\n\r\n", 400, None),
-        ("length 20 digits", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 99999999999999999999\r\n\r\n",
+        ("length abc", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: abc\r\n\r\n", 400, None),
+        ("length -1", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: -1\r\n\r\n", 400, None),
+        ("length 1e3", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: 1e3\r\n\r\n", 400, None),
+        ("length 20 digits", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: 99999999999999999999\r\n\r\n",
          400, None),
-        ("two lengths", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 2\r\nContent-Length: 40\r\n\r\n{}",
+        ("two lengths", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: 2\r\nContent-Length: 40\r\n\r\n{}",
          400, None),
-        ("length over max-body", b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n{" % (MAX_BODY + 1),
+        ("length over max-body", b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: %d\r\n\r\n{" % (MAX_BODY + 1),
          413, None),
         ("upload over max-upload",
-         b"POST /api/meshes HTTP/1.1\r\nHost: x\r\nContent-Length: 17000000\r\n\r\nv 0 0 0\n", 413, None),
+         b"POST /api/meshes HTTP/1.1\r\nHost: localhost\r\nContent-Length: 17000000\r\n\r\nv 0 0 0\n", 413, None),
         ("GET with length over max-body",
-         b"GET /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % (MAX_BODY + 1), 413, None),
+         b"GET /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Length: %d\r\n\r\n" % (MAX_BODY + 1), 413, None),
         ("huge header", http("GET", "/healthz", headers={"X-Big": "a" * 20000}), 400, None),
+        # Issue 31, item 2: a request's head is capped at 64 KiB and 100 lines.
+        ("99 header lines", http("GET", "/healthz", headers={"X-%d" % i: "1" for i in range(98)}), 200, None),
+        ("101 header lines", http("GET", "/healthz", headers={"X-%d" % i: "1" for i in range(100)}), 431, None),
+        ("head of 70 KB", http("GET", "/healthz", headers={"X-%d" % i: "a" * 1000 for i in range(70)}), 431, None),
+        ("header line without colon", b"GET /healthz HTTP/1.1\r\nHost: localhost\r\nX-No-Colon\r\n\r\n", 400, None),
+        ("NUL in a header value", b"GET /healthz HTTP/1.1\r\nHost: localhost\r\nX-A: a\x00b\r\n\r\n", 400, None),
+        ("folded header line", b"GET /healthz HTTP/1.1\r\nHost: localhost\r\nX-A: 1\r\n\tmore: 2\r\n\r\n", 400, None),
+        ("Transfer-Encoding with a space before its colon",
+         b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\nContent-Length: %d\r\n"
+         b"Transfer-Encoding : chunked\r\n\r\n" % len(job()) + job(), 400, None),
+        ("Transfer-Encoding beside Content-Length",
+         b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\nContent-Length: %d\r\n"
+         b"transfer-encoding: chunked\r\n\r\n" % len(job()) + job(), {400, 411}, None),
         ("not JSON", post_job(b"{photons: 5}"), 400, None),
         ("JSON array", post_job(b"[]"), 400, None),
         ("JSON trailing junk", post_job(b"{} {}"), 400, None),
@@ -219,17 +241,65 @@ def cases():
         ("render width 1e9", post_job(job(render={"width": 1e9})), 422, "render.width"),
         ("render width -1", post_job(job(render={"width": -1})), 422, "render.width"),
         ("render yes", post_job(job(render="yes")), 422, "render"),
+        # Issue 31, item 8: a frame count that overflows an int was one frame.
+        ("tilt step 1e-9", post_job(job(render=True, tilt_series={"max_deg": 45, "step_deg": 1e-9})), 422,
+         "tilt_series.step_deg"),
+        ("tilt step 3e-8", post_job(job(render=True, tilt_series={"max_deg": 45, "step_deg": 3e-8})), 422,
+         "tilt_series.step_deg"),
+        ("tilt step 5e-324", post_job(job(render=True, tilt_series={"max_deg": 45, "step_deg": 5e-324})), 422,
+         "tilt_series.step_deg"),
         ("upload GemCad 1e300", upload(corpus("gemcad", "huge_distance.asc"), "huge.asc"), 422, "file"),
         ("upload cube 1e155", upload(corpus("obj", "cube_1e155.obj")), 422, "file"),
         ("upload flat square", upload(corpus("obj", "flat_square.obj")), 422, "file"),
         ("upload self-intersecting", upload(corpus("obj", "octahedron_self_intersecting.obj")), 422, "file"),
         ("upload empty", upload(b""), 422, "file"),
         ("upload binary junk", upload(b"\x01\x02\xff\xfe junk", "junk"), 422, "file"),
-        ("upload format ply", http("POST", "/api/meshes?format=ply", CUBE_OBJ), 422, "format"),
+        ("upload format ply", upload(CUBE_OBJ, "m.obj&format=ply"), 422, "format"),
         ("upload open cube", upload(CUBE_OBJ[:CUBE_OBJ.rfind(b"f ")]), 422, "file"),
+        # Issue 31, item 9: face indices beyond an int wrapped to vertex 4.
+        ("upload index 2^32+4", upload(CUBE_OBJ.replace(b"f 2 4 8 6", b"f 2 4294967300 8 6")), 422, "file"),
+        ("upload index 2^64+4", upload(CUBE_OBJ.replace(b"f 2 4 8 6", b"f 2 18446744073709551620 8 6")), 422, "file"),
+        ("upload index -(2^32-4)", upload(CUBE_OBJ.replace(b"f 2 4 8 6", b"f 2 -4294967292 8 6")), 422, "file"),
         ("upload cube", upload(CUBE_OBJ, "cube.obj"), 201, None),
         ("direction 1e308", post_job(job(light={"direction": [1e308, 1e308, -1e308]})), 202, None),
-        ("form-encoded job", post_job(job(), "application/x-www-form-urlencoded"), 202, None),
+        # Issue 31, item 1: DNS rebinding and cross-site requests.
+        ("Host evil.example", http("GET", "/api/jobs", headers={"Host": "evil.example"}), 421, None),
+        ("Host evil.example:port", http("GET", "/healthz", headers={"Host": "evil.example:8080"}), 421, None),
+        ("Host evil.example page", http("GET", "/", headers={"Host": "evil.example"}), 421, None),
+        ("Host empty", http("GET", "/api/jobs", headers={"Host": ""}), {400, 421}, None),
+        ("HTTP/1.1 without Host", b"GET /api/jobs HTTP/1.1\r\n\r\n", 400, None),
+        ("Host localhost.evil.example", http("GET", "/api/meshes", headers={"Host": "localhost.evil.example"}), 421,
+         None),
+        ("Host 127.0.0.1 with port", http("GET", "/api/jobs", headers={"Host": "127.0.0.1:8080"}), 200, None),
+        ("Host [::1]", http("GET", "/api/jobs", headers={"Host": "[::1]:8080"}), 200, None),
+        ("job from evil origin", post_job(job(), **EVIL), 403, None),
+        ("text job from evil origin", post_job(job(), "text/plain", **EVIL), 403, None),
+        ("job from null origin", post_job(job(), Origin="null"), 403, None),
+        ("multipart upload from evil origin", multipart(CUBE_OBJ, **EVIL), 403, None),
+        ("cancel from evil origin", http("POST", "/api/jobs/%s/cancel" % ID, headers=EVIL), 403, None),
+        ("delete from evil origin", http("DELETE", "/api/jobs/" + ID, headers=EVIL), 403, None),
+        ("list from evil origin", http("GET", "/api/jobs", headers=EVIL), 200, None),
+        ("form-encoded job", post_job(job(), "application/x-www-form-urlencoded"), 415, None),
+        ("text/plain job", post_job(job(), "text/plain"), 415, None),
+        ("job without content type", http("POST", "/api/jobs", job()), 415, None),
+        ("text/plain upload", upload(CUBE_OBJ, ctype="text/plain"), 415, None),
+        ("upload without content type", upload(CUBE_OBJ, ctype=None), 415, None),
+        # Issue 31, items 5 and 6: free text is capped, and problems quote at most an excerpt of the input.
+        ("job name 100 KB", post_job(job(name="n" * 100000)), 422, "name"),
+        ("job name 1025 bytes", post_job(job(name="n" * 1025)), 422, "name"),
+        ("constraint 100 KB", post_job(job(sweep={"axes": [{"name": "pavilion", "from": 40, "to": 41, "step": 1}],
+                                                  "constraints": ["x" * 100000]})), 422, None),
+        ("constraint 1000 bytes", post_job(job(sweep={"axes": [{"name": "pavilion", "from": 40, "to": 41, "step": 1}],
+                                                      "constraints": ["x" * 1000]})), 422, None),
+        ("sweep axis name 100 KB", post_job(job(sweep={"axes": [{"name": "p" * 100000, "from": 40, "to": 41,
+                                                                 "step": 1}]})), 422, None),
+        ("unknown field 100 KB", post_job(job(**{"k" * 100000: 1})), 422, None),
+        ("unknown render field 100 KB", post_job(job(render={"k" * 100000: 1})), 422, None),
+        ("upload vertex 100 KB", upload(b"v 0 0 " + b"9" * 100000 + b"x\n" + CUBE_OBJ), 422, "file"),
+        ("upload face index 100 KB", upload(CUBE_OBJ + b"f 1 2 " + b"9" * 100000 + b"\n"), 422, "file"),
+        ("upload GemCad gear 100 KB", upload(b"GemCad 5.0\ng " + b"9" * 100000 + b" 0\n", "g.asc"), 422, "file"),
+        ("job from our origin", post_job(job(), Origin="http://localhost:8080"), 202, None),
+        ("multipart upload", multipart(CUBE_OBJ, Origin="http://127.0.0.1:8080"), 201, None),
     ]
 
 
@@ -246,7 +316,7 @@ def check_problem(name, status, headers, body, field):
         fail(name, "problem %.300r" % doc)
     if field and doc.get("field") != field:
         fail(name, "problem names field %r, not %r: %.300r" % (doc.get("field"), field, doc))
-    if len(body) > 2000:
+    if len(body) > 1500:
         fail(name, "the problem is %d bytes long: it echoes the input" % len(body))
 
 
@@ -331,17 +401,20 @@ def run_short_bodies(server):
     jobs, meshes = job_total(server), mesh_total(server)
     body = job()
     # The client half-closes after part of the body: the server sees the end at once.
-    status = server.request(b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+    status = server.request(b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n"
                             b"Content-Length: %d\r\n\r\n" % (len(body) + 50) + body, shut_write=True)[0]
     if status != 400:
         fail("short job body", "status %d, expected 400" % status)
-    status = server.request(b"POST /api/meshes?name=c.obj HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n"
+    status = server.request(b"POST /api/meshes?name=c.obj HTTP/1.1\r\nHost: localhost\r\n"
+                            b"Content-Type: application/octet-stream\r\nContent-Length: %d\r\n\r\n"
                             % (len(CUBE_OBJ) + 10) + CUBE_OBJ, shut_write=True)[0]
     if status != 400:
         fail("short mesh body", "status %d, expected 400" % status)
     # The client goes away mid-body.
-    for raw in (b"POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % (len(body) + 50) + body,
-                b"POST /api/meshes HTTP/1.1\r\nHost: x\r\nContent-Length: 1000\r\n\r\n" + CUBE_OBJ):
+    for raw in (b"POST /api/jobs HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n"
+                b"Content-Length: %d\r\n\r\n" % (len(body) + 50) + body,
+                b"POST /api/meshes HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/octet-stream\r\n"
+                b"Content-Length: 1000\r\n\r\n" + CUBE_OBJ):
         s = server.connect()
         s.sendall(raw)
         s.close()
@@ -360,7 +433,7 @@ def run_slow_clients(server):
     slow = []
     for i in range(4 * HTTP_THREADS):
         s = server.connect(timeout=30)
-        s.sendall(b"GET /healthz HTTP/1.1\r\nHost: x\r\n")
+        s.sendall(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n")
         slow.append(s)
     start = time.time()
     worst = 0
@@ -400,6 +473,37 @@ def run_slow_clients(server):
     return len(slow) + 2
 
 
+def rss_kib(pid):
+    with open("/proc/%d/status" % pid) as f:
+        return next(int(line.split()[1]) for line in f if line.startswith("VmRSS:"))
+
+
+def run_header_flood(server):
+    """8 connections each sending 4 MB of header lines: each is cut at 64 KiB, and the server's memory grows by
+    less than 16 MiB (110 MB a connection were kept before)."""
+    before = rss_kib(server.proc.pid)
+    line = b"X-Flood: " + b"a" * 1000 + b"\r\n"
+    floods = []
+    for _ in range(8):
+        s = server.connect()
+        s.sendall(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n")
+        floods.append(s)
+    for s in floods:
+        try:
+            for _ in range(4000):
+                s.sendall(line)
+        except OSError:
+            pass  # cut off: what should happen
+        s.close()
+    time.sleep(0.5)
+    grown = (rss_kib(server.proc.pid) - before) / 1024
+    print("  header flood: 8 x 4 MB of header lines, the server grew by %.1f MiB" % grown)
+    if grown > 16:
+        fail("header flood", "the server grew by %.1f MiB" % grown)
+    healthz_fast(server, "header flood")
+    return 8
+
+
 def run_log_forgery(server):
     forged = '2026-01-01T00:00:00Z 6.6.6.6 "GET /forged" 200 0'
     server.request(http("GET", "/api/jobs%0a" + forged.replace(" ", "%20").replace('"', "%22")))
@@ -420,6 +524,52 @@ def expect(server, name, raw, wanted):
         check_problem(name, status, headers, body, None)
     healthz_fast(server, name)
     return status, body
+
+
+def run_allowed_host(binary, work):
+    """--allowed-host adds a name the server is reached by (behind a proxy, or on the network)."""
+    server = Server(binary, os.path.join(work, "allowed"), "--allowed-host", "Gems.Example")
+    try:
+        expect(server, "allowed host", http("GET", "/api/jobs", headers={"Host": "gems.example:8443"}), 200)
+        expect(server, "job from the allowed host", post_job(job(), Origin="https://gems.example"), 202)
+        expect(server, "loopback beside an allowed host", http("GET", "/api/jobs", headers={"Host": "localhost"}),
+               200)
+        expect(server, "other host beside an allowed host", http("GET", "/api/jobs", headers={"Host": "evil.example"}),
+               421)
+    finally:
+        server.stop()
+    return 4
+
+
+def run_durable_cancel(binary, work):
+    """Issue 31, item 7: an acknowledged cancel survives kill -9, for a queued job (200) and a running one (202)."""
+    folder = os.path.join(work, "cancel")
+    server = Server(binary, folder)
+    try:
+        running = json.loads(server.request(post_job(job(photons=100000000)))[2])["id"]
+        queued = json.loads(server.request(post_job(job()))[2])["id"]
+        for _ in range(200):
+            if server.get_json("/api/jobs/" + running)["state"] == "running":
+                break
+            time.sleep(0.05)
+        expect(server, "cancel queued", http("POST", "/api/jobs/%s/cancel" % queued), 200)
+        # Killed at once after the answer: the worker has had no time to record the end of the job.
+        status = server.request(http("POST", "/api/jobs/%s/cancel" % running))[0]
+        server.proc.kill()
+        server.proc.wait()
+        if status != 202:
+            fail("cancel running", "status %d, expected 202" % status)
+    finally:
+        server.stop()
+    server = Server(binary, folder)
+    try:
+        for name, job_id in (("queued", queued), ("running", running)):
+            state = server.get_json("/api/jobs/" + job_id)["state"]
+            if state != "canceled":
+                fail("cancel %s after kill -9" % name, "the job is %s, not canceled" % state)
+    finally:
+        server.stop()
+    return 4
 
 
 def run_storage_guard(binary, work):
@@ -541,12 +691,15 @@ def main():
         total = run_cases(server)
         total += run_short_bodies(server)
         total += run_log_forgery(server)
+        total += run_header_flood(server)
         total += run_slow_clients(server)
         if server.proc.poll() is not None:
             fail("server", "exited with %s" % server.proc.returncode)
     finally:
         server.stop()
     try:
+        total += run_allowed_host(binary, work)
+        total += run_durable_cancel(binary, work)
         total += run_storage_guard(binary, work)
         total += run_real_full_disk(binary, work)
     finally:

@@ -16,11 +16,13 @@ const RequestRules& rules() {
                                  {"POST", "/api/meshes"}},
                                 100,
                                 [](const std::string& path) { return path == "/api/meshes" ? 5000 : 1000; },
-                                {"POST /api/jobs", "POST /api/meshes"}};
+                                {{"POST /api/jobs", {"application/json"}},
+                                 {"POST /api/meshes", {"application/octet-stream", "multipart/form-data"}}}};
     return r;
 }
 
 const std::string kId = "0123456789abcdef0123456789abcdef";
+const std::string kJson = "application/json";
 
 httplib::Request request(std::string method, std::string path,
                          std::vector<std::pair<std::string, std::string>> headers = {}) {
@@ -42,13 +44,18 @@ int statusOf(const httplib::Request& req) {
 TEST(RequestGuard, OrdinaryRequestsPass) {
     EXPECT_EQ(statusOf(request("GET", "/healthz")), 0);
     EXPECT_EQ(statusOf(request("GET", "/api/jobs/" + kId)), 0);
-    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "10"}})), 0);
-    EXPECT_EQ(statusOf(request("POST", "/api/meshes", {{"Content-Length", "5000"}})), 0);
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "10"}, {"Content-Type", kJson}})), 0);
+    EXPECT_EQ(statusOf(request("POST", "/api/meshes",
+                               {{"Content-Length", "5000"}, {"Content-Type", "application/octet-stream"}})),
+              0);
     // `curl -X POST` sends no Content-Length, and cancel takes no body.
     EXPECT_EQ(statusOf(request("POST", "/api/jobs/" + kId + "/cancel")), 0);
     EXPECT_EQ(statusOf(request("GET", "/index.html")), 0);  // not an API route: static files or 404
     // The same length twice is not a conflict.
-    EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "10"}, {"content-length", "10"}})), 0);
+    EXPECT_EQ(
+        statusOf(request("POST", "/api/jobs",
+                         {{"Content-Length", "10"}, {"content-length", "10"}, {"Content-Type", kJson}})),
+        0);
 }
 
 TEST(RequestGuard, ContentLengthMustBeOneWholeNumber) {
@@ -57,8 +64,8 @@ TEST(RequestGuard, ContentLengthMustBeOneWholeNumber) {
     EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", ""}})), 400);
     EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "99999999999999999999"}})), 400);
     // Request smuggling: two different lengths.
-    const auto twice = checkRequest(request("POST", "/api/jobs", {{"Content-Length", "5"}, {"Content-Length", "50"}}),
-                                    rules());
+    const auto twice = checkRequest(
+        request("POST", "/api/jobs", {{"Content-Length", "5"}, {"Content-Length", "50"}}), rules());
     ASSERT_TRUE(twice);
     EXPECT_EQ(twice->status, 400);
     EXPECT_EQ(twice->detail, "the request has two different Content-Length headers");
@@ -71,6 +78,61 @@ TEST(RequestGuard, BodiesNeedALengthWithinTheRoutesLimit) {
     EXPECT_EQ(statusOf(request("POST", "/api/jobs", {{"Content-Length", "1001"}})), 413);
     EXPECT_EQ(statusOf(request("POST", "/api/meshes", {{"Content-Length", "5001"}})), 413);
     EXPECT_EQ(statusOf(request("GET", "/healthz", {{"Content-Length", "1001"}})), 413);
+}
+
+TEST(RequestGuard, OnlyTheHostNamesWeAreReachedBy) {
+    for (const char* host :
+         {"localhost", "LocalHost:8080", "127.0.0.1", "127.0.0.1:1", "[::1]", "[::1]:65535"})
+        EXPECT_EQ(statusOf(request("GET", "/api/jobs", {{"Host", host}})), 0) << host;
+    // DNS rebinding: a page on evil.example whose name now resolves to 127.0.0.1.
+    for (const char* host : {"evil.example", "evil.example:8080", "localhost.evil.example", "127.0.0.1:x",
+                             "127.0.0.1:", "::1", "", "localhost:8080:8080"})
+        EXPECT_EQ(statusOf(request("GET", "/api/jobs", {{"Host", host}})), 421) << host;
+    EXPECT_EQ(statusOf(request("GET", "/index.html", {{"Host", "evil.example"}})), 421);  // the page too
+    httplib::Request noHost = request("GET", "/healthz");
+    noHost.version = "HTTP/1.0";
+    EXPECT_EQ(statusOf(noHost), 0);
+    noHost.version = "HTTP/1.1";
+    EXPECT_EQ(statusOf(noHost), 400);
+    RequestRules more = rules();
+    more.allowedHosts.insert("gems.example");
+    EXPECT_FALSE(checkRequest(request("GET", "/healthz", {{"Host", "Gems.Example:443"}}), more));
+}
+
+TEST(RequestGuard, ChangesOnlyFromOurOrigins) {
+    const auto post = [](const std::string& origin) {
+        return statusOf(request("POST", "/api/jobs",
+                                {{"Content-Length", "10"}, {"Content-Type", kJson}, {"Origin", origin}}));
+    };
+    EXPECT_EQ(post("http://localhost:8080"), 0);
+    EXPECT_EQ(post("https://127.0.0.1"), 0);
+    EXPECT_EQ(post("http://evil.example"), 403);
+    EXPECT_EQ(post("http://localhost.evil.example"), 403);
+    EXPECT_EQ(post("null"), 403);
+    EXPECT_EQ(post("ftp://localhost"), 403);
+    EXPECT_EQ(statusOf(request("DELETE", "/api/jobs/" + kId, {{"Origin", "http://evil.example"}})), 403);
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs/" + kId + "/cancel", {{"Origin", "http://evil.example"}})),
+              403);
+    // Reading is not a change: a browser keeps another site's page from reading the answer.
+    EXPECT_EQ(statusOf(request("GET", "/api/jobs", {{"Origin", "http://evil.example"}})), 0);
+}
+
+TEST(RequestGuard, BodiesOfOurOwnMediaTypes) {
+    const auto post = [](const std::string& path, const std::string& type) {
+        std::vector<std::pair<std::string, std::string>> headers = {{"Content-Length", "10"}};
+        if (!type.empty()) headers.emplace_back("Content-Type", type);
+        return statusOf(request("POST", path, headers));
+    };
+    EXPECT_EQ(post("/api/jobs", "Application/JSON; charset=utf-8"), 0);
+    // What a form on any site sends without a preflight.
+    for (const char* type : {"text/plain", "application/x-www-form-urlencoded", "multipart/form-data", ""})
+        EXPECT_EQ(post("/api/jobs", type), 415) << type;
+    EXPECT_EQ(post("/api/meshes", "multipart/form-data; boundary=x"), 0);
+    EXPECT_EQ(post("/api/meshes", "application/octet-stream"), 0);
+    EXPECT_EQ(post("/api/meshes", "text/plain"), 415);
+    EXPECT_EQ(post("/api/meshes", ""), 415);
+    // Cancel takes no body.
+    EXPECT_EQ(statusOf(request("POST", "/api/jobs/" + kId + "/cancel", {{"Content-Type", "text/plain"}})), 0);
 }
 
 TEST(RequestGuard, WrongMethodIs405WithAllow) {

@@ -111,6 +111,13 @@ TEST(SettingsSchema, ABadValueInEachFieldNamesItsDottedPath) {
     EXPECT_EQ(
         errorField({{"mesh", "m"}, {"render", true}, {"tilt_series", {{"max_deg", 45}, {"step_deg", 0.5}}}}),
         "no error");
+    // Steps so small that 2 * max / step + 1 frames overflow an int (issue 31): refused, not one frame.
+    for (double step : {1e-9, 3e-8, 5e-324})
+        EXPECT_EQ(
+            errorField(
+                {{"mesh", "m"}, {"render", true}, {"tilt_series", {{"max_deg", 45}, {"step_deg", step}}}}),
+            "tilt_series.step_deg")
+            << step;
     EXPECT_EQ(errorField({{"mesh", "m"}, {"tilt_series", json::object()}}), "tilt_series");
     EXPECT_EQ(errorField({{"mesh", "m"}, {"fire_picture", true}, {"render", true}}), "fire_picture");
     EXPECT_EQ(errorField({{"mesh", "m"}, {"fire_picture", json::object()}}), "fire_picture");  // no render
@@ -293,6 +300,7 @@ void expectOpenApiAgrees(const json& api, const FieldInfo& f, const std::string&
         case FieldType::Text:
             EXPECT_EQ(api.value("type", ""), "string");
             EXPECT_FALSE(api.contains("enum"));
+            EXPECT_EQ(api.value("maxLength", json()), json(settings::kMaxTextBytes));
             break;
         case FieldType::Choice:
             EXPECT_EQ(api.value("type", ""), "string");
