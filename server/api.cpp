@@ -264,7 +264,7 @@ void Api::getResult(const Request& req, Response& res, const std::string& file,
         addShareStandardErrors(stats);
         *bytes = stats.dump(2);
     }
-    res.status = 200;
+    // The status is left to cpp-httplib: 200, or 206 and 416 for a Range request (server/openapi.json).
     res.set_content(std::move(*bytes), contentType.c_str());
 }
 

@@ -8,7 +8,9 @@
 #include "cuts/round_brilliant.h"
 #include "cuts/step_cuts.h"
 #include "settings/settings_schema.h"
+#include "util/closest_name.h"
 #include "util/error.h"
+#include "util/excerpt.h"
 
 namespace facetlight {
 
@@ -286,19 +288,27 @@ CutValues completeCutValues(const CutShape& shape, const CutValues& values) {
         for (const auto& p : shape.parameters)
             if (p.name == name) param = &p;
         if (!param) {
-            std::string names;
-            for (const auto& p : shape.parameters) names += (names.empty() ? "" : ", ") + p.name;
-            throw Error(shape.name + " has no parameter '" + name + "'; its parameters are: " + names);
+            std::vector<std::string> names;
+            std::string list;
+            for (const auto& p : shape.parameters) {
+                names.push_back(p.name);
+                list += (list.empty() ? "" : ", ") + p.name;
+            }
+            const std::optional<std::string> meant = closestName(name, names);
+            throw Error(excerpt(name), excerpt(name) + ": " + shape.name + " has no parameter " +
+                                           inQuotes(name) +
+                                           (meant ? " (did you mean '" + *meant + "'?)" : "") +
+                                           "; its parameters are: " + list);
         }
         const std::string unit = param->unit == "%" ? "%" : param->unit.empty() ? "" : " " + param->unit;
         if (!std::isfinite(value) || value < param->min || value > param->max)
-            throw Error(name + " " + formatNumber(value) + ": must lie between " + formatNumber(param->min) +
-                        " and " + formatNumber(param->max) + unit);
+            throw Error(name, name + " " + formatNumber(value) + ": must lie between " +
+                                  formatNumber(param->min) + " and " + formatNumber(param->max) + unit);
         if (param->integer && value != std::floor(value))
-            throw Error(name + " " + formatNumber(value) + ": must be a whole number");
+            throw Error(name, name + " " + formatNumber(value) + ": must be a whole number");
         if (!param->choices.empty() && !(value >= 0 && value < double(param->choices.size())))
-            throw Error(name + " " + formatNumber(value) + ": must be the index of one of " +
-                        choiceList(*param));
+            throw Error(name, name + " " + formatNumber(value) + ": must be the index of one of " +
+                                  choiceList(*param));
         out[name] = value;
     }
     return out;

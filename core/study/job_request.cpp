@@ -64,7 +64,7 @@ JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
         try {
             completeCutValues(findCutShape(spec.mesh), spec.cut);
         } catch (const Error& e) {
-            throw Error("cut", std::string("cut: ") + e.what());
+            throw e.within("cut");
         }
     }
     // A sweep of a shape of the cut library (docs/sweeps.md): every point an ordinary trace of these

@@ -174,7 +174,7 @@ SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const
     try {
         completeCutValues(*cut, request.set);
     } catch (const Error& e) {
-        throw Error("sweep.set", e.what());
+        throw e.within("sweep.set");
     }
     for (size_t i = 0; i < request.axes.size(); ++i) {
         SweepPlan one = plan;

@@ -7,7 +7,7 @@
 namespace facetlight {
 
 class Error : public std::runtime_error {
-public:
+  public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
     // About one field of a job: `field` is its dotted path ("light.direction", "render.width"), which the
     // message names; the server reports it as the problem's `field`.
@@ -15,6 +15,12 @@ public:
         : std::runtime_error(message), field_(field) {}
 
     const std::string& field() const { return field_; }
+    // The same error about a field inside `parent` ("cut" makes "pavilion" "cut.pavilion"); the message,
+    // which begins with the field's name, gains the parent in front.
+    Error within(const std::string& parent) const {
+        if (field_.empty()) return Error(parent, parent + ": " + what());
+        return Error(parent + "." + field_, parent + "." + what());
+    }
 
   private:
     std::string field_;

@@ -545,7 +545,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.setChecked('#f-render', false);
     await page.fill('#f-cut-pavilion', '89');
     await page.click('#submit-button');
-    const error = await page.waitForSelector('#err-cut:not([hidden])');
+    const error = await page.waitForSelector('[id="err-cut.pavilion"]:not([hidden])');
     assert.match(await error.textContent(), /pavilion/);
     await page.fill('#f-cut-pavilion', '43.5');
     const id = await submitAndGetId();

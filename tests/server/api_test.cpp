@@ -245,6 +245,14 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     ASSERT_TRUE(csv && csv->status == 200);
     EXPECT_EQ(csv->get_header_value("Content-Type"), "text/csv");
     EXPECT_NE(csv->body.find("table"), std::string::npos);
+    // Byte ranges, as server/openapi.json lists them: 206 with the bytes asked for, 416 past the end.
+    auto head = client_->Get("/api/jobs/" + id + "/stats.csv", {{"Range", "bytes=0-2"}});
+    ASSERT_TRUE(head);
+    EXPECT_EQ(head->status, 206);
+    EXPECT_EQ(head->body, "id,");
+    auto past = client_->Get("/api/jobs/" + id + "/stats.csv", {{"Range", "bytes=99999999-"}});
+    ASSERT_TRUE(past);
+    EXPECT_EQ(past->status, 416);
     for (const char* png : {"render.png", "heatmap.png", "angular.png"}) {
         auto p = client_->Get("/api/jobs/" + id + "/" + png);
         ASSERT_TRUE(p && p->status == 200) << png;
@@ -938,7 +946,7 @@ TEST_F(ServiceTest, BadSweepsAreRefusedNamingTheField) {
             j["sweep"]["constraints"] = {"depth<=62"};
         },
         "sweep.constraints[0]");
-    refused([](json& j) { j["sweep"]["set"] = {{"table", 500}}; }, "sweep.set");
+    refused([](json& j) { j["sweep"]["set"] = {{"table", 500}}; }, "sweep.set.table");
     refused([](json& j) { j["sweep"]["bogus"] = 1; }, "sweep.bogus");
     refused([](json& j) { j["sweep"]["refine_rounds"] = 9; }, "sweep.refine_rounds");
     refused([](json& j) { j["mesh"] = "no_such_cut"; }, "mesh");

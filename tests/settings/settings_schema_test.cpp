@@ -5,6 +5,7 @@
 #include <functional>
 #include <set>
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "cli/trace_options.h"
@@ -121,6 +122,11 @@ TEST(SettingsSchema, ABadValueInEachFieldNamesItsDottedPath) {
     EXPECT_EQ(errorField({{"mesh", "m"}, {"tilt_series", json::object()}}), "tilt_series");
     EXPECT_EQ(errorField({{"mesh", "m"}, {"fire_picture", true}, {"render", true}}), "fire_picture");
     EXPECT_EQ(errorField({{"mesh", "m"}, {"fire_picture", json::object()}}), "fire_picture");  // no render
+    // A shape's parameters are fields of `cut`, each named by its own path.
+    EXPECT_EQ(errorField({{"mesh", "round_brilliant"}, {"cut", {{"pavilion", 89}}}}), "cut.pavilion");
+    EXPECT_EQ(errorField({{"mesh", "round_brilliant"}, {"cut", {{"halves", 0.5}}}}), "cut.halves");
+    EXPECT_EQ(errorField({{"mesh", "round_brilliant"}, {"cut", {{"pavillion", 41}}}}), "cut.pavillion");
+    EXPECT_EQ(errorField({{"mesh", "round_brilliant"}, {"cut", 5}}), "cut");
 }
 
 std::string errorText(const json& job) {
@@ -145,6 +151,9 @@ TEST(SettingsSchema, AMistypedNameIsToldTheNameItMeant) {
     EXPECT_EQ(errorText({{"mesh", "m"}, {"photon", 1000}}), "unknown field 'photon'; did you mean 'photons'?");
     EXPECT_EQ(errorText({{"mesh", "m"}, {"light", {{"modle", "hemisphere"}}}}),
               "unknown field 'light.modle'; did you mean 'light.model'?");
+    EXPECT_THAT(errorText({{"mesh", "round_brilliant"}, {"cut", {{"pavillion", 41}}}}),
+                testing::HasSubstr("cut.pavillion: round_brilliant has no parameter 'pavillion' (did you mean "
+                                   "'pavilion'?); its parameters are: table, crown, pavilion"));
     const std::string longKey(100000, 'x');
     EXPECT_LT(errorText({{"mesh", "m"}, {longKey, 1}}).size(), 100u);
 }
