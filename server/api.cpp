@@ -11,6 +11,7 @@
 #include "job_status.h"
 #include "problem.h"
 #include "request_body.h"
+#include "optics/light_model.h"
 #include "stats/facet_stats.h"
 #include "study/result_files.h"
 #include "util/error.h"
@@ -121,11 +122,20 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     } catch (const Error& e) {
         return problem(res, 422, e.what(), e.field());
     }
+    // A sweep's shape, and a design's (cut), were checked with them; the stone a job traces is built here, so
+    // that what depends on it (a point light outside it) is refused now, not when the job runs.
+    std::shared_ptr<const Stone> stone;
     try {
-        // A sweep's shape, and a design's (cut), were checked with them.
-        if (!spec.settings.sweep && spec.cut.empty()) catalog_.resolve(spec.mesh);
+        if (!spec.settings.sweep)
+            stone = spec.cut.empty() ? catalog_.resolve(spec.mesh)
+                                     : std::make_shared<const Stone>(cutStone(spec));
     } catch (const Error& e) {
         return problem(res, 422, e.what(), "mesh");
+    }
+    try {
+        if (stone) LightModel(spec.settings.trace.light, *stone);
+    } catch (const Error& e) {
+        return problem(res, 422, e.what(), e.field().empty() ? "light" : e.field());
     }
     // Named here, where an upload's file name is known, so that the API and the page show one name.
     if (spec.name.empty()) spec.name = defaultJobName(spec, catalog_.designName(spec.mesh));

@@ -88,13 +88,15 @@ LightModel::LightModel(const LightSettings& s, const Stone& stone) : kind_(s.mod
             position_ = untilt(s.position, cosTilt_, sinTilt_);
             const double d = length(center_ - position_);
             if (!(d > radius_ * 1.001)) {
-                throw Error("light.position must lie outside the stone's bounding sphere (centre " +
-                            std::to_string(center_.z) + " on the z axis, radius " + std::to_string(radius_) +
-                            ")");
+                throw Error("light.position",
+                            "light.position must lie outside the stone's bounding sphere (centre " +
+                                std::to_string(center_.z) + " on the z axis, radius " +
+                                std::to_string(radius_) + ")");
             }
             if (!(d <= kMaxPointLightRadii * radius_)) {
-                throw Error("light.position must lie within " + std::to_string(int(kMaxPointLightRadii)) +
-                            " stone radii of the stone (a distant light is the collimated model)");
+                throw Error("light.position",
+                            "light.position must lie within " + std::to_string(int(kMaxPointLightRadii)) +
+                                " stone radii of the stone (a distant light is the collimated model)");
             }
             cosCone_ = std::sqrt(1 - (radius_ / d) * (radius_ / d));
             dir_ = normalize(center_ - position_);
@@ -137,6 +139,5 @@ LightRay LightModel::sample(Rng& rng) const {
     }
     return {};
 }
-
 
 }  // namespace facetlight

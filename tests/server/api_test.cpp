@@ -486,10 +486,18 @@ TEST_F(ServiceTest, BadJobsAreRefusedNamingTheField) {
     expectProblem(submit({{"mesh", "round_brilliant"}, {"photons", 10}, {"render", {{"width", 3000}}}}), 422,
                   "render.width");
     expectProblem(client_->Post("/api/jobs", smallJob().dump(), "application/xml"), 415);
+    // A point light inside the stone (its own or a cut of a shape) is refused now, not when the job runs.
+    json inside = smallJob();
+    inside["light"] = {{"model", "point"}, {"position", {0, 0, 0}}};
+    expectProblem(submit(inside), 422, "light.position");
+    inside["cut"] = {{"pavilion", 43}};
+    expectProblem(submit(inside), 422, "light.position");
+    inside["light"]["position"] = {0, 0, 10};
+    EXPECT_EQ(submit(inside)->status, 202);
     expectProblem(client_->Get("/api/jobs/0123456789abcdef0123456789abcdef"), 404);
     expectProblem(client_->Get("/api/jobs/not-an-id"), 404);
     expectProblem(client_->Get("/api/jobs/" + std::string(5000, 'a')), 414);
-    EXPECT_EQ(json::parse(client_->Get("/api/jobs")->body)["total"], 0);
+    EXPECT_EQ(json::parse(client_->Get("/api/jobs")->body)["total"], 1);  // the one with the light outside
 }
 
 TEST_F(ServiceTest, BodyLimitsAndJsonOnly) {
