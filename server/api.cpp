@@ -9,9 +9,9 @@
 
 #include "http_server.h"
 #include "job_status.h"
+#include "optics/light_model.h"
 #include "problem.h"
 #include "request_body.h"
-#include "optics/light_model.h"
 #include "stats/facet_stats.h"
 #include "study/result_files.h"
 #include "util/error.h"
@@ -162,9 +162,15 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
 void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentReader& reader) {
     std::string fileName = req.has_param("name") ? req.get_param_value("name") : "upload";
     BodyCollector body(limits_, req);
+    int files = 0;
     if (req.is_multipart_form_data()) {
+        // cpp-httplib reads a multipart body without a boundary as one that ended early: say what is missing.
+        if (req.get_header_value("Content-Type").find("boundary=") == std::string::npos)
+            return problem(res, 400,
+                           "a multipart/form-data upload needs its boundary: Content-Type: "
+                           "multipart/form-data; boundary=...",
+                           "Content-Type");
         // The first part named "file" is the mesh; other parts are read and dropped.
-        int files = 0;
         bool inFile = false;
         body.readMultipart(
             reader,
@@ -180,6 +186,8 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
     if (body.tooLarge())
         return problem(res, 413, "the upload is larger than " + std::to_string(body.limit()) + " bytes");
     if (!body.complete()) return problem(res, 400, kShortBody);
+    if (req.is_multipart_form_data() && files == 0)
+        return problem(res, 422, "a multipart upload carries the mesh in a part named \"file\"", "file");
     if (refuseWhenStorageLow(res)) return;
     std::optional<MeshFormat> format;
     if (req.has_param("format")) {

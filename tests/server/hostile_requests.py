@@ -300,6 +300,11 @@ def cases():
         ("upload GemCad gear 100 KB", upload(b"GemCad 5.0\ng " + b"9" * 100000 + b" 0\n", "g.asc"), 422, "file"),
         ("job from our origin", post_job(job(), Origin="http://localhost:8080"), 202, None),
         ("multipart upload", multipart(CUBE_OBJ, Origin="http://127.0.0.1:8080"), 201, None),
+        ("multipart upload without a boundary", http("POST", "/api/meshes", b"--b0undary\r\n" + CUBE_OBJ,
+                                                     {"Content-Type": "multipart/form-data"}), 400, "Content-Type"),
+        ("multipart upload without a file part", http(
+            "POST", "/api/meshes", b"--b\r\nContent-Disposition: form-data; name=\"other\"\r\n\r\nx\r\n--b--\r\n",
+            {"Content-Type": "multipart/form-data; boundary=b"}), 422, "file"),
     ]
 
 
