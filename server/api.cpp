@@ -14,6 +14,7 @@
 #include "request_body.h"
 #include "stats/facet_stats.h"
 #include "study/result_files.h"
+#include "sweep/sweep_request.h"
 #include "util/error.h"
 #include "util/json_text.h"
 #include "util/simd_target.h"
@@ -126,11 +127,14 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     // that what depends on it (a point light outside it) is refused now, not when the job runs.
     std::shared_ptr<const Stone> stone;
     try {
+        // A sweep of a design or mesh file: its tiers and the request are checked once the file is found.
+        if (spec.settings.sweep && !isLibraryShape(spec.mesh))
+            planSweepOf(catalog_.shapeSource(spec.mesh), *spec.settings.sweep, spec.settings.trace);
         if (!spec.settings.sweep)
             stone = spec.cut.empty() ? catalog_.resolve(spec.mesh)
-                                     : std::make_shared<const Stone>(cutStone(spec));
+                                     : std::make_shared<const Stone>(cutStone(spec, catalog_.shapeSource(spec.mesh)));
     } catch (const Error& e) {
-        return problem(res, 422, e.what(), "mesh");
+        return problem(res, 422, e.what(), e.field().empty() ? "mesh" : e.field());
     }
     try {
         if (stone) LightModel(spec.settings.trace.light, *stone);
@@ -298,7 +302,7 @@ void Api::getSweepPoints(const Request& req, Response& res) {
     if (!study.settings.sweep) return problem(res, 404, "this job is not a sweep");
     SweepPlan spec;
     try {
-        spec = planSweep(study.mesh, *study.settings.sweep, study.settings.trace);
+        spec = planSweepOf(catalog_.shapeSource(study.mesh), *study.settings.sweep, study.settings.trace);
     } catch (const Error& e) {
         return problem(res, 500, unread + e.what());
     }

@@ -4,6 +4,7 @@
 
 #include "cuts/cut_library.h"
 #include "stone/stone_json.h"
+#include "sweep/sweep_request.h"
 #include "util/error.h"
 #include "util/name_table.h"
 
@@ -131,6 +132,13 @@ ChildMesh MeshCatalog::locate(const std::string& mesh) const {
     }
     if (const auto file = shippedFile(mesh)) return {fs::absolute(*file).string(), ""};
     return {mesh, mesh};
+}
+
+std::string MeshCatalog::shapeSource(const std::string& mesh) const {
+    if (isLibraryShape(mesh)) return mesh;
+    const ChildMesh child = locate(mesh);
+    if (child.source == mesh) throw Error("mesh: unknown mesh '" + mesh + "' (see GET /api/meshes)");
+    return child.source;
 }
 
 std::string MeshCatalog::designName(const std::string& mesh) const {

@@ -9,7 +9,7 @@ import { loadFormDefaults, submitJob, syncFormControls } from './js/form.js';
 import { jobsView, refreshHealth, refreshJobs } from './js/jobs.js';
 import { describeMesh, loadMeshes, uploadMesh } from './js/meshes.js';
 import { resultView, showResult } from './js/result.js';
-import { initSweepForm, setSweepShapes, showSweep, sweepView } from './js/sweep.js';
+import { initSweepForm, showSweep, sweepView } from './js/sweep.js';
 
 function route() {
   const hash = location.hash.replace(/^#/, '') || '/';
@@ -72,8 +72,7 @@ async function start() {
   route();
   const [health] = await Promise.all([refreshHealth(), loadFormDefaults()]);
   if (health && health.cores) $('#f-threads').max = String(health.cores);
-  const shipped = await loadMeshes();
-  if (shipped) setSweepShapes(shipped);
+  await loadMeshes();  // fills the sweep form's shapes too ('meshes-loaded')
   refreshJobs();
 }
 

@@ -835,6 +835,38 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await shot('14-sweep-search');
   });
 
+  test('a GemCad design: its cutting sheet, diagram and weight on the result page, its tiers in the sweep form', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    const mesh = await uploadThroughPage('tests/data/brilliant.asc');
+    assert.match(await page.textContent('#hint-mesh'), /GemCad design: 5 tiers to sweep/);
+    await page.fill('#f-photons', '5000');
+    await page.fill('#f-threads', '2');
+    await page.setChecked('#f-render', false);
+    const id = await submitAndGetId();
+    await waitForFinished(id);
+    await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
+    await page.waitForSelector('[data-section="design"]');
+    const rows = await page.$$eval('table.cutting-sheet tbody tr', (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
+    assert.equal(rows.length, 7);
+    assert.deepEqual(rows[0].slice(0, 5), ['P1', 'pavilion', '41°', '41°', '0.668']);
+    assert.equal(rows[0][6], '03-15-27-39-51-63-75-87');
+    const pics = await picturesLoaded('[data-section="design"]');
+    assert.equal(pics.length, 1);
+    assert.ok(pics[0].width >= 1000, `the diagram is ${pics[0].width} px wide`);
+    assert.match(await page.textContent('[data-section="design"]'), /design file's own index/);
+    await shot('15-design');
+    await page.setViewportSize(PHONE);
+    await page.waitForTimeout(200);
+    assert.ok(await noHorizontalOverflow(), 'the design section fits a phone');
+    await page.setViewportSize(DESKTOP);
+    // The sweep form offers the design, and its tiers as the quantities to vary.
+    await page.goto(`${baseUrl}/#/`);
+    await page.selectOption('#s-shape', mesh);
+    assert.equal(await page.inputValue('#s-name-0'), 'tier:P1');
+    const quantities = await page.$$eval('#sweep-quantities option', (os) => os.map((o) => o.value));
+    for (const q of ['tier:P1', 'tier:C2', 'tilt']) assert.ok(quantities.includes(q), quantities.join(' '));
+  });
+
   test('the home page fits a phone', async () => {
     await page.setViewportSize(PHONE);
     await page.goto(`${baseUrl}/#/`);
