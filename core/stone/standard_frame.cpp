@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 
 #include "geometry/rotation.h"
 #include "stone/detail/newell.h"
@@ -39,7 +40,8 @@ void moveToStandardFrame(Stone& stone, double scale, bool reorient) {
         const Vec3 axis = cross(from, Vec3{0, 0, 1});
         const double s = length(axis), c = from.z;
         frame.fileOrientation = false;
-        frame.tableFacet = largest->name;
+        // Named as finishFacets() will name it when the file gave it no name.
+        frame.tableFacet = largest->name.empty() ? "facet_" + std::to_string(largest->id + 1) : largest->name;
         frame.turnedDeg = degrees(std::atan2(s, c));
         if (s > 1e-12) {
             const Vec3 k = axis / s;
