@@ -35,13 +35,14 @@ void logRequest(const Request& req, const Response& res) {
 }  // namespace
 
 Api::Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
-         std::string readOnly, const std::vector<std::string>& allowedHosts)
+         std::string readOnly, const std::vector<std::string>& allowedHosts, std::string token)
     : results_(results),
       queue_(queue),
       catalog_(catalog),
       limits_(limits),
       readOnly_(std::move(readOnly)),
-      allowedHosts_(allowedHosts.begin(), allowedHosts.end()) {}
+      allowedHosts_(allowedHosts.begin(), allowedHosts.end()),
+      token_(std::move(token)) {}
 
 std::vector<Route> Api::routes() {
     std::vector<Route> routes = {
@@ -404,6 +405,7 @@ void Api::install(httplib::Server& server, bool accessLog) {
                        [](unsigned char c) { return std::tolower(c); });
         rules.allowedHosts.insert(std::move(host));
     }
+    rules.token = token_;
     server.set_payload_max_length(std::max(limits.maxBodyBytes, limits.maxUploadBytes));
     server.set_pre_routing_handler([rules = std::move(rules)](const Request& req, Response& res) {
         const auto refusal = checkRequest(req, rules);

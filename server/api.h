@@ -25,9 +25,10 @@ std::string_view openApiDocument();
 class Api {
   public:
     // `readOnly`: why the store cannot be written (empty: it can); then every route that writes answers 503.
-    // `allowedHosts`: names the server is reached by besides the loopback ones (RequestRules::allowedHosts).
+    // `allowedHosts`: names the server is reached by besides the loopback ones (RequestRules::allowedHosts);
+    // `token`: the bearer token /api requests must carry (empty: none, RequestRules::token).
     Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
-        std::string readOnly, const std::vector<std::string>& allowedHosts);
+        std::string readOnly, const std::vector<std::string>& allowedHosts, std::string token);
     // Registers every route, the guards that run before them, the error handlers and the access log.
     void install(httplib::Server& server, bool accessLog);
     static std::vector<Route> routes();
@@ -53,6 +54,7 @@ class Api {
     ServiceLimits limits_;
     std::string readOnly_;
     std::set<std::string> allowedHosts_;
+    std::string token_;
 };
 
 }  // namespace facetlight::server

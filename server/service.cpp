@@ -17,8 +17,8 @@ Service::Service(ServiceConfig config) : config_(std::move(config)), http_(confi
     queue_ = std::make_unique<JobQueue>(*store_, *results_, *runner_, config_.limits.maxQueued,
                                         config_.limits.minFreeBytes, cores);
     const std::string& readOnly = database_->readOnlyReason();
-    api_ =
-        std::make_unique<Api>(*results_, *queue_, *catalog_, config_.limits, readOnly, config_.allowedHosts);
+    api_ = std::make_unique<Api>(*results_, *queue_, *catalog_, config_.limits, readOnly,
+                                 config_.allowedHosts, config_.token);
     http_.set_tcp_nodelay(true);  // headers and body go out as two writes: no Nagle delay between them
     api_->install(http_, config_.accessLog);
     std::error_code ec;

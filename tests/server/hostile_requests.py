@@ -33,13 +33,13 @@ def free_port():
 
 
 class Server:
-    def __init__(self, binary, work, *extra, log_dir=None):
+    def __init__(self, binary, work, *extra, log_dir=None, host="127.0.0.1"):
         self.port = free_port()
         os.makedirs(os.path.join(work, "meshes"), exist_ok=True)
         self.log_path = os.path.join(log_dir or work, "server.log")
         self.log = open(self.log_path, "ab")
         self.proc = subprocess.Popen(
-            [binary, "--host", "127.0.0.1", "--port", str(self.port), "--data", os.path.join(work, "data"),
+            [binary, "--host", host, "--port", str(self.port), "--data", os.path.join(work, "data"),
              "--meshes", os.path.join(work, "meshes"), "--web", os.path.join(work, "web"), "--cores", "1",
              "--http-threads", str(HTTP_THREADS), "--max-connections-per-peer", str(MAX_PER_PEER),
              "--request-timeout", str(REQUEST_TIMEOUT_S), "--max-body", str(MAX_BODY), *extra],
@@ -546,6 +546,70 @@ def run_allowed_host(binary, work):
     return 4
 
 
+TOKEN = "t0ken-for-the-hostile-suite-0123"
+
+
+def refuses_to_start(binary, name, args, why):
+    """The server exits at once with a non-zero status, saying `why` on stderr."""
+    try:
+        done = subprocess.run([binary, "--port", str(free_port()), *args], capture_output=True, timeout=10)
+    except subprocess.TimeoutExpired:
+        return fail(name, "the server started")
+    if done.returncode == 0 or why not in done.stderr.decode("latin-1"):
+        fail(name, "exit %d, stderr %r (expected %r)" % (done.returncode, done.stderr[-300:], why))
+
+
+def run_bearer_token(binary, work):
+    """Issue 31, item 1: with --token-file every /api request needs the token; /healthz and the page do not;
+    a --host other than loopback needs a token file or an explicit --no-auth."""
+    folder = os.path.join(work, "token")
+    os.makedirs(os.path.join(folder, "web"))
+    with open(os.path.join(folder, "web", "index.html"), "w") as f:
+        f.write("<!doctype html><title>facetlight</title>")
+    token_file = os.path.join(folder, "token")
+    with open(token_file, "w") as f:
+        f.write(TOKEN + "\n")
+    empty = os.path.join(folder, "empty")
+    open(empty, "w").close()
+    refuses_to_start(binary, "--host 0.0.0.0 without a token", ["--host", "0.0.0.0"], "--token-file")
+    refuses_to_start(binary, "--host 192.0.2.1 without a token", ["--host", "192.0.2.1"], "--no-auth")
+    refuses_to_start(binary, "empty token file", ["--token-file", empty], "empty")
+    refuses_to_start(binary, "missing token file", ["--token-file", os.path.join(folder, "missing")], "not a file")
+    refuses_to_start(binary, "token file and --no-auth", ["--token-file", token_file, "--no-auth"], "excludes")
+    n = 5
+    bearer = {"Authorization": "Bearer " + TOKEN}
+    server = Server(binary, folder, "--token-file", token_file, host="0.0.0.0")
+    try:
+        expect(server, "job list without the token", http("GET", "/api/jobs"), 401)
+        headers = server.request(http("GET", "/api/jobs"))[1]
+        if not headers.get("www-authenticate", "").startswith("Bearer"):
+            fail("job list without the token", "WWW-Authenticate is %r" % headers.get("www-authenticate"))
+        expect(server, "job list with another token",
+               http("GET", "/api/jobs", headers={"Authorization": "Bearer " + TOKEN[:-1] + "4"}), 401)
+        expect(server, "job list with the token as Basic",
+               http("GET", "/api/jobs", headers={"Authorization": "Basic " + TOKEN}), 401)
+        expect(server, "job without the token", post_job(job()), 401)
+        expect(server, "upload without the token", upload(CUBE_OBJ), 401)
+        expect(server, "result file without the token", http("GET", "/api/jobs/%s/render.png" % ID), 401)
+        expect(server, "result file with the token", http("GET", "/api/jobs/%s/render.png" % ID, headers=bearer),
+               404)
+        expect(server, "openapi without the token", http("GET", "/api/openapi.json"), 401)
+        expect(server, "job list with the token", http("GET", "/api/jobs", headers=bearer), 200)
+        expect(server, "job with the token", post_job(job(), **bearer), 202)
+        expect(server, "healthz without the token", http("GET", "/healthz"), 200)
+        expect(server, "page without the token", http("GET", "/"), 200)
+        n += 12
+    finally:
+        server.stop()
+    server = Server(binary, os.path.join(work, "no-auth"), "--no-auth", host="0.0.0.0")
+    try:
+        expect(server, "job list with --no-auth", http("GET", "/api/jobs"), 200)
+        n += 1
+    finally:
+        server.stop()
+    return n
+
+
 def run_durable_cancel(binary, work):
     """Issue 31, item 7: an acknowledged cancel survives kill -9, for a queued job (200) and a running one (202)."""
     folder = os.path.join(work, "cancel")
@@ -704,6 +768,7 @@ def main():
         server.stop()
     try:
         total += run_allowed_host(binary, work)
+        total += run_bearer_token(binary, work)
         total += run_durable_cancel(binary, work)
         total += run_storage_guard(binary, work)
         total += run_real_full_disk(binary, work)
