@@ -4,6 +4,7 @@
 // job_status.h, bodies read with request_body.h. Handlers only read and write the store and the queue; jobs
 // run on the queue's worker.
 #include <set>
+#include <shared_mutex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,6 +45,7 @@ class Api {
     void getJob(const httplib::Request& req, httplib::Response& res);
     void cancelJob(const httplib::Request& req, httplib::Response& res);
     void deleteJob(const httplib::Request& req, httplib::Response& res);
+    void deleteMesh(const httplib::Request& req, httplib::Response& res);
     void getSweepPoints(const httplib::Request& req, httplib::Response& res);
     void getResult(const httplib::Request& req, httplib::Response& res, const std::string& file,
                    const std::string& contentType);
@@ -55,6 +57,9 @@ class Api {
     std::string readOnly_;
     std::set<std::string> allowedHosts_;
     std::string token_;
+    // Held shared by a submission from naming its mesh until it is queued, and alone by a mesh's deletion
+    // from its check that no job uses it until it is gone: no job is queued on a mesh being deleted.
+    std::shared_mutex meshUse_;
 };
 
 }  // namespace facetlight::server

@@ -40,6 +40,9 @@ int main(int argc, char** argv) {
     app.add_option("--max-upload", l.maxUploadBytes, "Largest mesh upload in bytes")
         ->capture_default_str()
         ->check(CLI::Range(size_t(1), size_t(1) << 30));
+    app.add_option("--max-mesh-store", l.maxMeshStoreBytes,
+                   "Most bytes the uploaded meshes may take together; an upload beyond gets 507")
+        ->capture_default_str();
     app.add_option("--max-queue", l.maxQueued, "Most jobs waiting in the queue")
         ->capture_default_str()
         ->check(CLI::Range(size_t(1), size_t(100000)));

@@ -10,7 +10,8 @@ Service::Service(ServiceConfig config) : config_(std::move(config)), http_(confi
     const int cores = config_.cores > 0 ? config_.cores : int(std::thread::hardware_concurrency());
     database_ = std::make_unique<Database>(config_.dataDir);
     store_ = std::make_unique<JobStore>(*database_);
-    meshes_ = std::make_unique<MeshStore>(*database_, config_.dataDir / "meshes");
+    meshes_ =
+        std::make_unique<MeshStore>(*database_, config_.dataDir / "meshes", config_.limits.maxMeshStoreBytes);
     results_ = std::make_unique<ResultStore>(config_.dataDir / "jobs");
     catalog_ = std::make_unique<MeshCatalog>(*meshes_, config_.meshesDir);
     runner_ = makeStudyRunner(*catalog_, config_.launch);

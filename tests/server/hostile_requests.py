@@ -166,6 +166,8 @@ def cases():
         ("unknown job png", http("GET", "/api/jobs/%s/render.png" % ID), 404, None),
         ("cancel unknown", http("POST", "/api/jobs/%s/cancel" % ID), 404, None),
         ("delete unknown", http("DELETE", "/api/jobs/" + ID), 404, None),
+        ("delete unknown mesh", http("DELETE", "/api/meshes/" + ID), 404, None),
+        ("delete shipped mesh", http("DELETE", "/api/meshes/round_brilliant"), 404, None),
         ("id not hex", http("GET", "/api/jobs/ZZZZ"), 404, None),
         ("traversal", http("GET", "/api/jobs/../../etc/passwd"), {400, 404}, None),
         ("encoded traversal", http("GET", "/api/jobs/%2e%2e%2f%2e%2e%2fetc%2fpasswd"), {400, 404}, None),
@@ -278,6 +280,7 @@ def cases():
         ("multipart upload from evil origin", multipart(CUBE_OBJ, **EVIL), 403, None),
         ("cancel from evil origin", http("POST", "/api/jobs/%s/cancel" % ID, headers=EVIL), 403, None),
         ("delete from evil origin", http("DELETE", "/api/jobs/" + ID, headers=EVIL), 403, None),
+        ("delete mesh from evil origin", http("DELETE", "/api/meshes/" + ID, headers=EVIL), 403, None),
         ("list from evil origin", http("GET", "/api/jobs", headers=EVIL), 200, None),
         ("form-encoded job", post_job(job(), "application/x-www-form-urlencoded"), 415, None),
         ("text/plain job", post_job(job(), "text/plain"), 415, None),
@@ -610,6 +613,29 @@ def run_bearer_token(binary, work):
     return n
 
 
+def run_mesh_store(binary, work):
+    """Issue 31, item 10: uploads take at most --max-mesh-store together (507 beyond, naming it); a mesh can be
+    deleted (204), but not while a queued or running job names it (409)."""
+    server = Server(binary, os.path.join(work, "mesh-store"), "--max-mesh-store", str(2 * len(CUBE_OBJ) + 10))
+    try:
+        first = json.loads(expect(server, "first upload", upload(CUBE_OBJ), 201)[1])["mesh"]
+        second = json.loads(expect(server, "second upload", upload(CUBE_OBJ), 201)[1])["mesh"]
+        status, body = expect(server, "upload past --max-mesh-store", upload(CUBE_OBJ), 507)
+        if status == 507 and "--max-mesh-store" not in json.loads(body)["detail"]:
+            fail("upload past --max-mesh-store", "the problem does not name the limit: %.300r" % body)
+        expect(server, "delete an upload", http("DELETE", "/api/meshes/" + first), 204)
+        expect(server, "delete it again", http("DELETE", "/api/meshes/" + first), 404)
+        expect(server, "upload after a delete", upload(CUBE_OBJ), 201)
+        running = json.loads(server.request(post_job(job(mesh=second, photons=100000000)))[2])["id"]
+        expect(server, "delete a mesh a job uses", http("DELETE", "/api/meshes/" + second), 409)
+        server.request(http("POST", "/api/jobs/%s/cancel" % running))
+        wait_finished(server, running)
+        expect(server, "delete it once the job ended", http("DELETE", "/api/meshes/" + second), 204)
+    finally:
+        server.stop()
+    return 8
+
+
 def run_durable_cancel(binary, work):
     """Issue 31, item 7: an acknowledged cancel survives kill -9, for a queued job (200) and a running one (202)."""
     folder = os.path.join(work, "cancel")
@@ -769,6 +795,7 @@ def main():
     try:
         total += run_allowed_host(binary, work)
         total += run_bearer_token(binary, work)
+        total += run_mesh_store(binary, work)
         total += run_durable_cancel(binary, work)
         total += run_storage_guard(binary, work)
         total += run_real_full_disk(binary, work)
