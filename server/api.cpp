@@ -93,19 +93,29 @@ bool Api::refuseWhenReadOnly(Response& res) const {
     return true;
 }
 
-// For /healthz: whether the store takes new work, and why not.
-json Api::storageJson() const {
+// For /healthz: whether the store takes new work, and why not. A disk without one free byte, or one that
+// refuses a probe's byte, is full whatever --min-free says (with --min-free 0 it was "ok"): then, and while
+// the store refuses writes, nothing the service does can be kept, and /healthz answers 503.
+json Api::storageJson(bool& writable) const {
     const uint64_t free = results_.freeBytes();
     std::string state = "ok", detail;
+    writable = true;
     if (!readOnly_.empty()) {
         state = "read-only";
         detail = "the store is read-only (" + readOnly_ + "): no jobs run or are accepted";
-    } else if (const std::string shortage = results_.spaceShortage(limits_.minFreeBytes); !shortage.empty()) {
-        state = "full";
-        detail = shortage + ": new jobs and uploads get 507, queued jobs fail";
     } else if (const size_t unsaved = queue_.unsavedCount()) {
         state = "failing";
         detail = std::to_string(unsaved) + " job state(s) not yet recorded: the store refused writes";
+        writable = false;
+    } else if (const std::string refusal =
+                   free == 0 ? "the server's storage has no free byte" : results_.writeRefusal();
+               !refusal.empty()) {
+        state = "full";
+        detail = refusal + ": nothing can be stored; new jobs and uploads get 507, queued jobs fail";
+        writable = false;
+    } else if (const std::string shortage = results_.spaceShortage(limits_.minFreeBytes); !shortage.empty()) {
+        state = "full";
+        detail = shortage + ": new jobs and uploads get 507, queued jobs fail";
     }
     json doc = {{"state", state}, {"free_bytes", free}, {"min_free_bytes", limits_.minFreeBytes}};
     if (!detail.empty()) doc["detail"] = detail;
@@ -375,8 +385,9 @@ void Api::install(httplib::Server& server, bool accessLog) {
     std::map<std::string, Plain> plain = {
         {"GET /healthz",
          [this](const Request&, Response& res) {
-             json storage = storageJson();
-             sendJson(res, 200,
+             bool writable = true;
+             json storage = storageJson(writable);
+             sendJson(res, writable ? 200 : 503,
                       {{"status", storage["state"] == "ok" ? "ok" : "degraded"},
                        {"queued", queue_.queuedCount()},
                        {"cores", queue_.cores()},

@@ -37,7 +37,8 @@ class Api {
   private:
     bool refuseWhenStorageLow(httplib::Response& res) const;  // true: answered 507
     bool refuseWhenReadOnly(httplib::Response& res) const;    // true: answered 503
-    nlohmann::json storageJson() const;
+    // `writable`: false when nothing can be written (the disk has no room, or the store refuses writes).
+    nlohmann::json storageJson(bool& writable) const;
     void submitJob(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader);
     void uploadMesh(const httplib::Request& req, httplib::Response& res,
                     const httplib::ContentReader& reader);

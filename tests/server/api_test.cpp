@@ -668,6 +668,33 @@ TEST_F(FullDiskTest, BelowMinFreeNewWorkIsRefusedAndQueuedJobsFailWhileReadsGoOn
     EXPECT_EQ(client_->Delete("/api/jobs/" + done)->status, 204);
 }
 
+// Issue 31, item 10: with --min-free 0 a disk without a free byte said "ok"; it takes nothing, so /healthz
+// says why with 503. Below --min-free with room left, it stays 200 and degraded.
+TEST_F(FullDiskTest, HealthIs503WhenTheDiskTakesNoMoreWritesWhateverMinFree) {
+    startKeepingNothingFree();
+    auto ok = client_->Get("/healthz");
+    ASSERT_TRUE(ok);
+    EXPECT_EQ(ok->status, 200);
+    simulatedFullDisk().files = true;
+    auto full = client_->Get("/healthz");
+    ASSERT_TRUE(full);
+    EXPECT_EQ(full->status, 503);
+    const json h = json::parse(full->body);
+    EXPECT_EQ(h["status"], "degraded");
+    EXPECT_EQ(h["storage"]["state"], "full") << h;
+    EXPECT_NE(h["storage"]["detail"].get<std::string>().find("no free byte"), std::string::npos) << h;
+    EXPECT_EQ(h["storage"]["detail"].get<std::string>().find(dir_.string()), std::string::npos) << h;
+    simulatedFullDisk().files = false;
+    stopService();
+    ServiceLimits limits;
+    limits.minFreeBytes = uint64_t(1) << 62;  // more than any disk: short of --min-free, with room
+    start(limits);
+    auto shortOf = client_->Get("/healthz");
+    ASSERT_TRUE(shortOf);
+    EXPECT_EQ(shortOf->status, 200);
+    EXPECT_EQ(json::parse(shortOf->body)["storage"]["state"], "full");
+}
+
 TEST_F(FullDiskTest, LeftoversAreRemovedAtStart) {
     const std::string id = submitOk(smallJob());
     ASSERT_EQ(waitFinished(id)["state"], "succeeded");

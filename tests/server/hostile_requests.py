@@ -35,6 +35,7 @@ def free_port():
 class Server:
     def __init__(self, binary, work, *extra, log_dir=None, host="127.0.0.1"):
         self.port = free_port()
+        self.disk_full = False  # on a full disk /healthz may answer 503: nothing can be written
         os.makedirs(os.path.join(work, "meshes"), exist_ok=True)
         self.log_path = os.path.join(log_dir or work, "server.log")
         self.log = open(self.log_path, "ab")
@@ -47,7 +48,8 @@ class Server:
         deadline = time.time() + 20
         while time.time() < deadline:
             try:
-                if self.request(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n\r\n", timeout=1)[0] == 200:
+                # 503: up, on a disk that takes no more writes.
+                if self.request(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n\r\n", timeout=1)[0] in (200, 503):
                     return
             except OSError:
                 time.sleep(0.05)
@@ -368,7 +370,7 @@ def healthz_fast(server, name):
         status = server.request(http("GET", "/healthz"), timeout=1)[0]
     except OSError as e:
         return fail(name, "/healthz did not answer within 1 s afterwards (%s)" % e)
-    if status != 200:
+    if status not in ((200, 503) if server.disk_full else (200,)):
         fail(name, "/healthz answered %d afterwards" % status)
     return time.time() - start
 
@@ -728,6 +730,13 @@ def run_real_full_disk(binary, work):
             if wait_finished(server, done)["state"] != "succeeded":
                 fail("real full disk", "the first job did not succeed")
             fill(os.path.join(disk, "filler"))
+            # Issue 31, item 10: with --min-free 0 a disk without a free byte said "ok".
+            time.sleep(1.1)  # the write probe's answer is kept a second
+            status, _, body = server.request(http("GET", "/healthz"))
+            health = json.loads(body)
+            if status != 503 or health["storage"]["state"] != "full" or not health["storage"].get("detail"):
+                fail("/healthz on a really full disk with --min-free 0", "%d %.300r" % (status, health))
+            server.disk_full = True
             status, body = expect(server, "job on a really full disk", post_job(rendered), {202, 507})
             if status == 202:  # the database had room: then the results have none
                 end = wait_finished(server, json.loads(body)["id"])
@@ -743,10 +752,12 @@ def run_real_full_disk(binary, work):
             server.stop()
         fill(os.path.join(disk, "filler"))  # what the delete freed
         server = Server(binary, disk, log_dir=work)  # starts on a full disk, under the default --min-free
+        server.disk_full = True
         try:
-            health = server.get_json("/healthz")
-            if health["status"] != "degraded" or health["storage"]["state"] != "full":
-                fail("start on a full disk", "/healthz says %.300r" % health)
+            status, _, body = server.request(http("GET", "/healthz"))
+            health = json.loads(body)
+            if status != 503 or health["status"] != "degraded" or health["storage"]["state"] != "full":
+                fail("start on a full disk", "/healthz says %d %.300r" % (status, health))
             expect(server, "job after a start on a full disk", post_job(job()), 507)
             n += 2
         finally:
@@ -771,6 +782,39 @@ def run_real_full_disk(binary, work):
         subprocess.call(["umount", "-l", disk])
     print("  real full disk and read-only store: %d requests" % n)
     return n
+
+
+def run_no_inodes(binary, work):
+    """A disk with bytes free but no inode left takes no new file: /healthz must say so (its write probe), not
+    "ok" (needs root to mount a tmpfs; else skipped)."""
+    disk = os.path.join(work, "tmpfs-inodes")
+    os.makedirs(disk)
+    if subprocess.call(["mount", "-t", "tmpfs", "-o", "size=8m,nr_inodes=200", "tmpfs", disk],
+                       stderr=subprocess.DEVNULL) != 0:
+        print("  disk without inodes: skipped (cannot mount a tmpfs here)")
+        return 0
+    try:
+        server = Server(binary, disk, "--min-free", "0", log_dir=work)
+        try:
+            for i in range(1000):
+                try:
+                    open(os.path.join(disk, "inode-%d" % i), "w").close()
+                except OSError as e:
+                    if e.errno != errno.ENOSPC:
+                        raise
+                    break
+            time.sleep(1.1)  # the write probe's answer is kept a second
+            status, _, body = server.request(http("GET", "/healthz"))
+            health = json.loads(body)
+            if status != 503 or "takes no more writes" not in health["storage"].get("detail", ""):
+                fail("/healthz on a disk without inodes", "%d %.300r" % (status, health))
+            if health["storage"]["free_bytes"] == 0:
+                fail("/healthz on a disk without inodes", "no byte free either: the probe was not what told")
+        finally:
+            server.stop()
+    finally:
+        subprocess.call(["umount", "-l", disk])
+    return 1
 
 
 def main():
@@ -799,6 +843,7 @@ def main():
         total += run_durable_cancel(binary, work)
         total += run_storage_guard(binary, work)
         total += run_real_full_disk(binary, work)
+        total += run_no_inodes(binary, work)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     print("  %d answers of API routes checked against the OpenAPI document" % check_documented(openapi))

@@ -3,10 +3,11 @@
 // asks for the token once and keeps it for this tab (sessionStorage), sending it on every request.
 
 class ApiError extends Error {
-  constructor(status, detail, field) {
+  constructor(status, detail, field, body = null) {
     super(detail);
     this.status = status;
     this.field = field || '';
+    this.body = body;  // the answer's JSON document, when it had one
   }
 }
 
@@ -115,7 +116,8 @@ export async function api(path, options = {}) {
   const body = type.includes('json') ? await res.json().catch(() => null) : await res.text();
   if (!res.ok) {
     const detail = body && typeof body === 'object' ? body.detail || body.title : `HTTP ${res.status}`;
-    throw new ApiError(res.status, detail, body && typeof body === 'object' ? body.field : '');
+    const doc = body && typeof body === 'object' ? body : null;
+    throw new ApiError(res.status, detail || `HTTP ${res.status}`, doc ? doc.field : '', doc);
   }
   return body;
 }
