@@ -33,7 +33,8 @@ def free_port():
 
 
 class Server:
-    def __init__(self, binary, work, *extra, log_dir=None, host="127.0.0.1"):
+    def __init__(self, binary, work, *extra, log_dir=None, host="127.0.0.1", per_peer=MAX_PER_PEER,
+                 request_timeout=REQUEST_TIMEOUT_S):
         self.port = free_port()
         self.disk_full = False  # on a full disk /healthz may answer 503: nothing can be written
         os.makedirs(os.path.join(work, "meshes"), exist_ok=True)
@@ -42,8 +43,8 @@ class Server:
         self.proc = subprocess.Popen(
             [binary, "--host", host, "--port", str(self.port), "--data", os.path.join(work, "data"),
              "--meshes", os.path.join(work, "meshes"), "--web", os.path.join(work, "web"), "--cores", "1",
-             "--http-threads", str(HTTP_THREADS), "--max-connections-per-peer", str(MAX_PER_PEER),
-             "--request-timeout", str(REQUEST_TIMEOUT_S), "--max-body", str(MAX_BODY), *extra],
+             "--http-threads", str(HTTP_THREADS), "--max-connections-per-peer", str(per_peer),
+             "--request-timeout", str(request_timeout), "--max-body", str(MAX_BODY), *extra],
             stdout=self.log, stderr=self.log)
         deadline = time.time() + 20
         while time.time() < deadline:
@@ -536,6 +537,43 @@ def expect(server, name, raw, wanted):
     return status, body
 
 
+def run_slow_clients_across_peers(binary, work):
+    """Issue 31, item 3: slow clients from 5 addresses, each under the per-peer cap, together more than
+    --max-http-threads: /healthz from another address must still answer within 1 s every time (it waited for a
+    slow client's deadline)."""
+    threads, per_peer, peers = 16, 8, 5
+    server = Server(binary, os.path.join(work, "slow-peers"), "--max-http-threads", str(threads),
+                    per_peer=per_peer, request_timeout=20)
+    slow = []
+    try:
+        for peer in range(2, 2 + peers):
+            for _ in range(per_peer):
+                s = socket.socket()
+                s.bind(("127.0.0.%d" % peer, 0))
+                s.settimeout(5)
+                s.connect(("127.0.0.1", server.port))
+                s.sendall(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n")
+                slow.append(s)
+        time.sleep(0.3)
+        start, worst, probes = time.time(), 0, 0
+        while time.time() - start < 4:
+            for s in slow:
+                try:
+                    s.sendall(b"X-Slow: 1\r\n")
+                except OSError:
+                    pass  # ended by the server to free its thread: what should happen
+            worst = max(worst, healthz_fast(server, "/healthz beside slow clients of %d addresses" % peers) or 0)
+            probes += 1
+            time.sleep(0.25)
+        print("  /healthz beside %d slow clients from %d addresses (%d threads at most): %d probes, slowest %.0f ms"
+              % (len(slow), peers, threads, probes, worst * 1000))
+    finally:
+        for s in slow:
+            s.close()
+        server.stop()
+    return probes
+
+
 def run_allowed_host(binary, work):
     """--allowed-host adds a name the server is reached by (behind a proxy, or on the network)."""
     server = Server(binary, os.path.join(work, "allowed"), "--allowed-host", "Gems.Example")
@@ -837,6 +875,7 @@ def main():
     finally:
         server.stop()
     try:
+        total += run_slow_clients_across_peers(binary, work)
         total += run_allowed_host(binary, work)
         total += run_bearer_token(binary, work)
         total += run_mesh_store(binary, work)
