@@ -207,4 +207,15 @@ MeshRecord MeshCatalog::upload(std::string_view bytes, std::string_view fileName
     return record;
 }
 
+bool MeshCatalog::isUploaded(const std::string& id) const {
+    return isId(id) && store_.mesh(id).has_value();
+}
+
+bool MeshCatalog::remove(const std::string& id) {
+    if (!isId(id) || !store_.removeMesh(id)) return false;
+    std::lock_guard lock(mutex_);
+    stones_.remove_if([&](const auto& entry) { return entry.first == id; });
+    return true;
+}
+
 }  // namespace facetlight::server

@@ -41,6 +41,9 @@ class MeshCatalog {
     // Parses and validates an upload (format from `format`, else the file name, else the content) and
     // stores it. Throws Error naming the problem.
     MeshRecord upload(std::string_view bytes, std::string_view fileName, std::optional<MeshFormat> format);
+    // Forgets an uploaded mesh: its record, its file and its built stone. False when there is none.
+    bool remove(const std::string& id);
+    bool isUploaded(const std::string& id) const;  // an uploaded mesh's id
 
     static bool isShapeName(std::string_view s);  // [a-z0-9][a-z0-9_-]{0,63}
 

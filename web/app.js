@@ -2,6 +2,7 @@
 // build step, no requests beyond this server's /api. Everything the server sends is put in the page as text
 // (never as HTML): uploaded file names are untrusted.
 // This module routes between the views and starts the page.
+import { followApiLinksWithToken } from './js/api.js';
 import { showCompare } from './js/compare.js';
 import { JOBS_PER_PAGE } from './js/constants.js';
 import { $, clearFieldError, h } from './js/dom.js';
@@ -45,6 +46,7 @@ function route() {
 }
 
 async function start() {
+  followApiLinksWithToken();
   const form = $('#job-form');
   form.addEventListener('submit', submitJob);
   form.addEventListener('input', (ev) => {

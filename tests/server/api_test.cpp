@@ -251,9 +251,19 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     ASSERT_TRUE(head);
     EXPECT_EQ(head->status, 206);
     EXPECT_EQ(head->body, "id,");
+    // Past the end: a problem, with the file's length (cpp-httplib gave an empty text/csv body).
     auto past = client_->Get("/api/jobs/" + id + "/stats.csv", {{"Range", "bytes=99999999-"}});
-    ASSERT_TRUE(past);
-    EXPECT_EQ(past->status, 416);
+    expectProblem(past, 416, "Range");
+    EXPECT_EQ(past->get_header_value("Content-Range"), "bytes */" + std::to_string(csv->body.size()));
+    // Only result files are served in ranges: a problem or a JSON document comes whole (it was cut to the
+    // range).
+    auto unknown =
+        client_->Get("/api/jobs/0123456789abcdef0123456789abcdef/stats.csv", {{"Range", "bytes=0-9"}});
+    expectProblem(unknown, 404);
+    auto list = client_->Get("/api/jobs", {{"Range", "bytes=0-9"}});
+    ASSERT_TRUE(list);
+    EXPECT_EQ(list->status, 200);
+    EXPECT_FALSE(json::parse(list->body, nullptr, false).is_discarded()) << list->body;
     for (const char* png : {"render.png", "heatmap.png", "angular.png"}) {
         auto p = client_->Get("/api/jobs/" + id + "/" + png);
         ASSERT_TRUE(p && p->status == 200) << png;
@@ -659,6 +669,33 @@ TEST_F(FullDiskTest, BelowMinFreeNewWorkIsRefusedAndQueuedJobsFailWhileReadsGoOn
     EXPECT_EQ(client_->Delete("/api/jobs/" + done)->status, 204);
 }
 
+// Issue 31, item 10: with --min-free 0 a disk without a free byte said "ok"; it takes nothing, so /healthz
+// says why with 503. Below --min-free with room left, it stays 200 and degraded.
+TEST_F(FullDiskTest, HealthIs503WhenTheDiskTakesNoMoreWritesWhateverMinFree) {
+    startKeepingNothingFree();
+    auto ok = client_->Get("/healthz");
+    ASSERT_TRUE(ok);
+    EXPECT_EQ(ok->status, 200);
+    simulatedFullDisk().files = true;
+    auto full = client_->Get("/healthz");
+    ASSERT_TRUE(full);
+    EXPECT_EQ(full->status, 503);
+    const json h = json::parse(full->body);
+    EXPECT_EQ(h["status"], "degraded");
+    EXPECT_EQ(h["storage"]["state"], "full") << h;
+    EXPECT_NE(h["storage"]["detail"].get<std::string>().find("no free byte"), std::string::npos) << h;
+    EXPECT_EQ(h["storage"]["detail"].get<std::string>().find(dir_.string()), std::string::npos) << h;
+    simulatedFullDisk().files = false;
+    stopService();
+    ServiceLimits limits;
+    limits.minFreeBytes = uint64_t(1) << 62;  // more than any disk: short of --min-free, with room
+    start(limits);
+    auto shortOf = client_->Get("/healthz");
+    ASSERT_TRUE(shortOf);
+    EXPECT_EQ(shortOf->status, 200);
+    EXPECT_EQ(json::parse(shortOf->body)["storage"]["state"], "full");
+}
+
 TEST_F(FullDiskTest, LeftoversAreRemovedAtStart) {
     const std::string id = submitOk(smallJob());
     ASSERT_EQ(waitFinished(id)["state"], "succeeded");
@@ -729,6 +766,56 @@ TEST_F(ServiceTest, MeshesListAndUpload) {
             "POST /api/meshes HTTP/1.1\r\nHost: localhost\r\nContent-Length: 17000000\r\n\r\nv 0 0 0\n"),
         413);
     expectProblem(submit({{"mesh", "0123456789abcdef0123456789abcdef"}, {"photons", 10}}), 422, "mesh");
+}
+
+// Issue 31, item 10: uploads can be deleted, except under a queued or running job, and take a bounded space.
+TEST_F(ServiceTest, MeshesAreDeletedUnlessAJobUsesThem) {
+    auto up = client_->Post("/api/meshes?name=cube.obj", kCubeObj, "application/octet-stream");
+    ASSERT_TRUE(up && up->status == 201);
+    const std::string mesh = json::parse(up->body)["mesh"];
+    json job = longJob();
+    job["mesh"] = mesh;
+    const std::string running = submitOk(job);
+    const std::string queued = submitOk(job);
+    waitState(running, "running");
+    expectProblem(client_->Delete("/api/meshes/" + mesh), 409);
+    client_->Post("/api/jobs/" + running + "/cancel");
+    EXPECT_EQ(waitFinished(running)["state"], "canceled");
+    expectProblem(client_->Delete("/api/meshes/" + mesh), 409);  // the queued one still names it
+    client_->Post("/api/jobs/" + queued + "/cancel");
+    EXPECT_EQ(waitFinished(queued)["state"], "canceled");
+    auto del = client_->Delete("/api/meshes/" + mesh);
+    ASSERT_TRUE(del);
+    EXPECT_EQ(del->status, 204) << del->body;
+    EXPECT_EQ(json::parse(client_->Get("/api/meshes")->body)["uploaded"].size(), 0u);
+    EXPECT_TRUE(fs::is_empty(dir_ / "data" / "meshes"));
+    expectProblem(client_->Delete("/api/meshes/" + mesh), 404);
+    expectProblem(submit({{"mesh", mesh}, {"photons", 10}}), 422, "mesh");  // its stone is forgotten too
+    EXPECT_EQ(status(running)["state"], "canceled");                        // the jobs that used it stay
+}
+
+TEST_F(ServiceTest, UploadedMeshesTakeAtMostMaxMeshStore) {
+    stopService();
+    ServiceLimits limits;
+    const size_t cube = std::string(kCubeObj).size();
+    limits.maxMeshStoreBytes = 2 * cube + cube / 2;
+    start(limits);
+    const auto upload = [&] {
+        return client_->Post("/api/meshes?name=cube.obj", kCubeObj, "application/octet-stream");
+    };
+    auto first = upload();
+    ASSERT_TRUE(first && first->status == 201);
+    ASSERT_EQ(upload()->status, 201);
+    auto third = upload();
+    expectProblem(third, 507, "file");
+    EXPECT_NE(json::parse(third->body)["detail"].get<std::string>().find(
+                  "--max-mesh-store of " + std::to_string(limits.maxMeshStoreBytes) + " bytes"),
+              std::string::npos)
+        << third->body;
+    EXPECT_EQ(json::parse(client_->Get("/api/meshes")->body)["uploaded"].size(), 2u);
+    ASSERT_EQ(client_->Delete("/api/meshes/" + json::parse(first->body)["mesh"].get<std::string>())->status,
+              204);
+    EXPECT_EQ(upload()->status, 201);  // deleting made room
 }
 
 // A job that gives no name is named by its design and the proportions it changes, in its status and its
