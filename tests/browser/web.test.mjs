@@ -866,6 +866,16 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(await page.inputValue('#s-name-0'), 'tier:P1');
     const quantities = await page.$$eval('#sweep-quantities option', (os) => os.map((o) => o.value));
     for (const q of ['tier:P1', 'tier:C2', 'tilt']) assert.ok(quantities.includes(q), quantities.join(' '));
+    // A sweep of its main pavilion tier runs from the page, and its chart fills in.
+    await fillSweepAxis(0, ['tier:P1', '40', '42', '1']);
+    await page.setChecked('#s-second', false);
+    await page.fill('#s-photons', '3000');
+    await page.click('#sweep-submit');
+    await page.waitForFunction(() => location.hash.startsWith('#/sweeps/'));
+    await page.waitForFunction(() => document.querySelectorAll('#sweep-chart circle.sweep-point').length === 3, null,
+      { timeout: JOB_TIMEOUT_MS, polling: 100 });
+    assert.match(await page.textContent('#sweep-view-title'), /^brilliant\.asc, sweep of tier:P1/);
+    assert.ok((await page.textContent('#sweep-chart svg')).includes('tier:P1 (deg)'));
   });
 
   test('the home page fits a phone', async () => {
