@@ -89,7 +89,9 @@ void drawAxes(Image& image, const Frame& f, const PlotAxis& x, const PlotAxis& y
     drawTicks(image, f, y, false);
     drawText(image, (f.left + f.right) / 2, f.bottom + 36, x.label, 2.2, kInk, Align::Center);
     drawText(image, f.left - 60, f.top - 28, y.label, 2.2, kInk);
-    drawText(image, image.width() / 2.0, 12, title, 2.2, kInk, Align::Center);
+    // A long title (the held parameters and the highest point) is drawn smaller rather than cut at the edges.
+    const double scale = std::min(2.2, (image.width() - 20) / textWidth(title, 1.0));
+    drawText(image, image.width() / 2.0, 12, title, scale, kInk, Align::Center);
 }
 
 // A label on a white patch, readable on any background.

@@ -14,6 +14,11 @@ namespace facetlight {
 // The traced point with the highest `figure`; none when no point could be traced.
 std::optional<size_t> highestPoint(const SweepResult& result, const std::string& figure);
 
+// The curves' title: the design with the parameters held at other than their defaults, the light, the
+// photons and the highest point of the first figure ("round_brilliant with crown 34.5; ...; highest
+// brightness 0.4110 +- 0.0021 at pavilion 41.75").
+std::string sweepCurvesTitle(const SweepResult& result, const std::vector<std::string>& figures);
+
 // Every figure in `figures` against the one axis with more than one value, with +-1 sigma bands.
 Image sweepCurves(const SweepResult& result, const std::vector<std::string>& figures);
 // `figure` as a filled contour map over the two axes.

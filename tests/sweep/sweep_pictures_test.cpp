@@ -81,6 +81,24 @@ TEST(SweepPictures, CurvesCarryEachFigureAndAxes) {
 }
 
 // A fire figure is drawn like any other: a map, and curves with their bands beside a share.
+// Issue 30: curves.png names the parameters held and the highest point.
+TEST(SweepPictures, CurvesTitleNamesTheHeldParametersAndTheHighestPoint) {
+    SweepPlan plan;
+    plan.shape = "round_brilliant";
+    plan.axes.push_back(parseSweepAxis("pavilion=40,42"));
+    plan.fixed = {{"crown", 34.5}};
+    plan.trace.photons = 2000;
+    plan.trace.threads = 2;
+    plan.trace.viewer.enabled = false;
+    RunControl control;
+    const SweepResult result = runSweep(plan, control);
+    const std::string title = sweepCurvesTitle(result, {"weighted_return"});
+    EXPECT_EQ(title.rfind("round_brilliant with crown 34.5; ", 0), 0u) << title;
+    const size_t best = *highestPoint(result, "weighted_return");
+    EXPECT_NE(title.find("; highest weighted return 0."), std::string::npos) << title;
+    EXPECT_NE(title.find(" at pavilion " + std::string(best == 0 ? "40" : "42")), std::string::npos) << title;
+}
+
 TEST(SweepPictures, FireFiguresAreDrawnWhenFireIsTraced) {
     const auto fireSweep = [](std::vector<std::string> axes) {
         SweepPlan plan;
