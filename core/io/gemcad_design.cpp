@@ -294,6 +294,14 @@ std::vector<NamedPlane> gemCadPlanes(const GemCadDesign& design) {
     return planes;
 }
 
+std::string facetNameStem(const std::string& name) {
+    const size_t cut = name.find_last_of('_');
+    if (cut == std::string::npos || cut + 1 == name.size()) return name;
+    for (size_t i = cut + 1; i < name.size(); ++i)
+        if (!std::isdigit(uint8_t(name[i]))) return name;
+    return name.substr(0, cut);
+}
+
 PolygonMesh buildGemCadMesh(const GemCadDesign& design, const MeshLimits& limits) {
     const std::vector<NamedPlane> planes = gemCadPlanes(design);
     if (planes.size() > limits.maxPolygons)

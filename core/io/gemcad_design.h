@@ -23,6 +23,8 @@ Vec3 gemCadNormal(double angleDeg, double azimuthDeg);
 // The facet planes, named per tier and numbered across the file (P1_1 ... P1_8; a lone facet keeps its
 // bare name, T).
 std::vector<NamedPlane> gemCadPlanes(const GemCadDesign& design);
+// The tier name a facet name was numbered from ("P1_3": "P1"; "T": "T"): the stem before a trailing "_<n>".
+std::string facetNameStem(const std::string& name);
 
 // Cuts the stone the design describes. Vertices closer than the file's printed precision allows are one
 // meet. Facets that do not reach the surface are warnings; an open or empty solid is an Error.

@@ -23,14 +23,6 @@ std::string trimmed(double v, int decimals) {
     return s == "-0" ? "0" : s;
 }
 
-std::string nameStem(const std::string& name) {
-    const size_t cut = name.find_last_of('_');
-    if (cut == std::string::npos || cut + 1 == name.size()) return name;
-    for (size_t i = cut + 1; i < name.size(); ++i)
-        if (!std::isdigit(uint8_t(name[i]))) return name;
-    return name.substr(0, cut);
-}
-
 }  // namespace
 
 std::string writeGemCad(const GemCadDesign& design) {
@@ -72,13 +64,13 @@ GemCadDesign gemCadDesignOf(const Stone& stone, int gear, std::vector<size_t>* t
         if (azimuth < 0) azimuth += 360;
         // A flat facet's azimuth means nothing: index 0.
         const double index = slope < 1e-9 ? 0.0 : std::fmod(azimuth * gear / 360.0, double(gear));
-        const auto key = std::make_tuple(nameStem(f.name), std::llround(angle * 1e6), std::llround(f.offset * 1e8));
+        const auto key = std::make_tuple(facetNameStem(f.name), std::llround(angle * 1e6), std::llround(f.offset * 1e8));
         auto [it, added] = tierOf.emplace(key, design.tiers.size());
         if (added) {
             GemCadTier tier;
             tier.angleDeg = slope < 1e-9 && f.normal.z < 0 ? -0.0 : angle;  // a culet
             tier.distance = f.offset;
-            tier.name = nameStem(f.name);
+            tier.name = facetNameStem(f.name);
             design.tiers.push_back(std::move(tier));
         }
         if (tierOfFacet) tierOfFacet->push_back(it->second);

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <map>
 
+#include "io/gemcad_design.h"
 #include "util/number_text.h"
 
 namespace facetlight {
@@ -16,15 +16,6 @@ constexpr double kHalf = 190;  // pixels from a view's centre to the stone's wid
 constexpr double kViewTop = 90, kViewCentre = kViewTop + 50 + kHalf;  // titles, index marks, then the views
 const Rgb kPaper{1, 1, 1}, kInk{0.1f, 0.1f, 0.12f}, kFaint{0.45f, 0.45f, 0.5f};
 const Rgb kCrownFill{0.86f, 0.92f, 0.98f}, kPavilionFill{0.93f, 0.9f, 0.98f}, kGirdleFill{0.9f, 0.9f, 0.9f};
-
-// The tier a facet belongs to, as the diagram labels it: its name without the running number (P1_3: P1).
-std::string tierLabel(const std::string& name) {
-    const size_t cut = name.find_last_of('_');
-    if (cut == std::string::npos || cut + 1 == name.size()) return name;
-    for (size_t i = cut + 1; i < name.size(); ++i)
-        if (!std::isdigit(uint8_t(name[i]))) return name;
-    return name.substr(0, cut);
-}
 
 struct View {
     std::string title;
@@ -64,7 +55,7 @@ void drawView(Image& image, const Stone& stone, const View& view, double unit) {
             const Point2& b = outline[(i + 1) % outline.size()];
             area += a[0] * b[1] - b[0] * a[1];
         }
-        const std::string label = tierLabel(f->name);
+        const std::string label = facetNameStem(f->name);
         const double scale = 1.4;
         if (std::fabs(area) / 2 < 2.2 * textWidth(label, scale) * textHeight(scale)) continue;
         const Point2 c = at(f->centroid);
