@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "io/gemcad_design.h"
@@ -113,6 +114,12 @@ bool sameSlope(double a, double b) {
     return std::fabs(a - b) < kTolerance;
 }
 
+std::string shortNumber(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
 std::string trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
@@ -129,7 +136,7 @@ class GemCadBinaryParser {
         while (in_.peekFloat64("a facet record or the design's settings") != kEndOfFacets) {
             if (facets.size() >= maxFacets)
                 throw Error("GemCad .gem: the design has more than " + std::to_string(maxFacets) + " facets");
-            facets.push_back(facet(facets.empty() ? 1 : facets.back().tier));
+            facets.push_back(facet(facets.empty() ? 0 : facets.back().tier));
         }
         if (facets.empty()) throw Error("GemCad .gem: the design has no facets");
         GemCadDesign design;
@@ -159,9 +166,9 @@ class GemCadBinaryParser {
         if (!(length > 0)) throw Error(at(start) + "a facet's plane has no direction");
         const double distance = 1 / length;
         if (!(distance <= kMaxMeshCoordinate) || !(distance >= kMinMeshExtent))
-            throw Error(at(start) + "a facet's distance from the centre, " + std::to_string(distance) +
+            throw Error(at(start) + "a facet's distance from the centre, " + shortNumber(distance) +
                         ", is out of range");
-        if (tier < previousTier || tier > previousTier + 1)
+        if (tier < std::max(previousTier, 1) || tier > previousTier + 1)
             throw Error(at(start + 24) + "tier number " + std::to_string(tier) + " after tier " +
                         std::to_string(previousTier) + ": the tiers must be numbered 1, 2, 3 ... in order");
 
@@ -252,9 +259,8 @@ class GemCadBinaryParser {
             if (!sameSlope(f.angleDeg, tier.angleDeg) ||
                 std::fabs(f.distance - tier.distance) > 1e-9 * tier.distance)
                 throw Error("GemCad .gem: tier " + std::to_string(f.tier) +
-                            " has facets at different angles " + "or distances (" +
-                            std::to_string(tier.angleDeg) + " and " + std::to_string(f.angleDeg) +
-                            " degrees)");
+                            " has facets at different angles or distances (" + shortNumber(tier.angleDeg) +
+                            " and " + shortNumber(f.angleDeg) + " degrees)");
             double index = 0;
             if (f.azimuthDeg) {
                 // phi = 360 (i - o) / g, so i = o + g phi / 360, brought onto the gear's teeth 0 .. |g|.

@@ -183,6 +183,7 @@ TEST(GemCadBinary, RefusesHostileFields) {
     } cases[] = {
         {"tier 0", putI32At(good, 24, 0), "tier number 0"},
         {"tier skipped", putI32At(good, 24, 3), "tier number 3"},
+        {"first tier 2", putI32At(good, 24, 2), "tier number 2"},
         {"outline flag", putI32At(good, 24 + 4 + 1 + 2, 7), "expected 0 or 1"},
         {"NaN plane", putF64At(good, 0, std::nan("")), "not a finite number"},
         {"zero plane", putF64At(putF64At(putF64At(good, 0, 0), 8, 0), 16, 0), "no direction"},
