@@ -5,8 +5,14 @@
 
 #include "commands.h"
 #include "cuts/mesh_resolver.h"
+#include "io/cutting_sheet.h"
+#include "pictures/design_diagram.h"
+#include "scene/scene.h"
 #include "stone/stone_json.h"
+#include "stone/stone_size.h"
 #include "terminal_output.h"
+#include "util/error.h"
+#include "util/number_text.h"
 
 namespace facetlight::cli {
 
@@ -15,11 +21,46 @@ namespace {
 struct InfoOptions {
     std::string mesh;
     bool json = false;
+    bool keepFrame = false;
+    double sizeMm = SceneSettings{}.sizeMm;
+    std::string material = SceneSettings{}.material;
+    std::optional<double> density;
+    std::string diagram;
 };
 
-void printText(const Stone& stone) {
+nlohmann::json sizeJson(const StoneSize& s, double sizeMm, const MaterialChoice& material,
+                        std::optional<double> density) {
+    nlohmann::json j = {{"size_mm", sizeMm},     {"length_mm", s.lengthMm},
+                        {"width_mm", s.widthMm}, {"depth_mm", s.depthMm},
+                        {"volume_mm3", s.volumeMm3}, {"block_retention", s.blockRetention},
+                        {"material", material.material.name()}};
+    j["density_g_cm3"] = density ? nlohmann::json(*density) : nlohmann::json();
+    j["carats"] = s.carats ? nlohmann::json(*s.carats) : nlohmann::json();
+    return j;
+}
+
+void printText(const Stone& stone, const std::optional<CuttingSheet>& sheet, const StoneSize& size,
+               double sizeMm, const MaterialChoice& material, std::optional<double> density) {
     std::printf("%s: %zu facets, %zu triangles, %s\n", stone.name.c_str(), stone.facets.size(),
                 stone.triangles.size(), stone.convex ? "convex" : "not convex");
+    if (!stone.frame.fileOrientation)
+        std::printf("re-oriented: %s%s\n",
+                    stone.frame.tableFacet.empty()
+                        ? ""
+                        : ("facet " + stone.frame.tableFacet + " turned " +
+                           formatNumber("%.2f", stone.frame.turnedDeg) + " deg to face up as the table")
+                              .c_str(),
+                    stone.frame.longAxisTurned ? (stone.frame.tableFacet.empty() ? "long axis laid along x"
+                                                                                 : "; long axis laid along x")
+                                               : "");
+    if (sheet) std::printf("\n%s", cuttingSheetText(*sheet).c_str());
+    std::printf("\nat %.2f mm across: %.2f x %.2f x %.2f mm, volume %.1f mm^3", sizeMm, size.lengthMm,
+                size.widthMm, size.depthMm, size.volumeMm3);
+    if (size.carats)
+        std::printf(", %.3f ct (%s, %.2f g/cm^3)", *size.carats, material.material.name().c_str(), *density);
+    else
+        std::printf(" (no weight: %s names no density; give --density)", material.material.name().c_str());
+    std::printf("; keeps %.1f %% of its block\n", 100 * size.blockRetention);
     const Proportions& p = stone.proportions;
     std::printf("\nproportions (length %.4g x width %.4g)\n", p.length, p.width);
     printProportions(p);
@@ -38,16 +79,41 @@ void printText(const Stone& stone) {
 
 void addInfoCommand(CLI::App& app) {
     auto options = std::make_shared<InfoOptions>();
-    CLI::App* cmd = app.add_subcommand("info", "Describe a stone: facets by region, proportions, convexity");
+    CLI::App* cmd = app.add_subcommand(
+        "info", "Describe a stone: its cutting sheet, size and weight, facets by region, proportions");
     cmd->add_option("--mesh", options->mesh, "OBJ, STL or GemCad .asc file, or a shipped shape name")
         ->required();
     cmd->add_flag("--json", options->json, "Print JSON instead of text");
+    cmd->add_flag("--keep-frame", options->keepFrame,
+                  "Keep a mesh's own orientation (GemCad designs always keep theirs)");
+    cmd->add_option("--size-mm", options->sizeMm,
+                    "The girdle diameter (the width of a fancy shape) the dimensions and weight are given at");
+    cmd->add_option("--material", options->material,
+                    "The material whose density gives the weight (auto: the design's own, else diamond)");
+    cmd->add_option("--density", options->density, "Density in g/cm^3, for a material that names none");
+    cmd->add_option("--diagram", options->diagram,
+                    "Also write the faceting diagram (crown, profile, pavilion, tiers) as a PNG to this file");
     cmd->callback([options] {
-        const Stone stone = resolveStone(options->mesh);
-        if (options->json)
-            std::cout << stoneJson(stone).dump(2) << "\n";
-        else
-            printText(stone);
+        StoneOptions stoneOptions;
+        stoneOptions.keepFrame = options->keepFrame;
+        const Stone stone = resolveStone(options->mesh, stoneOptions);
+        SceneSettings scene;
+        scene.material = options->material;
+        const MaterialChoice material = chooseMaterial(scene, stone);
+        if (options->density && !(*options->density > 0 && *options->density < 30))
+            throw Error("--density must be a positive number of g/cm^3 below 30");
+        const std::optional<double> density = options->density ? options->density : material.material.densityGcm3();
+        const StoneSize size = stoneSize(stone, options->sizeMm, density);
+        const std::optional<CuttingSheet> sheet = cuttingSheet(stone);
+        if (!options->diagram.empty()) writeFile(options->diagram, encodePng(designDiagram(stone, sheet, size)));
+        if (options->json) {
+            nlohmann::json j = stoneJson(stone);
+            if (sheet) j["cutting_sheet"] = toJson(*sheet);
+            j["size"] = sizeJson(size, options->sizeMm, material, density);
+            std::cout << j.dump(2) << "\n";
+        } else {
+            printText(stone, sheet, size, options->sizeMm, material, density);
+        }
     });
 }
 

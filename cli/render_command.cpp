@@ -53,7 +53,7 @@ void run(RenderOptions& o) {
     std::error_code ec;
     fs::create_directories(out, ec);
     if (ec || !fs::is_directory(out)) throw Error("cannot create the output folder '" + o.out + "'");
-    const Stone stone = resolveStone(o.trace.mesh);
+    const Stone stone = resolveStone(o.trace.mesh, stoneOptions(o.trace));
 
     RunControl control;
     // Under mpirun the ranks split the photons and the tiles; rank 0 writes (docs/distributed.md).

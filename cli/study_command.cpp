@@ -69,7 +69,7 @@ void runStudyCommand(const StudyOptions& options) {
         });
         result = runSweepJob(spec.mesh, settings, control, comm);
     } else {
-        Stone stone = spec.cut.empty() ? resolveStone(spec.mesh) : cutStone(spec);
+        Stone stone = spec.cut.empty() ? resolveStone(spec.mesh) : cutStone(spec, spec.mesh);
         if (!spec.name.empty()) stone.name = spec.name;
         ProgressJson progress(options.progressJson && comm.isRoot(), control,
                               [&](RunPhase phase) { return studyUnits(settings, phase); });

@@ -1,5 +1,6 @@
-// facetlight sweep: trace a shape of the cut library over a grid of one or two of its parameters (or trace
-// settings) and write sweep.json, sweep.csv and the pictures into a folder.
+// facetlight sweep: trace a shape of the cut library, a GemCad design or a mesh over a grid of one or two of
+// its parameters (a design's tier angles) or trace settings, and write sweep.json, sweep.csv and the
+// pictures into a folder.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -57,7 +58,8 @@ void runSweepCommand(const SweepOptions& o) {
     request.constraints = o.constraints;
     request.refineRounds = o.refineRounds;
     checkSweepFigures(request, trace, {"--figure", "--maximize", "--constraint", false});
-    const SweepPlan plan = planSweep(o.shape, request, trace);
+    // A library shape by name, else a design or mesh file (its tiers, or trace settings only, are the axes).
+    const SweepPlan plan = planSweepOf(o.shape, request, trace);
     const fs::path out(o.out);
     std::error_code ec;
     fs::create_directories(out, ec);
@@ -82,6 +84,7 @@ void runSweepCommand(const SweepOptions& o) {
     if (result.best.is_null()) return;
 
     writeTextFile((out / "best.obj").string(), result.bestObj);
+    if (!result.bestAsc.empty()) writeTextFile((out / "best.asc").string(), result.bestAsc);
     writeFile(out / "best.json", result.best.dump(2) + "\n");
     const nlohmann::json& best = result.best["best"];
     std::printf("best %s %.4f +- %.4f (95%%: %.4f to %.4f) at",
@@ -91,9 +94,10 @@ void runSweepCommand(const SweepOptions& o) {
     for (const auto& [name, value] : best["values"].items())
         std::printf(" %s %g", name.c_str(), value.get<double>());
     const size_t ties = result.best["ties"].size();
-    std::printf(" (%llu photons); %zu design%s cannot be told apart from it; wrote %s and %s\n",
+    std::printf(" (%llu photons); %zu design%s cannot be told apart from it; wrote %s and %s%s%s\n",
                 (unsigned long long)best["photons"].get<uint64_t>(), ties, ties == 1 ? "" : "s",
-                (out / "best.json").c_str(), (out / "best.obj").c_str());
+                (out / "best.json").c_str(), (out / "best.obj").c_str(), result.bestAsc.empty() ? "" : " and ",
+                result.bestAsc.empty() ? "" : (out / "best.asc").c_str());
 }
 
 }  // namespace
@@ -103,12 +107,15 @@ void addSweepCommand(CLI::App& app) {
     o->trace.defaults.photons = 200000;
     CLI::App* cmd = app.add_subcommand(
         "sweep",
-        "Trace a shape of the cut library over a grid of its proportions; write sweep.json and sweep.csv");
-    cmd->add_option("shape", o->shape, "Shape name (facetlight cut --list shows them)")->required();
+        "Trace a shape of the cut library, a GemCad design or a mesh over a grid of its proportions (a "
+        "design's tier angles, tier:NAME) or trace settings; write sweep.json and sweep.csv");
+    cmd->add_option("shape", o->shape,
+                    "Shape name (facetlight cut --list shows them), or a .asc design or mesh file")
+        ->required();
     cmd->add_option(
            "--vary", o->vary,
-           "NAME=LO:HI:STEP or NAME=V1,V2,...: a parameter of the shape, or tilt, head_shadow, material "
-           "or light; once or twice")
+           "NAME=LO:HI:STEP or NAME=V1,V2,...: a parameter of the shape (a design's tier:NAME slope), or "
+           "tilt, head_shadow, material, light or n; once or twice")
         ->take_all();
     cmd->add_option("--set", o->set,
                     "NAME=VALUE: a parameter of the shape held at a value other than its default")
@@ -124,7 +131,7 @@ void addSweepCommand(CLI::App& app) {
                         "Search the varied parameters for the design with the highest FIGURE (default " +
                             std::string(kDefaultSweepFigure) + ", with --no-view " +
                             kDefaultSweepFigureWithoutViewer +
-                            "): the sweep, then finer grids with more photons; writes best.json and best.obj")
+                            "): the sweep, then finer grids with more photons; writes best.json, best.obj and best.asc")
             ->expected(0, 1);
     cmd->add_option(
            "--constraint", o->constraints,

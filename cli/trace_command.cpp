@@ -29,7 +29,7 @@ struct TraceCommandOptions {
 
 void run(const TraceCommandOptions& o) {
     const TraceSettings settings = toTraceSettings(o.trace);
-    const Stone stone = resolveStone(o.trace.mesh);
+    const Stone stone = resolveStone(o.trace.mesh, stoneOptions(o.trace));
     // Under mpirun the ranks split the blocks and rank 0 alone reports (docs/distributed.md).
     Communicator& comm = processCommunicator();
     const Scene scene(stone, settings);

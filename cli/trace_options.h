@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "settings_flags.h"
+#include "stone/stone.h"
 #include "trace/trace_settings.h"
 
 namespace facetlight::cli {
@@ -22,14 +23,25 @@ inline TraceSettings defaultTraceSettings() {
 
 struct TraceOptions {
     std::string mesh;
+    bool keepFrame = false;  // --keep-frame: a mesh keeps its own orientation (docs/gemcad.md)
     SettingsFlags flags;
     TraceSettings defaults = defaultTraceSettings();  // what the flags not given take (a sweep: fewer photons)
 };
 
+// How --mesh is read into a stone.
+inline StoneOptions stoneOptions(const TraceOptions& o) {
+    StoneOptions options;
+    options.keepFrame = o.keepFrame;
+    return options;
+}
+
 // `withMesh` false: the subcommand makes its own stones (a sweep) and takes no --mesh.
 inline void addTraceOptions(CLI::App* cmd, TraceOptions& o, bool withMesh = true) {
-    if (withMesh)
+    if (withMesh) {
         cmd->add_option("--mesh", o.mesh, "OBJ, STL or GemCad .asc file, or a shipped shape name")->required();
+        cmd->add_flag("--keep-frame", o.keepFrame,
+                      "Keep a mesh's own orientation (GemCad designs always keep theirs; docs/gemcad.md)");
+    }
     o.flags.add(cmd, traceSettingsSchema().fields(), toJson(o.defaults));
 }
 

@@ -6,6 +6,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <utility>
 
 #include "http_server.h"
 #include "job_status.h"
@@ -14,6 +15,7 @@
 #include "request_body.h"
 #include "stats/facet_stats.h"
 #include "study/result_files.h"
+#include "sweep/sweep_request.h"
 #include "util/error.h"
 #include "util/json_text.h"
 #include "util/simd_target.h"
@@ -25,6 +27,13 @@ using httplib::Request;
 using httplib::Response;
 using nlohmann::json;
 
+// cpp-httplib 0.11 cuts whatever body is answered to the request's Range: a problem's, a job list's. Only
+// result files are served in ranges, so the guard clears them elsewhere and getResult() on its problems. The
+// Request is httplib's own, not const: its handlers only see it so.
+httplib::Ranges& withRanges(const Request& req) {
+    return const_cast<Request&>(req).ranges;
+}
+
 void logRequest(const Request& req, const Response& res) {
     const std::string line = nowIso8601() + " " + req.remote_addr + " \"" + escapeForLog(req.method, 16) +
                              " " + escapeForLog(req.path) + "\" " + std::to_string(res.status) + " " +
@@ -35,13 +44,14 @@ void logRequest(const Request& req, const Response& res) {
 }  // namespace
 
 Api::Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
-         std::string readOnly, const std::vector<std::string>& allowedHosts)
+         std::string readOnly, const std::vector<std::string>& allowedHosts, std::string token)
     : results_(results),
       queue_(queue),
       catalog_(catalog),
       limits_(limits),
       readOnly_(std::move(readOnly)),
-      allowedHosts_(allowedHosts.begin(), allowedHosts.end()) {}
+      allowedHosts_(allowedHosts.begin(), allowedHosts.end()),
+      token_(std::move(token)) {}
 
 std::vector<Route> Api::routes() {
     std::vector<Route> routes = {
@@ -59,6 +69,7 @@ std::vector<Route> Api::routes() {
         routes.push_back({"GET", "/api/jobs/{id}/" + std::string(f.route)});
     routes.push_back({"GET", "/api/meshes"});
     routes.push_back({"POST", "/api/meshes"});
+    routes.push_back({"DELETE", "/api/meshes/{id}"});
     return routes;
 }
 
@@ -83,19 +94,29 @@ bool Api::refuseWhenReadOnly(Response& res) const {
     return true;
 }
 
-// For /healthz: whether the store takes new work, and why not.
-json Api::storageJson() const {
+// For /healthz: whether the store takes new work, and why not. A disk without one free byte, or one that
+// refuses a probe's byte, is full whatever --min-free says (with --min-free 0 it was "ok"): then, and while
+// the store refuses writes, nothing the service does can be kept, and /healthz answers 503.
+json Api::storageJson(bool& writable) const {
     const uint64_t free = results_.freeBytes();
     std::string state = "ok", detail;
+    writable = true;
     if (!readOnly_.empty()) {
         state = "read-only";
         detail = "the store is read-only (" + readOnly_ + "): no jobs run or are accepted";
-    } else if (const std::string shortage = results_.spaceShortage(limits_.minFreeBytes); !shortage.empty()) {
-        state = "full";
-        detail = shortage + ": new jobs and uploads get 507, queued jobs fail";
     } else if (const size_t unsaved = queue_.unsavedCount()) {
         state = "failing";
         detail = std::to_string(unsaved) + " job state(s) not yet recorded: the store refused writes";
+        writable = false;
+    } else if (const std::string refusal =
+                   free == 0 ? "the server's storage has no free byte" : results_.writeRefusal();
+               !refusal.empty()) {
+        state = "full";
+        detail = refusal + ": nothing can be stored; new jobs and uploads get 507, queued jobs fail";
+        writable = false;
+    } else if (const std::string shortage = results_.spaceShortage(limits_.minFreeBytes); !shortage.empty()) {
+        state = "full";
+        detail = shortage + ": new jobs and uploads get 507, queued jobs fail";
     }
     json doc = {{"state", state}, {"free_bytes", free}, {"min_free_bytes", limits_.minFreeBytes}};
     if (!detail.empty()) doc["detail"] = detail;
@@ -125,12 +146,16 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     // A sweep's shape, and a design's (cut), were checked with them; the stone a job traces is built here, so
     // that what depends on it (a point light outside it) is refused now, not when the job runs.
     std::shared_ptr<const Stone> stone;
+    std::shared_lock meshInUse(meshUse_);
     try {
+        // A sweep of a design or mesh file: its tiers and the request are checked once the file is found.
+        if (spec.settings.sweep && !isLibraryShape(spec.mesh))
+            planSweepOf(catalog_.shapeSource(spec.mesh), *spec.settings.sweep, spec.settings.trace);
         if (!spec.settings.sweep)
             stone = spec.cut.empty() ? catalog_.resolve(spec.mesh)
-                                     : std::make_shared<const Stone>(cutStone(spec));
+                                     : std::make_shared<const Stone>(cutStone(spec, catalog_.shapeSource(spec.mesh)));
     } catch (const Error& e) {
-        return problem(res, 422, e.what(), "mesh");
+        return problem(res, 422, e.what(), e.field().empty() ? "mesh" : e.field());
     }
     try {
         if (stone) LightModel(spec.settings.trace.light, *stone);
@@ -204,9 +229,26 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
         sendJson(res, 201, doc);
     } catch (const StorageError& e) {
         storageProblem(res, e, results_.freeBytes());
+    } catch (const MeshStoreFull& e) {
+        problem(res, 507, e.what(), "file");
     } catch (const Error& e) {
         problem(res, 422, std::string("the mesh was refused: ") + e.what(), "file");
     }
+}
+
+void Api::deleteMesh(const Request& req, Response& res) {
+    const std::string id = req.matches[1];
+    std::unique_lock meshInUse(meshUse_);
+    if (!catalog_.isUploaded(id)) return problem(res, 404, "no uploaded mesh with this id");
+    if (queue_.usesMesh(id))
+        return problem(res, 409, "a queued or running job uses this mesh: cancel it, or wait until it ends");
+    if (refuseWhenReadOnly(res)) return;
+    try {
+        if (!catalog_.remove(id)) return problem(res, 404, "no uploaded mesh with this id");
+    } catch (const StorageError& e) {
+        return storageProblem(res, e, results_.freeBytes());
+    }
+    res.status = 204;
 }
 
 void Api::listJobs(const Request& req, Response& res) {
@@ -267,6 +309,7 @@ void Api::deleteJob(const Request& req, Response& res) {
 
 void Api::getResult(const Request& req, Response& res, const std::string& file,
                     const std::string& contentType) {
+    httplib::Ranges ranges = std::exchange(withRanges(req), {});  // none on a problem
     const std::string id = req.matches[1];
     const auto job = queue_.job(id);
     if (!job) return problem(res, 404, "no job with this id");
@@ -282,7 +325,20 @@ void Api::getResult(const Request& req, Response& res, const std::string& file,
         addShareStandardErrors(stats);
         *bytes = stats.dump(2);
     }
-    // The status is left to cpp-httplib: 200, or 206 and 416 for a Range request (server/openapi.json).
+    // One range is given back to cpp-httplib, which answers 206 with it; one past the end is 416 here (0.11
+    // answered an empty 416 under the file's type and a wrong Content-Range); several get the whole file, as
+    // RFC 9110 allows.
+    if (ranges.size() == 1) {
+        const auto [first, last] = ranges[0];
+        if (first >= 0 ? size_t(first) >= bytes->size() : last <= 0 || bytes->empty()) {
+            res.set_header("Content-Range", "bytes */" + std::to_string(bytes->size()));
+            return problem(
+                res, 416,
+                "the range lies outside the file, which has " + std::to_string(bytes->size()) + " bytes",
+                "Range");
+        }
+        withRanges(req) = std::move(ranges);
+    }
     res.set_content(std::move(*bytes), contentType.c_str());
 }
 
@@ -298,7 +354,7 @@ void Api::getSweepPoints(const Request& req, Response& res) {
     if (!study.settings.sweep) return problem(res, 404, "this job is not a sweep");
     SweepPlan spec;
     try {
-        spec = planSweep(study.mesh, *study.settings.sweep, study.settings.trace);
+        spec = planSweepOf(catalog_.shapeSource(study.mesh), *study.settings.sweep, study.settings.trace);
     } catch (const Error& e) {
         return problem(res, 500, unread + e.what());
     }
@@ -333,8 +389,9 @@ void Api::install(httplib::Server& server, bool accessLog) {
     std::map<std::string, Plain> plain = {
         {"GET /healthz",
          [this](const Request&, Response& res) {
-             json storage = storageJson();
-             sendJson(res, 200,
+             bool writable = true;
+             json storage = storageJson(writable);
+             sendJson(res, writable ? 200 : 503,
                       {{"status", storage["state"] == "ok" ? "ok" : "degraded"},
                        {"queued", queue_.queuedCount()},
                        {"cores", queue_.cores()},
@@ -348,6 +405,7 @@ void Api::install(httplib::Server& server, bool accessLog) {
         {"GET /api/jobs", [this](const Request& req, Response& res) { listJobs(req, res); }},
         {"GET /api/jobs/{id}", [this](const Request& req, Response& res) { getJob(req, res); }},
         {"DELETE /api/jobs/{id}", [this](const Request& req, Response& res) { deleteJob(req, res); }},
+        {"DELETE /api/meshes/{id}", [this](const Request& req, Response& res) { deleteMesh(req, res); }},
         {"GET /api/jobs/{id}/points",
          [this](const Request& req, Response& res) { getSweepPoints(req, res); }},
         {"GET /api/meshes", [this](const Request&, Response& res) { sendJson(res, 200, catalog_.list()); }},
@@ -404,8 +462,14 @@ void Api::install(httplib::Server& server, bool accessLog) {
                        [](unsigned char c) { return std::tolower(c); });
         rules.allowedHosts.insert(std::move(host));
     }
+    rules.token = token_;
     server.set_payload_max_length(std::max(limits.maxBodyBytes, limits.maxUploadBytes));
-    server.set_pre_routing_handler([rules = std::move(rules)](const Request& req, Response& res) {
+    std::vector<Route> resultRoutes;
+    for (const ResultFile& f : kResultFiles)
+        resultRoutes.push_back({"GET", "/api/jobs/{id}/" + std::string(f.route)});
+    server.set_pre_routing_handler([rules = std::move(rules), resultRoutes = std::move(resultRoutes)](
+                                       const Request& req, Response& res) {
+        if (methodsAllowed(resultRoutes, req.path).empty()) withRanges(req).clear();
         const auto refusal = checkRequest(req, rules);
         if (!refusal) return httplib::Server::HandlerResponse::Unhandled;
         for (const auto& [name, value] : refusal->headers) res.set_header(name, value);

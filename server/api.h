@@ -4,6 +4,7 @@
 // job_status.h, bodies read with request_body.h. Handlers only read and write the store and the queue; jobs
 // run on the queue's worker.
 #include <set>
+#include <shared_mutex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,9 +26,10 @@ std::string_view openApiDocument();
 class Api {
   public:
     // `readOnly`: why the store cannot be written (empty: it can); then every route that writes answers 503.
-    // `allowedHosts`: names the server is reached by besides the loopback ones (RequestRules::allowedHosts).
+    // `allowedHosts`: names the server is reached by besides the loopback ones (RequestRules::allowedHosts);
+    // `token`: the bearer token /api requests must carry (empty: none, RequestRules::token).
     Api(ResultStore& results, JobQueue& queue, MeshCatalog& catalog, ServiceLimits limits,
-        std::string readOnly, const std::vector<std::string>& allowedHosts);
+        std::string readOnly, const std::vector<std::string>& allowedHosts, std::string token);
     // Registers every route, the guards that run before them, the error handlers and the access log.
     void install(httplib::Server& server, bool accessLog);
     static std::vector<Route> routes();
@@ -35,7 +37,8 @@ class Api {
   private:
     bool refuseWhenStorageLow(httplib::Response& res) const;  // true: answered 507
     bool refuseWhenReadOnly(httplib::Response& res) const;    // true: answered 503
-    nlohmann::json storageJson() const;
+    // `writable`: false when nothing can be written (the disk has no room, or the store refuses writes).
+    nlohmann::json storageJson(bool& writable) const;
     void submitJob(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader);
     void uploadMesh(const httplib::Request& req, httplib::Response& res,
                     const httplib::ContentReader& reader);
@@ -43,6 +46,7 @@ class Api {
     void getJob(const httplib::Request& req, httplib::Response& res);
     void cancelJob(const httplib::Request& req, httplib::Response& res);
     void deleteJob(const httplib::Request& req, httplib::Response& res);
+    void deleteMesh(const httplib::Request& req, httplib::Response& res);
     void getSweepPoints(const httplib::Request& req, httplib::Response& res);
     void getResult(const httplib::Request& req, httplib::Response& res, const std::string& file,
                    const std::string& contentType);
@@ -53,6 +57,10 @@ class Api {
     ServiceLimits limits_;
     std::string readOnly_;
     std::set<std::string> allowedHosts_;
+    std::string token_;
+    // Held shared by a submission from naming its mesh until it is queued, and alone by a mesh's deletion
+    // from its check that no job uses it until it is gone: no job is queued on a mesh being deleted.
+    std::shared_mutex meshUse_;
 };
 
 }  // namespace facetlight::server

@@ -28,21 +28,31 @@ thread_local bool closeAfterResponse = false;
 // Set when the request's head passed its limits (ConnectionLimits::maxHeadBytes, maxHeaderLines).
 thread_local HttpServer::HeadRefusal headRefused;
 
-// Threads added while every one is busy, up to a cap; they stay until shutdown.
+// Threads added while every one is busy, up to a cap; they stay until shutdown. A connection that finds every
+// thread busy at the cap calls `saturated` with the number of connections waiting for a thread: each is
+// served in turn, so as many threads must be freed for the newest to be served.
 class GrowingThreadPool : public httplib::TaskQueue {
   public:
-    GrowingThreadPool(size_t threads, size_t maxThreads) : maxThreads_(std::max(threads, maxThreads)) {
+    GrowingThreadPool(size_t threads, size_t maxThreads, std::function<void(size_t)> saturated)
+        : maxThreads_(std::max(threads, maxThreads)), saturated_(std::move(saturated)) {
         std::lock_guard lock(mutex_);
         for (size_t i = 0; i < threads; ++i) addThread();
     }
 
     void enqueue(std::function<void()> fn) override {
+        size_t waiting = 0;  // connections without a thread, beyond the idle ones, at the cap
         {
             std::lock_guard lock(mutex_);
             jobs_.push_back(std::move(fn));
-            if (idle_ < jobs_.size() && threads_.size() < maxThreads_) addThread();
+            if (idle_ < jobs_.size()) {
+                if (threads_.size() < maxThreads_)
+                    addThread();
+                else
+                    waiting = jobs_.size() - idle_;
+            }
         }
         cond_.notify_one();
+        if (waiting > 0) saturated_(waiting);
     }
 
     void shutdown() override {
@@ -74,6 +84,7 @@ class GrowingThreadPool : public httplib::TaskQueue {
     }
 
     const size_t maxThreads_;
+    const std::function<void(size_t)> saturated_;
     std::mutex mutex_;
     std::condition_variable cond_;
     std::deque<std::function<void()>> jobs_;
@@ -114,9 +125,11 @@ std::string peerAddress(int sock, int& port, bool local) {
 // the deadline, so a request trickling in byte by byte ends when the deadline passes.
 class DeadlineStream : public httplib::Stream {
   public:
-    DeadlineStream(int sock, std::string peer, int peerPort, std::chrono::microseconds readTimeout,
-                   std::chrono::microseconds writeTimeout, const ConnectionLimits& limits)
-        : sock_(sock),
+    DeadlineStream(HttpServer::Connection& connection, int sock, std::string peer, int peerPort,
+                   std::chrono::microseconds readTimeout, std::chrono::microseconds writeTimeout,
+                   const ConnectionLimits& limits)
+        : connection_(connection),
+          sock_(sock),
           peer_(std::move(peer)),
           peerPort_(peerPort),
           readTimeout_(readTimeout),
@@ -206,6 +219,7 @@ class DeadlineStream : public httplib::Stream {
                     return {400, "header line " + std::to_string(headLines_) + " has no colon"};
                 ++headLines_;
                 inHead_ = !lineEmpty_;
+                if (!inHead_) connection_.enter(HttpServer::Phase::Busy);
                 lineEmpty_ = true, sawColon_ = false;
                 continue;
             }
@@ -228,6 +242,7 @@ class DeadlineStream : public httplib::Stream {
         }
     }
 
+    HttpServer::Connection& connection_;
     const int sock_;
     const std::string peer_;
     const int peerPort_;
@@ -259,7 +274,9 @@ void sendTooManyConnections(int sock, size_t limit) {
 
 HttpServer::HttpServer(const ConnectionLimits& limits) : limits_(limits) {
     const size_t threads = std::max<size_t>(1, limits.threads), maxThreads = limits.maxThreads;
-    new_task_queue = [threads, maxThreads] { return new GrowingThreadPool(threads, maxThreads); };
+    new_task_queue = [this, threads, maxThreads] {
+        return new GrowingThreadPool(threads, maxThreads, [this](size_t n) { endLongestWaiting(n); });
+    };
     set_keep_alive_max_count(std::max<size_t>(1, limits.keepAliveRequests));
     // 400, 413 and 414 also come from httplib's own parser, which leaves the rest of the request unread.
     set_post_routing_handler([](const httplib::Request&, httplib::Response& res) {
@@ -303,22 +320,53 @@ void HttpServer::release(const std::string& peer) {
     if (--perPeer_[peer] == 0) perPeer_.erase(peer);
 }
 
+void HttpServer::track(Connection& c) {
+    std::lock_guard lock(connectionsMutex_);
+    connections_.insert(&c);
+}
+
+void HttpServer::forget(Connection& c) {
+    std::lock_guard lock(connectionsMutex_);
+    connections_.erase(&c);
+}
+
+void HttpServer::endLongestWaiting(size_t n) {
+    std::lock_guard lock(connectionsMutex_);
+    std::vector<std::pair<Clock::rep, Connection*>> waiting;
+    for (Connection* c : connections_)
+        if (!c->ended && c->phase.load(std::memory_order_relaxed) != Phase::Busy)
+            waiting.emplace_back(c->since.load(std::memory_order_relaxed), c);
+    n = std::min(n, waiting.size());
+    std::partial_sort(waiting.begin(), waiting.begin() + ptrdiff_t(n), waiting.end());
+    for (size_t i = 0; i < n; ++i) {
+        // Its thread's poll() or recv() sees the end at once and closes the connection. The descriptor is
+        // still open: its thread forgets it before closing it.
+        ::shutdown(waiting[i].second->sock, SHUT_RDWR);
+        waiting[i].second->ended = true;
+    }
+}
+
 // The keep-alive loop of httplib 0.11's process_server_socket, with each request's deadline set when its
 // first byte is there.
 bool HttpServer::process_and_close_socket(socket_t sock) {
     int port = 0;
     const std::string peer = peerAddress(sock, port, false);
     bool ok = false;
+    Connection connection(sock);
     if (admit(peer)) {
+        connection.enter(Phase::Idle);
+        track(connection);
         DeadlineStream stream(
-            sock, peer, port,
+            connection, sock, peer, port,
             std::chrono::seconds(read_timeout_sec_) + std::chrono::microseconds(read_timeout_usec_),
             std::chrono::seconds(write_timeout_sec_) + std::chrono::microseconds(write_timeout_usec_),
             limits_);
         for (size_t left = keep_alive_max_count_; left > 0 && svr_sock_ != INVALID_SOCKET; --left) {
+            connection.enter(Phase::Idle);
             if (!stream.hasBufferedBytes() &&
                 !waitFor(sock, POLLIN, Clock::now() + std::chrono::seconds(keep_alive_timeout_sec_)))
                 break;
+            connection.enter(Phase::Head);
             stream.startRequest(Clock::now() + limits_.requestTimeout);
             bool closed = false;
             closeAfterResponse = false;
@@ -329,6 +377,7 @@ bool HttpServer::process_and_close_socket(socket_t sock) {
     } else {
         sendTooManyConnections(sock, limits_.maxPerPeer);
     }
+    forget(connection);
     ::shutdown(sock, SHUT_RDWR);
     ::close(sock);
     return ok;

@@ -3,12 +3,17 @@
 // must arrive within a deadline (0.11 only times out single reads, so a client sending a header line every
 // 2 s held a thread for ever), each peer may hold only so many connections, threads are added while every
 // one is busy (up to a cap) so that slow clients cannot leave /healthz unanswered, and the listen backlog is
-// raised from 5. It reads sockets with poll(), so descriptors above 1023 are safe too.
+// raised from 5. It reads sockets with poll(), so descriptors above 1023 are safe too. When every thread is
+// busy at the cap, a new connection ends the one that has waited longest for its request's head (idle between
+// requests, or trickling its head in): slow clients from many addresses, each under the per-peer cap, cannot
+// hold every thread (issue 31, item 3).
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <map>
 #include <mutex>
 #include <string>
+#include <unordered_set>
 
 #include <httplib.h>
 
@@ -42,9 +47,33 @@ class HttpServer : public httplib::Server {
     };
     static const HeadRefusal& headRefusal();
 
+    // Where a connection is, for the choice of one to end when every thread is busy: waiting for a request
+    // (Idle) or for the rest of its head (Head) may be ended; reading a body, answering or writing (Busy)
+    // not. Written by the connection's thread without a lock (twice a request), read under connectionsMutex_.
+    enum class Phase { Idle, Head, Busy };
+    struct Connection {
+        explicit Connection(int s) : sock(s) {}
+        void enter(Phase p) {
+            since.store(std::chrono::steady_clock::now().time_since_epoch().count(),
+                        std::memory_order_relaxed);
+            phase.store(p, std::memory_order_relaxed);
+        }
+        const int sock;
+        std::atomic<Phase> phase{Phase::Idle};
+        std::atomic<std::chrono::steady_clock::rep> since{0};  // when it entered its phase
+        bool ended = false;  // shut down to free its thread (under connectionsMutex_)
+    };
+
   private:
     // Replaces httplib's connection loop (same keep-alive rules) with one reading through DeadlineStream.
     bool process_and_close_socket(socket_t sock) override;
+    // Shuts down the `n` connections that have been Idle or in their Head longest, which frees their threads;
+    // fewer when the others are Busy.
+    void endLongestWaiting(size_t n);
+    // A connection is tracked while its thread serves it, and forgotten before its descriptor is closed, so
+    // that no later connection on the same descriptor is shut down for it.
+    void track(Connection& c);
+    void forget(Connection& c);
     // Counts a connection against its peer's cap; false when the peer has too many.
     bool admit(const std::string& peer);
     void release(const std::string& peer);
@@ -53,6 +82,8 @@ class HttpServer : public httplib::Server {
     ConnectionLimits limits_;
     std::mutex mutex_;
     std::map<std::string, size_t> perPeer_;
+    std::mutex connectionsMutex_;
+    std::unordered_set<Connection*> connections_;
 };
 
 }  // namespace facetlight::server

@@ -213,6 +213,16 @@ std::shared_ptr<const RunControl> JobQueue::live(const std::string& id) const {
     return running_;
 }
 
+bool JobQueue::usesMesh(const std::string& mesh) const {
+    std::lock_guard lock(mutex_);
+    for (const auto& [id, job] : held_) {
+        if (isFinished(job->state)) continue;
+        const std::string named = job->spec ? job->spec->mesh : job->request.value("mesh", std::string());
+        if (named == mesh) return true;
+    }
+    return false;
+}
+
 size_t JobQueue::queuedCount() const {
     std::lock_guard lock(mutex_);
     return queued_.size();

@@ -62,6 +62,8 @@ class JobQueue {
     // The running job's progress (read without a lock); none unless `id` is running.
     std::shared_ptr<const RunControl> live(const std::string& id) const;
     size_t queuedCount() const;
+    // Whether a queued or running job names `mesh` (an uploaded mesh may not be deleted under it).
+    bool usesMesh(const std::string& mesh) const;
     int cores() const { return cores_; }
 
   private:

@@ -21,6 +21,8 @@ struct ServiceLimits {
     size_t maxUrlBytes = 2048;
     uint64_t minFreeBytes = 256 << 20;  // new jobs and uploads get 507 when the data disk has less free
     size_t maxListBytes = 4 << 20;  // a page of GET /api/jobs stops at the job that passes this (issue 31)
+    uint64_t maxMeshStoreBytes = uint64_t(1)
+                                 << 30;  // uploaded meshes' files together; beyond, uploads get 507
 };
 
 // Throws Error naming the field, also when it exceeds a limit of this service (with `limits`: new jobs;

@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bearer_token.h"
 #include "service.h"
 #include "util/error.h"
 
@@ -39,6 +40,9 @@ int main(int argc, char** argv) {
     app.add_option("--max-upload", l.maxUploadBytes, "Largest mesh upload in bytes")
         ->capture_default_str()
         ->check(CLI::Range(size_t(1), size_t(1) << 30));
+    app.add_option("--max-mesh-store", l.maxMeshStoreBytes,
+                   "Most bytes the uploaded meshes may take together; an upload beyond gets 507")
+        ->capture_default_str();
     app.add_option("--max-queue", l.maxQueued, "Most jobs waiting in the queue")
         ->capture_default_str()
         ->check(CLI::Range(size_t(1), size_t(100000)));
@@ -71,6 +75,15 @@ int main(int argc, char** argv) {
         "--allowed-host", config.allowedHosts,
         "A name the server is reached by besides localhost, 127.0.0.1 and [::1] (and --host), without "
         "a port; repeatable. Requests for other Host names get 421, changes from other Origins 403");
+    std::string tokenFile;
+    bool noAuth = false;
+    auto* tokenOption = app.add_option(
+        "--token-file", tokenFile,
+        "File whose first line is the token every /api request must carry (Authorization: Bearer TOKEN); "
+        "needed with a --host other than loopback");
+    app.add_flag("--no-auth", noAuth,
+                 "Serve a --host other than loopback without a token: anyone who reaches it may use it")
+        ->excludes(tokenOption);
     app.add_flag("!--no-access-log", config.accessLog, "Do not log each request on stderr");
     std::string launcher;
     facetlight::server::LaunchSettings launch;
@@ -83,6 +96,20 @@ int main(int argc, char** argv) {
                    "With --launcher: folder for the children's job files, shared by every node");
     CLI11_PARSE(app, argc, argv);
     config.http.requestTimeout = std::chrono::milliseconds(int64_t(requestTimeout * 1000));
+    if (!tokenFile.empty()) {
+        try {
+            config.token = facetlight::server::readTokenFile(tokenFile);
+        } catch (const facetlight::Error& e) {
+            std::cerr << "facetlight-server: --token-file: " << e.what() << "\n";
+            return 2;
+        }
+    } else if (!noAuth && !facetlight::server::isLoopbackAddress(host)) {
+        std::cerr
+            << "facetlight-server: --host " << host
+            << " is not a loopback address: give --token-file FILE, whose first line clients then send as "
+               "Authorization: Bearer TOKEN, or --no-auth to let anyone who reaches it in\n";
+        return 2;
+    }
     // The address bound, unless it is every address, is a name the server is reached by.
     if (host != "0.0.0.0" && host != "::")
         config.allowedHosts.push_back(host.find(':') == std::string::npos ? host : "[" + host + "]");

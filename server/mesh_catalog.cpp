@@ -4,6 +4,7 @@
 
 #include "cuts/cut_library.h"
 #include "stone/stone_json.h"
+#include "sweep/sweep_request.h"
 #include "util/error.h"
 #include "util/name_table.h"
 
@@ -133,6 +134,13 @@ ChildMesh MeshCatalog::locate(const std::string& mesh) const {
     return {mesh, mesh};
 }
 
+std::string MeshCatalog::shapeSource(const std::string& mesh) const {
+    if (isLibraryShape(mesh)) return mesh;
+    const ChildMesh child = locate(mesh);
+    if (child.source == mesh) throw Error("mesh: unknown mesh '" + mesh + "' (see GET /api/meshes)");
+    return child.source;
+}
+
 std::string MeshCatalog::designName(const std::string& mesh) const {
     if (isId(mesh)) {
         if (const auto record = store_.mesh(mesh)) return record->name;
@@ -197,6 +205,17 @@ MeshRecord MeshCatalog::upload(std::string_view bytes, std::string_view fileName
     stone->name = record.name;  // as resolve() names a stone read back from the store
     remember(record.id, std::move(stone));
     return record;
+}
+
+bool MeshCatalog::isUploaded(const std::string& id) const {
+    return isId(id) && store_.mesh(id).has_value();
+}
+
+bool MeshCatalog::remove(const std::string& id) {
+    if (!isId(id) || !store_.removeMesh(id)) return false;
+    std::lock_guard lock(mutex_);
+    stones_.remove_if([&](const auto& entry) { return entry.first == id; });
+    return true;
 }
 
 }  // namespace facetlight::server

@@ -30,6 +30,10 @@ class MeshCatalog {
     std::shared_ptr<const Stone> resolve(const std::string& mesh) const;
     // What a child process (a launcher's job) reads the same stone from: a file path or a cut shape name.
     ChildMesh locate(const std::string& mesh) const;
+    // What a sweep or a cut of `mesh` builds from (planSweepOf, cutStone): a shape of the cut library by name,
+    // with its parameters, else the file of a shipped or uploaded mesh or design. Throws Error for an unknown
+    // mesh.
+    std::string shapeSource(const std::string& mesh) const;
     // What people call the design `mesh` names: an upload's file name, else the shape's ("round brilliant").
     std::string designName(const std::string& mesh) const;
     // {"shipped": [...], "uploaded": [...]}, each entry a stone summary with its `mesh` name.
@@ -37,6 +41,9 @@ class MeshCatalog {
     // Parses and validates an upload (format from `format`, else the file name, else the content) and
     // stores it. Throws Error naming the problem.
     MeshRecord upload(std::string_view bytes, std::string_view fileName, std::optional<MeshFormat> format);
+    // Forgets an uploaded mesh: its record, its file and its built stone. False when there is none.
+    bool remove(const std::string& id);
+    bool isUploaded(const std::string& id) const;  // an uploaded mesh's id
 
     static bool isShapeName(std::string_view s);  // [a-z0-9][a-z0-9_-]{0,63}
 

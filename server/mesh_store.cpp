@@ -14,7 +14,8 @@ MeshRecord readMesh(const Statement& s) {
 
 }  // namespace
 
-MeshStore::MeshStore(Database& db, fs::path dir) : db_(db), dir_(std::move(dir)) {
+MeshStore::MeshStore(Database& db, fs::path dir, uint64_t maxBytes)
+    : db_(db), dir_(std::move(dir)), maxBytes_(maxBytes) {
     std::error_code ec;
     fs::create_directories(dir_, ec);
     if (ec) throw Error("cannot create mesh directory " + dir_.string() + ": " + ec.message());
@@ -23,6 +24,11 @@ MeshStore::MeshStore(Database& db, fs::path dir) : db_(db), dir_(std::move(dir))
 
 void MeshStore::insertMesh(const MeshRecord& mesh, std::string_view bytes) {
     const fs::path file = meshFile(mesh);
+    std::lock_guard writing(writing_);
+    if (const uint64_t total = totalBytes(); total + bytes.size() > maxBytes_)
+        throw MeshStoreFull("the uploaded meshes take " + std::to_string(total) + " bytes; this one's " +
+                            std::to_string(bytes.size()) + " would pass the server's --max-mesh-store of " +
+                            std::to_string(maxBytes_) + " bytes: delete some (DELETE /api/meshes/{id})");
     writeFileAtomically(file, bytes);
     try {
         std::lock_guard lock(db_.mutex());
@@ -39,6 +45,33 @@ void MeshStore::insertMesh(const MeshRecord& mesh, std::string_view bytes) {
         fs::remove(file, ec);  // no file without its record
         throw;
     }
+}
+
+bool MeshStore::removeMesh(const std::string& id) {
+    std::lock_guard writing(writing_);
+    const std::optional<MeshRecord> record = mesh(id);
+    if (!record) return false;
+    {
+        std::lock_guard lock(db_.mutex());
+        Statement s(db_.handle(), "DELETE FROM meshes WHERE id = ?");
+        s.bind(1, id);
+        s.step();
+    }
+    // The record went first: a file without one is harmless, and a crash here leaves no record without a
+    // file.
+    std::error_code ec;
+    fs::remove(meshFile(*record), ec);
+    return true;
+}
+
+uint64_t MeshStore::totalBytes() const {
+    uint64_t total = 0;
+    for (const MeshRecord& m : meshes()) {
+        std::error_code ec;
+        const uintmax_t size = fs::file_size(meshFile(m), ec);
+        if (!ec) total += size;
+    }
+    return total;
 }
 
 std::optional<MeshRecord> MeshStore::mesh(const std::string& id) const {

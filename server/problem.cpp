@@ -10,6 +10,8 @@ std::string_view reasonPhrase(int status) {
     switch (status) {
         case 400:
             return "Bad Request";
+        case 401:
+            return "Unauthorized";
         case 403:
             return "Forbidden";
         case 404:
@@ -26,6 +28,8 @@ std::string_view reasonPhrase(int status) {
             return "URI Too Long";
         case 415:
             return "Unsupported Media Type";
+        case 416:
+            return "Range Not Satisfiable";
         case 421:
             return "Misdirected Request";
         case 422:

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "bearer_token.h"
+
 namespace facetlight::server {
 
 namespace {
@@ -64,6 +66,10 @@ bool isOurOrigin(std::string_view origin, const std::set<std::string>& hosts) {
     return false;
 }
 
+bool isApiPath(std::string_view path) {
+    return path == "/api" || path.starts_with("/api/");
+}
+
 bool changesState(const std::string& method) {
     return method == "POST" || method == "PUT" || method == "PATCH" || method == "DELETE";
 }
@@ -94,6 +100,17 @@ std::optional<Refusal> checkRequest(const httplib::Request& req, const RequestRu
     if (changesState(req.method) && req.has_header("Origin") &&
         !isOurOrigin(req.get_header_value("Origin"), rules.allowedHosts))
         return refuse(403, "changes are taken only from this server's own pages: the Origin is not ours");
+    if (!rules.token.empty() && isApiPath(req.path) &&
+        !bearerMatches(req.get_header_value("Authorization"), rules.token)) {
+        const bool sent = req.has_header("Authorization");
+        Refusal r =
+            refuse(401, sent ? "the bearer token is not this server's"
+                             : "send the server's token (its --token-file) as Authorization: Bearer TOKEN");
+        r.headers.emplace_back(
+            "WWW-Authenticate",
+            sent ? "Bearer realm=\"facetlight\", error=\"invalid_token\"" : "Bearer realm=\"facetlight\"");
+        return r;
+    }
     if (req.has_header("Transfer-Encoding"))
         return refuse(411, "chunked request bodies are not accepted: send Content-Length");
 

@@ -1,9 +1,9 @@
 #pragma once
 // The checks every request passes before any route runs (issues 18 and 31): URL length, control characters in
-// the path, the Host it was sent to and the Origin of a change (DNS rebinding, cross-site requests),
-// Transfer-Encoding, Content-Length (well formed, one value, within the route's limit, present where a body
-// is expected), the body's media type, and methods a route does not take (405 with Allow). A pure function of
-// the request, so it is unit tested and fuzzed without a server.
+// the path, the Host it was sent to and the Origin of a change (DNS rebinding, cross-site requests), the
+// bearer token of an /api request, Transfer-Encoding, Content-Length (well formed, one value, within the
+// route's limit, present where a body is expected), the body's media type, and methods a route does not take
+// (405 with Allow). A pure function of the request, so it is unit tested and fuzzed without a server.
 #include <functional>
 #include <map>
 #include <optional>
@@ -32,6 +32,9 @@ struct RequestRules {
     // The names the server is reached by, in lower case, without a port: a request for another Host gets 421
     // (a page on another site whose name resolves to us, DNS rebinding); a change from another Origin, 403.
     std::set<std::string> allowedHosts = {"localhost", "127.0.0.1", "[::1]"};
+    // When not empty, every request under /api (result files too) must carry "Authorization: Bearer <token>",
+    // else 401 with WWW-Authenticate; /healthz and the page's static files stay open.
+    std::string token = {};
 };
 
 struct Refusal {

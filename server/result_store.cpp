@@ -101,6 +101,30 @@ std::string ResultStore::spaceShortage(uint64_t minFree) const {
            std::to_string(minFree >> 20) + " MiB kept free)";
 }
 
+std::string ResultStore::writeRefusal() const {
+    std::lock_guard lock(probeMutex_);
+    const auto now = std::chrono::steady_clock::now();
+    if (probedAt_.time_since_epoch().count() != 0 && now - probedAt_ < std::chrono::seconds(1))
+        return probeRefusal_;
+    probedAt_ = now;
+    // A `.tmp` name: a crash between the write and the removal leaves what every start removes.
+    const fs::path probe = dir_ / ".write-probe.tmp";
+    int error = 0;
+    if (simulatedFullDisk().files) {
+        error = ENOSPC;
+    } else if (const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644); fd < 0) {
+        error = errno;
+    } else {
+        if (::write(fd, "x", 1) != 1) error = errno;
+        ::close(fd);
+        ::unlink(probe.c_str());
+    }
+    probeRefusal_ =
+        error ? std::string("the server's storage takes no more writes (") + std::strerror(error) + ")"
+              : std::string();
+    return probeRefusal_;
+}
+
 fs::path ResultStore::jobDir(const std::string& jobId) const {
     if (!isId(jobId)) throw Error("invalid job id");
     return dir_ / jobId;

@@ -3,8 +3,10 @@
 // kResultFiles, study/result_files.h). Each is written to a temporary name, flushed to the disk and
 // renamed over its name, and the folder flushed after the rename: after a crash or a power cut a result is
 // there whole or not at all.
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,10 +32,16 @@ class ResultStore {
     // Why new work must wait for space ("the server's storage is nearly full (3 MiB free, 256 MiB kept
     // free)"); empty while at least `minFree` bytes are free.
     std::string spaceShortage(uint64_t minFree) const;
+    // Why nothing can be written where results go ("no space left on device"): a byte written to a probe file
+    // was refused. Empty when it was taken. Probed at most once a second; the answer is kept in between.
+    std::string writeRefusal() const;
 
   private:
     std::filesystem::path jobDir(const std::string& jobId) const;
     std::filesystem::path dir_;
+    mutable std::mutex probeMutex_;
+    mutable std::chrono::steady_clock::time_point probedAt_{};
+    mutable std::string probeRefusal_;
 };
 
 // Removes the `.tmp` files a crash or a full disk left anywhere under `dir`.

@@ -10,15 +10,16 @@ Service::Service(ServiceConfig config) : config_(std::move(config)), http_(confi
     const int cores = config_.cores > 0 ? config_.cores : int(std::thread::hardware_concurrency());
     database_ = std::make_unique<Database>(config_.dataDir);
     store_ = std::make_unique<JobStore>(*database_);
-    meshes_ = std::make_unique<MeshStore>(*database_, config_.dataDir / "meshes");
+    meshes_ =
+        std::make_unique<MeshStore>(*database_, config_.dataDir / "meshes", config_.limits.maxMeshStoreBytes);
     results_ = std::make_unique<ResultStore>(config_.dataDir / "jobs");
     catalog_ = std::make_unique<MeshCatalog>(*meshes_, config_.meshesDir);
     runner_ = makeStudyRunner(*catalog_, config_.launch);
     queue_ = std::make_unique<JobQueue>(*store_, *results_, *runner_, config_.limits.maxQueued,
                                         config_.limits.minFreeBytes, cores);
     const std::string& readOnly = database_->readOnlyReason();
-    api_ =
-        std::make_unique<Api>(*results_, *queue_, *catalog_, config_.limits, readOnly, config_.allowedHosts);
+    api_ = std::make_unique<Api>(*results_, *queue_, *catalog_, config_.limits, readOnly,
+                                 config_.allowedHosts, config_.token);
     http_.set_tcp_nodelay(true);  // headers and body go out as two writes: no Nagle delay between them
     api_->install(http_, config_.accessLog);
     std::error_code ec;

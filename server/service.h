@@ -33,6 +33,8 @@ struct ServiceConfig {
     // Names the server is reached by besides localhost, 127.0.0.1 and [::1] (--allowed-host): requests for
     // other Host names are refused.
     std::vector<std::string> allowedHosts;
+    // The bearer token every /api request must carry (--token-file); empty: none is asked for.
+    std::string token;
     std::optional<LaunchSettings> launch;  // run jobs through a launcher such as mpirun (docs/distributed.md)
 };
 

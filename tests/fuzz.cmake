@@ -10,7 +10,7 @@ endif()
 # The service's targets compile the service's own code in (instrumented with the target, not taken from the
 # server library).
 set(fuzz_job_SOURCES ${CMAKE_SOURCE_DIR}/server/job_spec.cpp)
-set(fuzz_request_SOURCES ${CMAKE_SOURCE_DIR}/server/request_guard.cpp)
+set(fuzz_request_SOURCES ${CMAKE_SOURCE_DIR}/server/request_guard.cpp ${CMAKE_SOURCE_DIR}/server/bearer_token.cpp)
 if(TARGET facetlight_server)
   pkg_check_modules(FUZZ_HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)  # the server's import is not visible here
   set(fuzz_request_LIBRARIES PkgConfig::FUZZ_HTTPLIB)

@@ -2,6 +2,7 @@
 // build step, no requests beyond this server's /api. Everything the server sends is put in the page as text
 // (never as HTML): uploaded file names are untrusted.
 // This module routes between the views and starts the page.
+import { followApiLinksWithToken } from './js/api.js';
 import { showCompare } from './js/compare.js';
 import { JOBS_PER_PAGE } from './js/constants.js';
 import { $, clearFieldError, h } from './js/dom.js';
@@ -9,7 +10,7 @@ import { loadFormDefaults, submitJob, syncFormControls } from './js/form.js';
 import { jobsView, refreshHealth, refreshJobs } from './js/jobs.js';
 import { describeMesh, loadMeshes, uploadMesh } from './js/meshes.js';
 import { resultView, showResult } from './js/result.js';
-import { initSweepForm, setSweepShapes, showSweep, sweepView } from './js/sweep.js';
+import { initSweepForm, showSweep, sweepView } from './js/sweep.js';
 
 function route() {
   const hash = location.hash.replace(/^#/, '') || '/';
@@ -45,6 +46,7 @@ function route() {
 }
 
 async function start() {
+  followApiLinksWithToken();
   const form = $('#job-form');
   form.addEventListener('submit', submitJob);
   form.addEventListener('input', (ev) => {
@@ -72,8 +74,7 @@ async function start() {
   route();
   const [health] = await Promise.all([refreshHealth(), loadFormDefaults()]);
   if (health && health.cores) $('#f-threads').max = String(health.cores);
-  const shipped = await loadMeshes();
-  if (shipped) setSweepShapes(shipped);
+  await loadMeshes();  // fills the sweep form's shapes too ('meshes-loaded')
   refreshJobs();
 }
 

@@ -123,7 +123,7 @@ class Clipper {
 
 }  // namespace
 
-PolygonMesh intersectHalfSpaces(const std::vector<NamedPlane>& planes) {
+PolygonMesh intersectHalfSpaces(const std::vector<NamedPlane>& planes, double weld) {
     if (planes.size() < 4) throw Error("a closed stone needs at least 4 facet planes, got " + std::to_string(planes.size()));
     double reach = 0;
     for (const auto& p : planes) {
@@ -158,10 +158,11 @@ PolygonMesh intersectHalfSpaces(const std::vector<NamedPlane>& planes) {
                 return std::string(buf);
             }());
 
-    // Keep only referenced vertices, welding those closer than eps (a plane through an existing vertex).
+    // Keep only referenced vertices, welding close ones (a plane through an existing vertex, or a meet that is
+    // exact only to the printed precision).
     PolygonMesh mesh;
     std::vector<int64_t> remap(solid.vertices.size(), -1);
-    const double weld = 1e-9 * reach;
+    weld = std::max(weld, 1e-9 * reach);
     for (auto& face : solid.faces) {
         PolygonMesh::Polygon poly{{}, face.name};
         for (uint32_t v : face.vertices) {
@@ -174,9 +175,9 @@ PolygonMesh intersectHalfSpaces(const std::vector<NamedPlane>& planes) {
                 }
             }
             const auto id = uint32_t(remap[v]);
-            if (poly.vertices.empty() || poly.vertices.back() != id) poly.vertices.push_back(id);
+            if (std::find(poly.vertices.begin(), poly.vertices.end(), id) == poly.vertices.end())
+                poly.vertices.push_back(id);
         }
-        while (poly.vertices.size() > 1 && poly.vertices.front() == poly.vertices.back()) poly.vertices.pop_back();
         if (poly.vertices.size() >= 3) mesh.polygons.push_back(std::move(poly));
     }
     if (mesh.polygons.size() < 4) throw Error("the facets enclose no volume");

@@ -15,7 +15,9 @@ struct NamedPlane {
 };
 
 // The intersection of the half-spaces as polygons named after their planes. Planes that end up touching the
-// solid in less than a polygon contribute nothing. Throws Error when the intersection is empty or unbounded.
-PolygonMesh intersectHalfSpaces(const std::vector<NamedPlane>& planes);
+// solid in less than a polygon contribute nothing. Vertices closer than `weld` (at least a billionth of the
+// planes' reach) are one vertex: a design whose planes meet at a point only to its printed precision gets
+// one meet there, not a crowd of slivers. Throws Error when the intersection is empty or unbounded.
+PolygonMesh intersectHalfSpaces(const std::vector<NamedPlane>& planes, double weld = 0);
 
 }  // namespace facetlight

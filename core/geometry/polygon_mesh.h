@@ -2,9 +2,11 @@
 // What a loader reads from a file, before it is understood as a stone: vertices and polygons, each polygon
 // with the group name the file gave it (empty when none). Stone::build() validates and interprets it.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "geometry/gemcad_design.h"
 #include "geometry/geometry.h"
 
 namespace facetlight {
@@ -17,6 +19,9 @@ struct PolygonMesh {
     std::vector<Vec3> vertices;
     std::vector<Polygon> polygons;
     std::vector<std::string> warnings;   // loader remarks that are not errors (e.g. "fixed orientation")
+    // The GemCad design the polygons were cut from, if any. Its frame is the stone's (up is the file's up,
+    // index 0 its +y): a design is never re-oriented.
+    std::shared_ptr<const GemCadDesign> design;
 };
 
 // Caps that protect the process from hostile or absurd input; loaders refuse meshes beyond them.

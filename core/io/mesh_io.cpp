@@ -3,6 +3,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "io/gemcad_design.h"
 #include "io/stl_format.h"
 #include "util/bounded_read.h"
 #include "util/error.h"
@@ -38,6 +39,10 @@ MeshFormat detectFormat(std::string_view bytes) {
         return MeshFormat::Stl;
     if (lowercase(skipSpace(bytes).substr(0, 6)) == "gemcad") return MeshFormat::GemCad;
     return MeshFormat::Obj;
+}
+
+PolygonMesh parseGemCad(std::string_view text, const MeshLimits& limits) {
+    return buildGemCadMesh(parseGemCadDesign(text, limits), limits);
 }
 
 PolygonMesh parseMesh(std::string_view bytes, MeshFormat format, const MeshLimits& limits) {

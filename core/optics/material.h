@@ -3,6 +3,7 @@
 // constant index for an `n` override.
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,8 +14,8 @@ class Material {
   public:
     // One of materialNames(); throws Error listing the known names otherwise.
     static Material byName(std::string_view name);
-    // A dispersionless material of index n (1 < n <= 10).
-    static Material constant(double n);
+    // A dispersionless material of index n (1 < n <= 10), named `name`.
+    static Material constant(double n, std::string name = "custom");
 
     const std::string& name() const { return name_; }
     // Refractive index at a vacuum wavelength in nanometres.
@@ -23,6 +24,8 @@ class Material {
     double indexD() const { return index(kSodiumD); }
     double dispersionBG() const { return index(430.8) - index(686.7); }
     bool dispersive() const { return terms_ > 0; }
+    // g/cm^3, for weights; none for a constant index (an `n` or a design file's index names no material).
+    std::optional<double> densityGcm3() const { return density_ > 0 ? std::optional(density_) : std::nullopt; }
 
     static constexpr double kSodiumD = 589.3;
     // index() for any number type with the operators of double (lanes of a packet): the same bits per lane.
@@ -40,6 +43,7 @@ class Material {
     int terms_ = 0;  // Sellmeier terms; 0 means the constant index n0_
     std::array<double, 3> b_{}, c2_{};
     double n0_ = 1;
+    double density_ = 0;
 };
 
 std::vector<std::string> materialNames();

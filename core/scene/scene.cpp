@@ -17,10 +17,18 @@ double smoothstep(double lo, double hi, double x) {
 
 }  // namespace
 
+MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone) {
+    if (settings.constantIndex) return {Material::constant(*settings.constantIndex), "n"};
+    if (settings.material != "auto") return {Material::byName(settings.material), "material"};
+    if (stone.design && stone.design->refractiveIndex)
+        return {Material::constant(*stone.design->refractiveIndex, "design file index"), "design file"};
+    return {Material::byName("diamond"), "default"};
+}
+
 Scene::Scene(const Stone& stone, const SceneSettings& settings)
     : stone_(stone),
-      material_(settings.constantIndex ? Material::constant(*settings.constantIndex)
-                                       : Material::byName(settings.material)),
+      materialChoice_(chooseMaterial(settings, stone)),
+      material_(materialChoice_.material),
       lightSettings_(settings.light),
       light_(settings.light, stone),
       fixedIndex_(float(material_.indexD())) {

@@ -21,6 +21,14 @@
 
 namespace facetlight {
 
+// The material a job traces and where it came from: "n" (a constant index), "material" (the job names one),
+// "design file" (the stone's file states its index and the job's material is "auto") or "default" (diamond).
+struct MaterialChoice {
+    Material material;
+    std::string source;
+};
+MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone);
+
 class ConvexBeamEntry;
 class ConvexIntersector;
 class EmbreeIntersector;
@@ -36,6 +44,7 @@ class Scene {
 
     const Stone& stone() const { return stone_; }
     const Material& material() const { return material_; }
+    const std::string& materialSource() const { return materialChoice_.source; }
     const LightModel& light() const { return light_; }
     const LightSettings& lightSettings() const { return lightSettings_; }
     bool usesEmbree() const { return embree_ != nullptr; }
@@ -83,6 +92,7 @@ class Scene {
 
   private:
     const Stone& stone_;
+    MaterialChoice materialChoice_;
     Material material_;
     LightSettings lightSettings_;
     LightModel light_;

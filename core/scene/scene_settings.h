@@ -17,7 +17,9 @@ inline constexpr NameTable<IntersectorKind, 3> kIntersectorNames{{{{IntersectorK
                                                                    {IntersectorKind::Embree, "embree"}}}};
 
 struct SceneSettings {
-    std::string material = "diamond";
+    // A name of materialNames(), or "auto": the design file's own index (GemCad "I") where it states one, else
+    // diamond.
+    std::string material = "auto";
     std::optional<double> constantIndex;  // a constant refractive index overriding the material's (JSON "n")
     bool dispersion = true;               // refraction by wavelength in 380-780 nm; false: all at 589.3 nm
     IntersectorKind intersector = IntersectorKind::Auto;

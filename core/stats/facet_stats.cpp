@@ -20,7 +20,8 @@ json meshJson(const Stone& stone) {
             {"facets", stone.facets.size()},
             {"triangles", stone.triangles.size()},
             {"convex", stone.convex},
-            {"proportions", proportionsJson(stone.proportions)}};
+            {"proportions", proportionsJson(stone.proportions)},
+            {"frame", frameJson(stone.frame)}};
 }
 
 json histogramJson(const std::array<uint64_t, kHistogramBins>& h) {

@@ -124,8 +124,8 @@ void measureMinorTiers(const Stone& stone, double scale, const Facet& table, dou
 Proportions measureProportions(const Stone& stone, double scale) {
     Proportions p;
     const Bounds3& b = stone.bounds;
-    p.length = b.extent().x;
-    p.width = b.extent().y;
+    p.length = std::max(b.extent().x, b.extent().y);
+    p.width = std::min(b.extent().x, b.extent().y);
     // Round: no vertex reaches much beyond the circle inscribed in the extents (a square's corners do; a
     // 16-sided girdle's reach 1 / cos 11.25 = 1.0196 times as far).
     double maxRadius = 0;

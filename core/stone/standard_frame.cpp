@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 
 #include "geometry/rotation.h"
 #include "stone/detail/newell.h"
@@ -18,7 +19,7 @@ void transform(Stone& stone, const std::function<Vec3(const Vec3&)>& move) {
 
 }  // namespace
 
-void moveToStandardFrame(Stone& stone, double scale) {
+void moveToStandardFrame(Stone& stone, double scale, bool reorient) {
     auto facetNormal = [&](const Facet& f) {
         return normalize(detail::newellNormal(stone.vertices, f.outline));
     };
@@ -32,10 +33,16 @@ void moveToStandardFrame(Stone& stone, double scale) {
         if (area > largestArea) largestArea = area, largest = &f;
     }
     if (!largest || !(largestArea > 0)) throw Error("the mesh has no facet of positive, finite area");
-    if (!horizontal) {
+    StoneFrame& frame = stone.frame;
+    frame = {};
+    if (reorient && !horizontal) {
         const Vec3 from = facetNormal(*largest);
         const Vec3 axis = cross(from, Vec3{0, 0, 1});
         const double s = length(axis), c = from.z;
+        frame.fileOrientation = false;
+        // Named as finishFacets() will name it when the file gave it no name.
+        frame.tableFacet = largest->name.empty() ? "facet_" + std::to_string(largest->id + 1) : largest->name;
+        frame.turnedDeg = degrees(std::atan2(s, c));
         if (s > 1e-12) {
             const Vec3 k = axis / s;
             transform(stone, [&](const Vec3& v) { return rotateAbout(v, k, c, s); });
@@ -45,13 +52,16 @@ void moveToStandardFrame(Stone& stone, double scale) {
     }
     Bounds3 b;
     for (const auto& v : stone.vertices) b.extend(v);
-    if (b.extent().y > b.extent().x * 1.001)  // the long axis along x
+    if (reorient && b.extent().y > b.extent().x * 1.001) {  // the long axis along x
         transform(stone, [](const Vec3& v) { return Vec3{v.y, -v.x, v.z}; });
+        frame.fileOrientation = false;
+        frame.longAxisTurned = true;
+    }
     b = {};
     for (const auto& v : stone.vertices) b.extend(v);
     const GirdleBand band = girdleBand(stone, scale);
-    const Vec3 shift{b.center().x, b.center().y, 0.5 * (band.top + band.bottom)};
-    transform(stone, [&](const Vec3& v) { return v - shift; });
+    frame.shift = {b.center().x, b.center().y, 0.5 * (band.top + band.bottom)};
+    transform(stone, [&](const Vec3& v) { return v - frame.shift; });
 }
 
 }  // namespace facetlight

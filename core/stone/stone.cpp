@@ -55,16 +55,21 @@ public:
         triangleSource_ = std::move(triangulation.source);
         checkClosedAndOrient(stone_, triangleSource_, scale_);
         mergeFacets();
-        if (options_.standardFrame) moveToStandardFrame(stone_, scale_);
+        stone_.design = mesh_.design;
+        if (options_.standardFrame) moveToStandardFrame(stone_, scale_, !(mesh_.design || options_.keepFrame));
         finishFacets();
         classifyRegions();
         stone_.proportions = measureProportions(stone_, scale_);
-        stone_.convex = isConvex(stone_, directed_, scale_);
+        // A design is the intersection of its facets' half-spaces: convex by construction, though welding its
+        // meets may bend an outline by the printed precision.
+        stone_.convex = mesh_.design || isConvex(stone_, directed_, scale_);
         return std::move(stone_);
     }
 
   private:
-    // Grows facets over edge-connected triangles lying in the seed triangle's plane.
+    // Grows facets over edge-connected triangles lying in the seed triangle's plane. A GemCad design's polygon
+    // is one facet whatever its corners: welding its meets to the printed precision (io/gemcad_design.h) may
+    // move them off its plane by that much.
     void mergeFacets() {
         const size_t nt = stone_.triangles.size();
         detail::EdgeMap& directed = directed_;
@@ -102,7 +107,8 @@ public:
                     const auto& q = stone_.triangles[o].v;
                     const Vec3 on = cross(stone_.vertices[q[1]] - stone_.vertices[q[0]],
                                           stone_.vertices[q[2]] - stone_.vertices[q[0]]);
-                    if (coplanar && dot(on, n) > 0) {
+                    const bool onePolygon = mesh_.design && triangleSource_[o] == triangleSource_[t];
+                    if (onePolygon || (coplanar && dot(on, n) > 0)) {
                         facetOf[o] = id;
                         stack.push_back(o);
                     }

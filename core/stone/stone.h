@@ -3,6 +3,7 @@
 // (girdle plane z = 0, table up, centred on the z axis) with its regions and trade proportions measured.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -38,8 +39,8 @@ struct Facet {
 // Trade proportions, as percentages of the girdle diameter (of the width for fancy shapes) and degrees;
 // empty where a figure does not apply to the cut.
 struct Proportions {
-    double length = 0;  // girdle outline extent along x
-    double width = 0;   // girdle outline extent along y
+    double length = 0;  // the girdle outline's longer horizontal extent (along x or y)
+    double width = 0;   // its shorter one
     double diameter = 0;  // reference size for the percentages: the width (the diameter for a round)
     // Crown height and pavilion depth run from the table and the culet to the girdle's rims where the mains
     // meet it; girdlePct is the girdle where thinnest, girdleThickestPct where thickest.
@@ -56,6 +57,17 @@ struct StoneOptions {
     MeshLimits limits;
     // Move the stone into the standard frame. Off only for tests of the raw geometry.
     bool standardFrame = true;
+    // Keep the file's orientation, only centring the stone (--keep-frame); GemCad designs always keep theirs.
+    bool keepFrame = false;
+};
+
+// What was done to the file's geometry to put the stone in the standard frame, so a user can tell.
+struct StoneFrame {
+    bool fileOrientation = true;  // the file's up and azimuths kept
+    std::string tableFacet;       // when not: the facet turned to face up, taken to be the table
+    double turnedDeg = 0;         // the angle it was turned through
+    bool longAxisTurned = false;  // turned a quarter turn about z to lay the long axis along x
+    Vec3 shift;                   // subtracted from every vertex: centred on z, girdle at z = 0
 };
 
 class Stone {
@@ -72,6 +84,8 @@ public:
     bool convex = false;
     Bounds3 bounds;
     Proportions proportions;
+    StoneFrame frame;
+    std::shared_ptr<const GemCadDesign> design;  // the GemCad design it was cut from, if any
     std::vector<std::string> warnings;
 
     int facetCount(Region r) const;

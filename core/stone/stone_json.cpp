@@ -24,6 +24,27 @@ nlohmann::json proportionsJson(const Proportions& p) {
     return j;
 }
 
+nlohmann::json frameJson(const StoneFrame& frame) {
+    nlohmann::json j = {{"file_orientation", frame.fileOrientation}, {"shift", vec3Json(frame.shift)}};
+    if (!frame.tableFacet.empty()) j["table_facet"] = frame.tableFacet, j["turned_deg"] = frame.turnedDeg;
+    if (frame.longAxisTurned) j["long_axis_turned"] = true;
+    return j;
+}
+
+// A GemCad design's tiers that a sweep can vary, as its parameters; none for a mesh.
+nlohmann::json tiersJson(const Stone& stone) {
+    nlohmann::json tiers = nlohmann::json::array();
+    if (!stone.design) return tiers;
+    for (size_t t = 0; t < stone.design->tiers.size(); ++t) {
+        const GemCadTier& tier = stone.design->tiers[t];
+        if (!tweakableTier(tier)) continue;
+        tiers.push_back({{"parameter", tierParameter(*stone.design, t)},
+                         {"angle_deg", std::fabs(tier.angleDeg)},
+                         {"side", tier.pavilion() ? "pavilion" : "crown"}});
+    }
+    return tiers;
+}
+
 nlohmann::json stoneSummaryJson(const Stone& stone) {
     nlohmann::json regions = nlohmann::json::object();
     for (int r = 0; r < kRegionCount; ++r) regions[std::string(regionName(Region(r)))] = stone.facetCount(Region(r));
@@ -35,6 +56,8 @@ nlohmann::json stoneSummaryJson(const Stone& stone) {
         {"convex", stone.convex},
         {"regions", regions},
         {"proportions", proportionsJson(stone.proportions)},
+        {"frame", frameJson(stone.frame)},
+        {"tiers", tiersJson(stone)},
         {"warnings", stone.warnings},
     };
 }

@@ -8,7 +8,11 @@ namespace facetlight {
 
 // length, width, diameter, length_to_width and the trade proportions (null where one does not apply).
 nlohmann::json proportionsJson(const Proportions& p);
-// name, facet and triangle counts, convex, regions (facet count per region), proportions, warnings.
+// What was done to the file's geometry (docs/gemcad.md): file_orientation, table_facet and turned_deg,
+// long_axis_turned, shift.
+nlohmann::json frameJson(const StoneFrame& frame);
+// name, facet and triangle counts, convex, regions (facet count per region), proportions, frame, a design's
+// tiers, warnings.
 nlohmann::json stoneSummaryJson(const Stone& stone);
 // The summary plus `facets`: id, name, region, area, normal, centroid.
 nlohmann::json stoneJson(const Stone& stone);

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "cuts/cut_library.h"
+#include "cuts/facet_design.h"
 #include "sweep/sweep_request.h"
 #include "util/error.h"
 #include "util/name_table.h"
@@ -16,6 +17,10 @@ std::string changedParameters(const std::string& shape, const CutValues& values)
     static const std::map<std::string, std::string> letters = {
         {"table", "T"}, {"crown", "C"}, {"pavilion", "P"}, {"girdle", "G"}};
     std::string text;
+    if (!isLibraryShape(shape)) {  // a design's tiers: "tier:P1 41.5"
+        for (const auto& [name, value] : values) text += " " + name + " " + formatNumber(value);
+        return text;
+    }
     for (const CutParameter& p : findCutShape(shape).parameters) {
         const auto v = values.find(p.name);
         if (v == values.end() || v->second == p.defaultValue) continue;
@@ -61,25 +66,36 @@ JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
         for (const auto& [key, value] : c->items())
             spec.cut[key] = settings::readNumber(value, settings::fieldPath("cut", key), {});
         if (j.contains("sweep")) throw Error("cut", "a sweep holds parameters with sweep.set, not cut");
+        // A design's tiers are checked once the service has found its file (cutStone).
         try {
-            completeCutValues(findCutShape(spec.mesh), spec.cut);
+            if (isLibraryShape(spec.mesh)) completeCutValues(findCutShape(spec.mesh), spec.cut);
         } catch (const Error& e) {
             throw e.within("cut");
         }
     }
-    // A sweep of a shape of the cut library (docs/sweeps.md): every point an ordinary trace of these
-    // settings.
+    // A sweep (docs/sweeps.md): every point an ordinary trace of these settings. A shape of the cut library is
+    // checked here; a design or mesh file once the service has found it (never a path from a job).
     if (const auto s = j.find("sweep"); s != j.end() && !s->is_null()) {
         spec.settings.sweep = sweepRequestSchema().read(*s, "sweep");
         if (!s->contains("figure")) spec.settings.sweep->figures = {defaultSweepFigure(spec.settings.trace)};
         if (spec.settings.render) throw Error("render", "a sweep makes no render: set render to false");
-        planSweep(spec.mesh, *spec.settings.sweep, spec.settings.trace);
+        if (isLibraryShape(spec.mesh)) planSweep(spec.mesh, *spec.settings.sweep, spec.settings.trace);
     }
     return spec;
 }
 
-Stone cutStone(const JobRequest& spec) {
-    return Stone::build(makeCut(spec.mesh, spec.cut), spec.name.empty() ? spec.mesh : spec.name);
+Stone cutStone(const JobRequest& spec, const std::string& source) {
+    const std::string name = spec.name.empty() ? spec.mesh : spec.name;
+    if (isLibraryShape(source)) return Stone::build(makeCut(source, spec.cut), name);
+    const std::shared_ptr<const FileShape> file = fileShape(source);
+    if (!file->design) throw Error("cut", "cut applies to a shape of the cut library or a GemCad design's tiers");
+    CutValues values;
+    try {
+        values = completeCutValues(file->shape, spec.cut);
+    } catch (const Error& e) {
+        throw e.within("cut");
+    }
+    return Stone::build(file->shape.build(values), name);
 }
 
 std::string defaultJobName(const JobRequest& spec, const std::string& design) {

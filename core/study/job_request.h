@@ -25,8 +25,10 @@ struct JobRequest {
     static JobRequest fromJson(const nlohmann::json& j, JobRequest defaults = {});
 };
 
-// The stone a spec with `cut` names: its shape built with those parameters.
-Stone cutStone(const JobRequest& spec);
+// The stone a spec with `cut` names: its shape built with those parameters. `source` is where the shape is:
+// the spec's mesh for a shape of the cut library, else the path of its GemCad design (the service's catalog
+// finds it; `cut` then holds tier slopes, tier:NAME, docs/gemcad.md).
+Stone cutStone(const JobRequest& spec, const std::string& source);
 
 // The name of a job that gives none: its design (`design`: "round brilliant", an upload's file name), the cut
 // parameters it changes from the shape's defaults as cutters write them ("round brilliant P 43.5"), and for a

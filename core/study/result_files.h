@@ -22,8 +22,10 @@ struct ResultFile {
 };
 
 // In the order they are written: stats.json last, so that its presence says a folder is complete.
-inline constexpr std::array<ResultFile, 16> kResultFiles{{
+inline constexpr std::array<ResultFile, 18> kResultFiles{{
     {"best.obj", "text/plain", "best.obj", "best_obj", "sweep.maximize"},
+    // The best design as GemCad .asc (docs/gemcad.md): a design's tiers as tweaked, a mesh's facet planes.
+    {"best.asc", "text/plain", "best.asc", "best_asc", "sweep.maximize"},
     {"best.json", "application/json", "best.json", "best", "sweep.maximize"},
     {"sweep.csv", "text/csv", "sweep.csv", "sweep_csv", "sweep"},
     {"sweep.png", "image/png", "sweep.png", "sweep_picture", "sweep"},
@@ -40,6 +42,8 @@ inline constexpr std::array<ResultFile, 16> kResultFiles{{
     {"aset.png", "image/png", "aset.png", "aset", "aset"},
     {"tilt.webp", "image/webp", "tilt.webp", "tilt_animation", "tilt_series"},
     {"tilt.png", "image/png", "tilt.png", "tilt_chart", "tilt_series"},
+    // The faceting diagram: crown, profile and pavilion with the cutting sheet's tiers (docs/gemcad.md).
+    {"diagram.png", "image/png", "diagram.png", "diagram", ""},
     {"stats.json", "application/json", "stats", "stats", ""},
 }};
 

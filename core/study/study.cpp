@@ -4,10 +4,12 @@
 #include <sstream>
 #include <vector>
 
+#include "io/cutting_sheet.h"
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
 #include "pictures/angular_plot.h"
 #include "pictures/aset_picture.h"
+#include "pictures/design_diagram.h"
 #include "pictures/heatmap.h"
 #include "pictures/tilt_chart.h"
 #include "pictures/webp_animation.h"
@@ -16,6 +18,7 @@
 #include "render/renderer.h"
 #include "render/tilt_series.h"
 #include "scene/scene.h"
+#include "stone/stone_size.h"
 #include "trace/distributed_trace.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
@@ -66,7 +69,7 @@ StudyResult runSweepJob(const std::string& shape, const StudySettings& settings,
     if (!settings.sweep) throw Error("sweep", "the job is not a sweep");
     const SweepRequest& request = *settings.sweep;
     const SweepOutputs out =
-        runSweepRequest(planSweep(shape, request, settings.trace), request, control, comm, checkpoint);
+        runSweepRequest(planSweepOf(shape, request, settings.trace), request, control, comm, checkpoint);
     StudyResult result;
     if (!comm.isRoot()) return result;
     result.file("sweep.json") = out.json();
@@ -75,6 +78,7 @@ StudyResult runSweepJob(const std::string& shape, const StudySettings& settings,
     if (!out.best.is_null()) {
         result.file("best.json") = out.best.dump(2) + "\n";
         result.file("best.obj") = out.bestObj;
+        result.file("best.asc") = out.bestAsc;
     }
     return result;
 }
@@ -114,6 +118,11 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
         result.file("stats.csv") = csv.str();
         result.file("heatmap.png") = encodePng(facetHeatmap(stone, traced.stats));
         result.file("heatmap.json") = toJson(heatmapLayout(stone), stone).dump();
+        if (stone.proportions.diameter > 0) {
+            const std::optional<double> density = chooseMaterial(settings.trace, stone).material.densityGcm3();
+            result.file("diagram.png") = encodePng(
+                designDiagram(stone, cuttingSheet(stone), stoneSize(stone, settings.trace.sizeMm, density)));
+        }
         if (traced.fire) {
             result.file("heatmap_fire.png") = encodePng(fireHeatmap(stone, *traced.fire));
         }

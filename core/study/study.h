@@ -42,8 +42,9 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
 // ranks return empty results. control.done() and total() count this rank's share of each phase.
 StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunControl& control,
                      Communicator& comm);
-// A sweep job (settings.sweep) of the cut library's shape `shape` on every rank of `comm`: rank 0's result
-// holds its files (sweep.json, sweep.csv, sweep.png of the first figure; with a search best.json, best.obj).
+// A sweep job (settings.sweep) of `shape`, a shape of the cut library or a design or mesh file's path
+// (planSweepOf), on every rank of `comm`: rank 0's result holds its files (sweep.json, sweep.csv, sweep.png of
+// the first figure; with a search best.json, best.obj and best.asc).
 StudyResult runSweepJob(const std::string& shape, const StudySettings& settings, RunControl& control,
                         Communicator& comm, const SweepCheckpoint& checkpoint = {});
 // The units of a phase of the whole study, over every rank: its photons or pixels (0 for the others).

@@ -64,7 +64,7 @@ nlohmann::json sweepToJson(const SweepResult& result) {
     const SweepPlan& plan = result.plan;
     nlohmann::json fixed = nlohmann::json::object();
     // A named pair, not a structured binding: clang 14 (the fuzz build) cannot capture bindings in lambdas.
-    for (const auto& parameter : completeCutValues(findCutShape(plan.shape), plan.fixed)) {
+    for (const auto& parameter : completeCutValues(plan.cutShape(), plan.fixed)) {
         const bool varied = std::any_of(plan.axes.begin(), plan.axes.end(),
                                         [&](const SweepAxis& a) { return a.name == parameter.first; });
         if (!varied) fixed[parameter.first] = parameter.second;

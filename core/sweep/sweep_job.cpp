@@ -1,6 +1,8 @@
 #include "sweep/sweep_job.h"
 
 #include "cuts/cut_library.h"
+#include "cuts/facet_design.h"
+#include "io/gemcad_writer.h"
 #include "io/obj_writer.h"
 #include "image/image.h"
 #include "sweep/optimizer.h"
@@ -64,10 +66,23 @@ SweepOutputs runSweepRequest(const SweepPlan& plan, const SweepRequest& request,
 
     SweepPlan bestPlan = plan;
     for (size_t a = 0; a < plan.axes.size(); ++a) bestPlan.axes[a].values = {best->best.values[a]};
-    const CutShape& shape = findCutShape(plan.shape);
+    const CutShape& shape = plan.cutShape();
     const CutValues cut = sweepPoints(bestPlan)[0].cut;
-    const std::string command = "facetlight cut " + cutCommandLine(shape, cut);
+    const std::string command = plan.file ? "" : "facetlight cut " + cutCommandLine(shape, cut);
     out.bestObj = objText(shape.build(cut), command);
+    // As GemCad .asc: a design's tiers as tweaked; a library shape's (or a convex mesh's) facet planes.
+    std::string tweaked;
+    for (const auto& [name, value] : cut) tweaked += " " + name + " " + formatNumber(value);
+    GemCadDesign design;
+    if (plan.file && plan.file->design) {
+        design = plan.file->designAt(cut);
+    } else if (const Stone stone = Stone::build(shape.build(cut), plan.shape); stone.convex) {
+        design = gemCadDesignOf(stone);
+    }
+    if (!design.tiers.empty()) {
+        design.headers.push_back("facetlight's best " + request.maximize + ":" + tweaked);
+        out.bestAsc = writeGemCad(design);
+    }
 
     json ties = json::array();
     for (const RatedDesign& t : best->ties) ties.push_back(designJson(best->lastAxes, t, settings.z));
@@ -80,7 +95,7 @@ SweepOutputs runSweepRequest(const SweepPlan& plan, const SweepRequest& request,
     json bestJson = designJson(best->lastAxes, best->best, settings.z);
     bestJson["photons"] = best->photons;
     bestJson["cut"] = cut;
-    bestJson["command"] = command;
+    if (!command.empty()) bestJson["command"] = command;
     out.best = {{"figure", request.maximize},
                 {"confidence", 0.95},
                 {"constraints", request.constraints},

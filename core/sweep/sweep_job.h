@@ -1,7 +1,7 @@
 #pragma once
 // A sweep job's run (docs/sweeps.md): the sweep and, with a search for the best design, its finer rounds,
 // into the files that the CLI writes and the service serves: sweep.json, sweep.csv, the pictures and, with a
-// search, best.json and best.obj.
+// search, best.json, best.obj and best.asc.
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -30,6 +30,7 @@ struct SweepOutputs {
     std::vector<std::pair<std::string, std::string>> pictures;  // file name and PNG, one per figure
     nlohmann::json best;                                        // best.json; null without a search
     std::string bestObj;                                        // the best design, with a search
+    std::string bestAsc;  // and as a GemCad design (empty for a mesh that is not convex)
 
     std::string json() const { return sweepToJson(sweep).dump(2) + "\n"; }
     std::string csv() const { return sweepCsv(sweep); }

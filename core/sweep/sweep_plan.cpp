@@ -20,6 +20,8 @@ void applyAxis(const SweepAxis& axis, size_t i, CutValues& cut, TraceSettings& t
         trace.light.tiltDeg = axis.values[i];
     } else if (axis.name == "head_shadow") {
         trace.light.headShadowDeg = axis.values[i];
+    } else if (axis.name == "n") {
+        trace.constantIndex = axis.values[i];
     } else if (axis.name == "material") {
         trace.material = axis.choices[i];
     } else if (axis.name == "light") {
@@ -42,13 +44,13 @@ size_t SweepPlan::pointCount() const {
 std::string SweepPlan::unit(const SweepAxis& axis) const {
     if (axis.name == "tilt" || axis.name == "head_shadow") return "deg";
     if (isTraceAxis(axis.name)) return "";
-    for (const CutParameter& p : findCutShape(shape).parameters)
+    for (const CutParameter& p : cutShape().parameters)
         if (p.name == axis.name) return p.unit;
     return "";
 }
 
 void SweepPlan::validate() const {
-    const CutShape& s = findCutShape(shape);
+    const CutShape& s = cutShape();
     completeCutValues(s, fixed);
     checkTraceSettings(trace);
     if (axes.empty() || axes.size() > kMaxSweepAxes)
@@ -86,7 +88,7 @@ void SweepPlan::validate() const {
 }
 
 std::vector<SweepPoint> sweepPoints(const SweepPlan& plan) {
-    const CutShape& shape = findCutShape(plan.shape);
+    const CutShape& shape = plan.cutShape();
     std::vector<SweepPoint> points(plan.pointCount());
     for (size_t k = 0; k < points.size(); ++k) {
         SweepPoint& p = points[k];

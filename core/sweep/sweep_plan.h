@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cuts/cut_library.h"
+#include "cuts/design_shape.h"
 #include "stats/facet_stats.h"
 #include "sweep/sweep_axis.h"
 #include "trace/trace_settings.h"
@@ -20,7 +21,8 @@ namespace facetlight {
 // settings, checked by validate(). planSweep makes it from a SweepRequest (what the user asked for); the
 // tests and benchmarks build one directly.
 struct SweepPlan {
-    std::string shape;
+    std::string shape;  // a shape of the cut library, or the name of `file`'s
+    std::shared_ptr<const FileShape> file;  // a design or mesh file swept instead of a library shape
     CutValues fixed;  // the shape's other parameters; defaults for those not given
     std::vector<SweepAxis> axes;
     TraceSettings trace;  // every point's settings; `threads` is the whole sweep's worker count
@@ -28,6 +30,8 @@ struct SweepPlan {
     // Throws Error naming the fault: an unknown shape, parameter or axis, an axis given twice, a value
     // outside its parameter's range, no axis or more than kMaxSweepAxes, more than kMaxSweepPoints points.
     void validate() const;
+    // The shape swept: `file`'s, else the library's shape of that name.
+    const CutShape& cutShape() const { return file ? file->shape : findCutShape(shape); }
     size_t pointCount() const;
     // The unit of an axis: the parameter's ("deg", "%", ""), "deg" for tilt and head shadow.
     std::string unit(const SweepAxis& axis) const;

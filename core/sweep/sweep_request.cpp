@@ -1,5 +1,8 @@
 #include "sweep/sweep_request.h"
 
+#include <algorithm>
+#include <filesystem>
+
 #include "sweep/optimizer.h"
 #include "sweep/sweep_figures.h"
 #include "util/error.h"
@@ -163,16 +166,12 @@ const settings::Schema<SweepRequest>& sweepRequestSchema() {
     return schema;
 }
 
-SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace) {
-    SweepPlan plan{shape, request.set, request.axes, trace};
-    const CutShape* cut = nullptr;
+namespace {
+
+// Checks `plan` (its shape already found) against the request, naming the field at fault.
+SweepPlan checkedPlan(SweepPlan plan, const SweepRequest& request, const TraceSettings& trace) {
     try {
-        cut = &findCutShape(shape);
-    } catch (const Error& e) {
-        throw Error("mesh", e.what());
-    }
-    try {
-        completeCutValues(*cut, request.set);
+        completeCutValues(plan.cutShape(), request.set);
     } catch (const Error& e) {
         throw e.within("sweep.set");
     }
@@ -195,6 +194,39 @@ SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const
     }
     checkSweepFigures(request, trace);
     return plan;
+}
+
+}  // namespace
+
+SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace) {
+    try {
+        findCutShape(shape);
+    } catch (const Error& e) {
+        throw Error("mesh", e.what());
+    }
+    return checkedPlan({shape, nullptr, request.set, request.axes, trace}, request, trace);
+}
+
+bool isLibraryShape(const std::string& name) {
+    return std::any_of(cutShapes().begin(), cutShapes().end(), [&](const CutShape& s) { return s.name == name; });
+}
+
+SweepPlan planSweepOf(const std::string& shapeOrPath, const SweepRequest& request, const TraceSettings& trace) {
+    if (isLibraryShape(shapeOrPath) || !std::filesystem::exists(shapeOrPath))
+        return planSweep(shapeOrPath, request, trace);
+    std::shared_ptr<const FileShape> file;
+    try {
+        file = fileShape(shapeOrPath);
+    } catch (const Error& e) {
+        throw Error("mesh", e.what());
+    }
+    return planSweep(std::move(file), request, trace);
+}
+
+SweepPlan planSweep(std::shared_ptr<const FileShape> file, const SweepRequest& request,
+                    const TraceSettings& trace) {
+    const std::string name = file->shape.name;
+    return checkedPlan({name, std::move(file), request.set, request.axes, trace}, request, trace);
 }
 
 void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace,

@@ -1,6 +1,7 @@
 #pragma once
 // A sweep as a job asks for it (docs/sweeps.md): the `sweep` object of the one job format
 // (study/job_request.h), read through its settings table, and the checked plan made from it.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,13 @@ inline nlohmann::json toJson(const SweepRequest& r) {
 // The plan of the sweep of `shape` the request asks for, with every point's trace settings; checked, throwing
 // Error naming the field ("mesh" for a shape the cut library lacks, "sweep.axes[1]", "sweep.set", ...).
 SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace);
+// The same for a design or mesh file (cuts/design_shape.h): a GemCad design's tiers are its parameters.
+SweepPlan planSweep(std::shared_ptr<const FileShape> file, const SweepRequest& request,
+                    const TraceSettings& trace);
+// A shape of the cut library by name, else a design or mesh file by path (trusted callers only: the CLI, and
+// the service once its catalog has turned a job's mesh into a path). Errors name the field as planSweep's.
+SweepPlan planSweepOf(const std::string& shapeOrPath, const SweepRequest& request, const TraceSettings& trace);
+bool isLibraryShape(const std::string& name);
 
 // What a request's figures are called in its errors: the job's fields, or the CLI's options.
 struct SweepFigureFields {

@@ -46,7 +46,7 @@ SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPoin
     plan.validate();
     const auto start = std::chrono::steady_clock::now();
     SweepResult result{plan, sweepPoints(plan), 0};
-    const CutShape& shape = findCutShape(plan.shape);
+    const CutShape& shape = plan.cutShape();
     const int threads = plan.trace.threads;
     const size_t count = result.points.size();
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "io/cutting_sheet.h"
+#include "stone/stone_size.h"
 #include "trace/fire_trace.h"
 #include "trace/photon_walker.h"
 #include "util/parallel.h"
@@ -43,6 +45,21 @@ bool traceBlocks(const TraceBase& trace, uint64_t firstBlock, uint64_t lastBlock
 
 nlohmann::json traceReport(const TraceResult& result, const Stone& stone, const TraceSettings& settings) {
     nlohmann::json stats = statsToJson(result.stats, stone, toJson(settings), result.timing);
+    const MaterialChoice material = chooseMaterial(settings, stone);
+    stats["material"] = {{"name", material.material.name()},
+                         {"n_d", material.material.indexD()},
+                         {"dispersion_bg", material.material.dispersionBG()},
+                         {"source", material.source}};
+    if (const std::optional<CuttingSheet> sheet = cuttingSheet(stone)) stats["cutting_sheet"] = toJson(*sheet);
+    if (stone.proportions.diameter > 0) {  // else there is no girdle width to scale by
+        const std::optional<double> density = material.material.densityGcm3();
+        const StoneSize size = stoneSize(stone, settings.sizeMm, density);
+        stats["size"] = {{"size_mm", settings.sizeMm},   {"length_mm", size.lengthMm},
+                         {"width_mm", size.widthMm},     {"depth_mm", size.depthMm},
+                         {"volume_mm3", size.volumeMm3}, {"block_retention", size.blockRetention},
+                         {"density_g_cm3", density ? nlohmann::json(*density) : nlohmann::json()},
+                         {"carats", size.carats ? nlohmann::json(*size.carats) : nlohmann::json()}};
+    }
     if (result.fire)
         stats["fire"] =
             fireToJson(*result.fire, stone, settings.fire.pupilAngleDeg(), settings.light.headShadowDeg);

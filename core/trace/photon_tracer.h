@@ -54,8 +54,8 @@ struct TraceResult {
     std::optional<FireStats> fire;  // when settings.fire.enabled
 };
 
-// stats.json of a trace (docs/stats-schema.md): the facet statistics with the job's settings, and the fire
-// trace's `fire` member when it ran.
+// stats.json of a trace (docs/stats-schema.md): the facet statistics with the job's settings, the material
+// traced and where it came from, and the fire trace's `fire` member when it ran.
 nlohmann::json traceReport(const TraceResult& result, const Stone& stone, const TraceSettings& settings);
 
 // The whole job: the trace's settings.photons photons with settings.threads workers (and the fire trace when

@@ -24,9 +24,16 @@ const Schema<FireSettings>& fireSchema() {
     return schema;
 }
 
+// "auto" and the named materials.
+std::vector<std::string> materialChoices() {
+    std::vector<std::string> names = materialNames();
+    names.insert(names.begin(), "auto");
+    return names;
+}
+
 std::string materialHelp() {
-    std::string help = "Material: ";
-    const std::vector<std::string> names = materialNames();
+    std::string help = "Material (auto: the design file's own index where it states one, else diamond): ";
+    const std::vector<std::string> names = materialChoices();
     for (size_t i = 0; i < names.size(); ++i)
         help += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
     return help;
@@ -61,7 +68,7 @@ const Schema<TraceSettings>& traceSettingsSchema() {
         },
         // The material's name matters only without an `n` to override it.
         [](const TraceSettings& s, const std::string& path) {
-            if (!s.constantIndex) readChoice(s.material, fieldPath(path, "material"), materialNames());
+            if (!s.constantIndex) readChoice(s.material, fieldPath(path, "material"), materialChoices());
         });
     return schema;
 }

@@ -66,7 +66,7 @@ async function waitForHealth(url, child, deadlineMs) {
 
 // Starts the server on a free port; another process may take the port between the probe and the bind, so a
 // failed start is tried again on a fresh port.
-async function startServer() {
+async function startServer(extraArgs = []) {
   assert.ok(fs.existsSync(serverBinary), `no server binary at ${serverBinary} (build facetlight-server first)`);
   const dataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'facetlight-web-data-'));
   for (let attempt = 0; attempt < 5; ++attempt) {
@@ -74,7 +74,7 @@ async function startServer() {
     const log = [];
     const child = spawn(serverBinary, [
       '--host', '127.0.0.1', '--port', String(port), '--data', dataDir,
-      '--meshes', path.join(sourceDir, 'meshes'), '--web', path.join(sourceDir, 'web'),
+      '--meshes', path.join(sourceDir, 'meshes'), '--web', path.join(sourceDir, 'web'), ...extraArgs,
     ], { stdio: ['ignore', 'pipe', 'pipe'] });
     child.stdout.on('data', (d) => log.push(String(d)));
     child.stderr.on('data', (d) => log.push(String(d)));
@@ -112,8 +112,9 @@ async function uploadThroughPage(file) {
   return page.$eval('#f-mesh', (el) => el.value);
 }
 
-async function fillSmallJob(overrides = {}) {
+async function fillSmallJob(overrides = {}, on = page) {
   const job = { ...SMALL_JOB, ...overrides };
+  const page = on;
   await page.fill('#f-photons', job.photons);
   await page.fill('#f-threads', '2');
   await page.setChecked('#f-render', true);
@@ -155,12 +156,12 @@ async function fillSweepAxis(i, values) {
   for (const [k, key] of ['name', 'from', 'to', 'step'].entries()) await page.fill(`#s-${key}-${i}`, values[k]);
 }
 
-async function picturesLoaded(scope) {
-  await page.waitForFunction((sel) => {
+async function picturesLoaded(scope, on = page) {
+  await on.waitForFunction((sel) => {
     const imgs = [...document.querySelectorAll(`${sel} img`)];
     return imgs.length > 0 && imgs.every((img) => img.complete);
   }, scope, { timeout: 30_000 });
-  return page.$$eval(`${scope} img`, (imgs) => imgs.map((img) => ({ src: img.getAttribute('src'), width: img.naturalWidth })));
+  return on.$$eval(`${scope} img`, (imgs) => imgs.map((img) => ({ src: img.getAttribute('src'), width: img.naturalWidth })));
 }
 
 // The sweep chart's texts that reach past its edges (a legend cut off).
@@ -835,6 +836,38 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await shot('14-sweep-search');
   });
 
+  test('a GemCad design: its cutting sheet, diagram and weight on the result page, its tiers in the sweep form', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    const mesh = await uploadThroughPage('tests/data/brilliant.asc');
+    assert.match(await page.textContent('#hint-mesh'), /GemCad design: 5 tiers to sweep/);
+    await page.fill('#f-photons', '5000');
+    await page.fill('#f-threads', '2');
+    await page.setChecked('#f-render', false);
+    const id = await submitAndGetId();
+    await waitForFinished(id);
+    await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
+    await page.waitForSelector('[data-section="design"]');
+    const rows = await page.$$eval('table.cutting-sheet tbody tr', (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
+    assert.equal(rows.length, 7);
+    assert.deepEqual(rows[0].slice(0, 5), ['P1', 'pavilion', '41°', '41°', '0.668']);
+    assert.equal(rows[0][6], '03-15-27-39-51-63-75-87');
+    const pics = await picturesLoaded('[data-section="design"]');
+    assert.equal(pics.length, 1);
+    assert.ok(pics[0].width >= 1000, `the diagram is ${pics[0].width} px wide`);
+    assert.match(await page.textContent('[data-section="design"]'), /design file's own index/);
+    await shot('15-design');
+    await page.setViewportSize(PHONE);
+    await page.waitForTimeout(200);
+    assert.ok(await noHorizontalOverflow(), 'the design section fits a phone');
+    await page.setViewportSize(DESKTOP);
+    // The sweep form offers the design, and its tiers as the quantities to vary.
+    await page.goto(`${baseUrl}/#/`);
+    await page.selectOption('#s-shape', mesh);
+    assert.equal(await page.inputValue('#s-name-0'), 'tier:P1');
+    const quantities = await page.$$eval('#sweep-quantities option', (os) => os.map((o) => o.value));
+    for (const q of ['tier:P1', 'tier:C2', 'tilt']) assert.ok(quantities.includes(q), quantities.join(' '));
+  });
+
   test('the home page fits a phone', async () => {
     await page.setViewportSize(PHONE);
     await page.goto(`${baseUrl}/#/`);
@@ -847,5 +880,65 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
   test('no request left the server and the page logged no errors', () => {
     assert.deepEqual(foreignRequests, []);
     assert.deepEqual(pageErrors, []);
+  });
+});
+
+// Issue 31, item 1: a server started with --token-file answers /api only with its token. The page asks for it
+// once, on the first 401, keeps it for the tab and sends it on every request: the lists, a job, its pictures.
+describe('a server that asks for a token', { timeout: 600_000 }, () => {
+  const TOKEN = 'page-test-token-0123456789';
+  const prompts = [];
+  let tokenServer;
+  let tokenDir;
+  let context;
+  let tab;
+
+  before(async () => {
+    tokenDir = fs.mkdtempSync(path.join(os.tmpdir(), 'facetlight-token-'));
+    fs.writeFileSync(path.join(tokenDir, 'token'), `${TOKEN}\n`);
+    tokenServer = await startServer(['--token-file', path.join(tokenDir, 'token')]);
+    context = await chromium.launchPersistentContext(path.join(tokenDir, 'chromium'), {
+      executablePath: chromiumPath,
+      headless: true,
+      viewport: DESKTOP,
+      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+        '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+    });
+    tab = context.pages()[0] || await context.newPage();
+    tab.setDefaultTimeout(30_000);
+    tab.on('dialog', (dialog) => {
+      prompts.push(dialog.message());
+      dialog.accept(TOKEN);
+    });
+    await tab.goto(`${tokenServer.url}/`);
+  });
+
+  after(async () => {
+    if (context) await context.close();
+    if (tokenServer) {
+      tokenServer.process.kill('SIGKILL');
+      fs.rmSync(tokenServer.dataDir, { recursive: true, force: true });
+    }
+    if (tokenDir) fs.rmSync(tokenDir, { recursive: true, force: true });
+  });
+
+  test('asks for the token once, then lists the shapes, runs a job and shows its pictures', async () => {
+    assert.equal((await fetch(`${tokenServer.url}/api/meshes`)).status, 401);
+    await tab.waitForSelector('#f-mesh option:not([value=""])', { state: 'attached' });
+    assert.equal(prompts.length, 1, `asked ${prompts.length} times: ${prompts.join(' | ')}`);
+    assert.match(prompts[0], /token/);
+    assert.equal(await tab.evaluate(() => sessionStorage.getItem('facetlight-token')), TOKEN);
+    await fillSmallJob({}, tab);
+    await tab.click('#submit-button');
+    await tab.waitForSelector('#result-body .figures', { timeout: JOB_TIMEOUT_MS });
+    const pics = await picturesLoaded('#result-body .pictures', tab);
+    assert.equal(pics.length, 3);
+    for (const p of pics) {
+      assert.ok(p.width > 0, `${p.src} did not load`);
+      assert.match(p.src, /^blob:/, 'fetched with the token');
+    }
+    await tab.reload();
+    await tab.waitForSelector('#f-mesh option:not([value=""])', { state: 'attached' });
+    assert.equal(prompts.length, 1, 'asked again after a reload in the same tab');
   });
 });

@@ -17,6 +17,27 @@ if grep -q '^  none  bow-tie' "$dir/summary.txt"; then
   exit 1
 fi
 
+# A mesh with no facet facing up is turned so its largest faces up, and the statistics say so; --keep-frame
+# keeps it as it is (docs/gemcad.md). A tetrahedron standing on a vertex.
+cat >"$dir/tetra.obj" <<'OBJ'
+v 1 1 1
+v -1 -1 1
+v -1 1 -1
+v 1 -1 -1
+f 1 2 4
+f 1 3 2
+f 1 4 3
+f 2 3 4
+OBJ
+"$tool" trace --mesh "$dir/tetra.obj" --photons 2000 --no-view --json "$dir/tetra.json" >/dev/null
+"$tool" trace --mesh "$dir/tetra.obj" --photons 2000 --no-view --keep-frame --json "$dir/kept.json" >/dev/null
+python3 - "$dir/tetra.json" "$dir/kept.json" <<'PY'
+import json, sys
+turned, kept = (json.load(open(p))["mesh"]["frame"] for p in sys.argv[1:3])
+assert turned["file_orientation"] is False and turned["turned_deg"] > 1, turned
+assert kept["file_orientation"] is True and "table_facet" not in kept, kept
+PY
+
 "$tool" trace "${small[@]}" --json >"$dir/stdout.json"
 "$tool" trace "${small[@]}" --json - >"$dir/dash.json"
 "$tool" trace "${small[@]}" --json "$dir/file.json" --csv "$dir/facets.csv" >"$dir/with-file.txt"

@@ -37,6 +37,30 @@ grep -q '"mean_separation_deg_stderr"' "$dir/fire/sweep.json"
 grep -q '"figure": "coloured_return_weighted"' "$dir/fire/best.json"
 test -s "$dir/fire/curves.png"
 
+# A real GemCad design's tiers (issue 27): GemCad's own standard round brilliant for quartz. A search over two
+# tiers writes best.asc, which opens again with the design's 73 facets and the searched tier's slope measured
+# back.
+design=$(dirname "$0")/../data/gemcad/SRB.asc
+"$tool" sweep "$design" --vary tier:1=42.5:43.5:0.5 --vary tier:A=33,35 --photons 1500 --threads 2 --no-view \
+  --maximize weighted_return --refine-rounds 0 --out "$dir/design" >"$dir/design.txt"
+grep -q 'best.asc' "$dir/design.txt"
+test -s "$dir/design/map_weighted_return.png"
+head -1 "$dir/design/best.asc" | grep -q '^GemCad 5.0'
+"$tool" info --mesh "$dir/design/best.asc" --json >"$dir/best_info.json"
+python3 - "$dir/best_info.json" "$dir/design/best.json" <<'PY'
+import json, sys
+info = json.load(open(sys.argv[1]))
+best = json.load(open(sys.argv[2]))["best"]["values"]
+# Steeper main pavilion tiers keep every facet (a shallower one than 42.5 cuts tier 2 away).
+assert info["facet_count"] == 73, info["facet_count"]
+tiers = {t["name"]: t for t in info["cutting_sheet"]["tiers"]}
+assert sum(t["facets_cut"] for t in tiers.values()) == 73
+for name, key in (("1", "tier:1"), ("A", "tier:A")):
+    assert abs(abs(tiers[name]["angle_deg"]) - best[key]) < 1e-6, (tiers[name], best)
+    assert abs(tiers[name]["measured_angle_deg"] - tiers[name]["angle_deg"]) < 0.01, tiers[name]
+assert info["frame"]["file_orientation"] is True
+PY
+
 fails() {  # fails EXPECTED-MESSAGE ARGS...: the tool must exit non-zero and say EXPECTED-MESSAGE
   local expected=$1
   shift
@@ -59,4 +83,6 @@ fails "^facetlight: .*--maximise; did you mean '--maximize'?" round_brilliant --
 fails "maximize: the figure coloured_share is measured by a fire trace" round_brilliant --vary pavilion=40,41 \
   --maximize coloured_share
 fails "figure: .*turn it on (--fire" round_brilliant --vary pavilion=40,41 --figure mean_separation_deg
+fails "SRB has no parameter 'tier:P9'" "$design" --vary tier:1=40,41 --set tier:P9=30
+fails "neither a parameter of SRB" "$design" --vary tier:X=40,41
 echo "cli sweep: ok"

@@ -1,10 +1,12 @@
 // libFuzzer entry point for the checks every request passes before its route (server/request_guard.h): the
 // input is a request head, "METHOD PATH" then "Name: value" lines, as httplib hands it over. Any refusal is
-// a fine answer; a crash, a sanitizer report or a refusal without a status in 400-499 is a finding.
+// a fine answer; a crash, a sanitizer report or a refusal without a status in 400-499 is a finding, and so is
+// an /api request let through by a server with a token without carrying it.
 #include <cstdint>
 #include <cstdlib>
 #include <string_view>
 
+#include "bearer_token.h"
 #include "request_guard.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -38,6 +40,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     if (const auto refusal = checkRequest(req, rules);
         refusal && (refusal->status < 400 || refusal->status > 499))
+        std::abort();
+    static const RequestRules withToken = [] {
+        RequestRules r = rules;
+        r.token = "fuzz-token-0123456789";
+        return r;
+    }();
+    const auto refusal = checkRequest(req, withToken);
+    if (refusal && (refusal->status < 400 || refusal->status > 499)) std::abort();
+    if (!refusal && (req.path == "/api" || req.path.starts_with("/api/")) &&
+        !bearerMatches(req.get_header_value("Authorization"), withToken.token))
         std::abort();
     if (escapeForLog(req.path).find_first_of("\n\r\"") != std::string::npos) std::abort();
     return 0;

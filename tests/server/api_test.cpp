@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <regex>
 #include <set>
@@ -250,9 +251,19 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     ASSERT_TRUE(head);
     EXPECT_EQ(head->status, 206);
     EXPECT_EQ(head->body, "id,");
+    // Past the end: a problem, with the file's length (cpp-httplib gave an empty text/csv body).
     auto past = client_->Get("/api/jobs/" + id + "/stats.csv", {{"Range", "bytes=99999999-"}});
-    ASSERT_TRUE(past);
-    EXPECT_EQ(past->status, 416);
+    expectProblem(past, 416, "Range");
+    EXPECT_EQ(past->get_header_value("Content-Range"), "bytes */" + std::to_string(csv->body.size()));
+    // Only result files are served in ranges: a problem or a JSON document comes whole (it was cut to the
+    // range).
+    auto unknown =
+        client_->Get("/api/jobs/0123456789abcdef0123456789abcdef/stats.csv", {{"Range", "bytes=0-9"}});
+    expectProblem(unknown, 404);
+    auto list = client_->Get("/api/jobs", {{"Range", "bytes=0-9"}});
+    ASSERT_TRUE(list);
+    EXPECT_EQ(list->status, 200);
+    EXPECT_FALSE(json::parse(list->body, nullptr, false).is_discarded()) << list->body;
     for (const char* png : {"render.png", "heatmap.png", "angular.png"}) {
         auto p = client_->Get("/api/jobs/" + id + "/" + png);
         ASSERT_TRUE(p && p->status == 200) << png;
@@ -658,6 +669,33 @@ TEST_F(FullDiskTest, BelowMinFreeNewWorkIsRefusedAndQueuedJobsFailWhileReadsGoOn
     EXPECT_EQ(client_->Delete("/api/jobs/" + done)->status, 204);
 }
 
+// Issue 31, item 10: with --min-free 0 a disk without a free byte said "ok"; it takes nothing, so /healthz
+// says why with 503. Below --min-free with room left, it stays 200 and degraded.
+TEST_F(FullDiskTest, HealthIs503WhenTheDiskTakesNoMoreWritesWhateverMinFree) {
+    startKeepingNothingFree();
+    auto ok = client_->Get("/healthz");
+    ASSERT_TRUE(ok);
+    EXPECT_EQ(ok->status, 200);
+    simulatedFullDisk().files = true;
+    auto full = client_->Get("/healthz");
+    ASSERT_TRUE(full);
+    EXPECT_EQ(full->status, 503);
+    const json h = json::parse(full->body);
+    EXPECT_EQ(h["status"], "degraded");
+    EXPECT_EQ(h["storage"]["state"], "full") << h;
+    EXPECT_NE(h["storage"]["detail"].get<std::string>().find("no free byte"), std::string::npos) << h;
+    EXPECT_EQ(h["storage"]["detail"].get<std::string>().find(dir_.string()), std::string::npos) << h;
+    simulatedFullDisk().files = false;
+    stopService();
+    ServiceLimits limits;
+    limits.minFreeBytes = uint64_t(1) << 62;  // more than any disk: short of --min-free, with room
+    start(limits);
+    auto shortOf = client_->Get("/healthz");
+    ASSERT_TRUE(shortOf);
+    EXPECT_EQ(shortOf->status, 200);
+    EXPECT_EQ(json::parse(shortOf->body)["storage"]["state"], "full");
+}
+
 TEST_F(FullDiskTest, LeftoversAreRemovedAtStart) {
     const std::string id = submitOk(smallJob());
     ASSERT_EQ(waitFinished(id)["state"], "succeeded");
@@ -728,6 +766,56 @@ TEST_F(ServiceTest, MeshesListAndUpload) {
             "POST /api/meshes HTTP/1.1\r\nHost: localhost\r\nContent-Length: 17000000\r\n\r\nv 0 0 0\n"),
         413);
     expectProblem(submit({{"mesh", "0123456789abcdef0123456789abcdef"}, {"photons", 10}}), 422, "mesh");
+}
+
+// Issue 31, item 10: uploads can be deleted, except under a queued or running job, and take a bounded space.
+TEST_F(ServiceTest, MeshesAreDeletedUnlessAJobUsesThem) {
+    auto up = client_->Post("/api/meshes?name=cube.obj", kCubeObj, "application/octet-stream");
+    ASSERT_TRUE(up && up->status == 201);
+    const std::string mesh = json::parse(up->body)["mesh"];
+    json job = longJob();
+    job["mesh"] = mesh;
+    const std::string running = submitOk(job);
+    const std::string queued = submitOk(job);
+    waitState(running, "running");
+    expectProblem(client_->Delete("/api/meshes/" + mesh), 409);
+    client_->Post("/api/jobs/" + running + "/cancel");
+    EXPECT_EQ(waitFinished(running)["state"], "canceled");
+    expectProblem(client_->Delete("/api/meshes/" + mesh), 409);  // the queued one still names it
+    client_->Post("/api/jobs/" + queued + "/cancel");
+    EXPECT_EQ(waitFinished(queued)["state"], "canceled");
+    auto del = client_->Delete("/api/meshes/" + mesh);
+    ASSERT_TRUE(del);
+    EXPECT_EQ(del->status, 204) << del->body;
+    EXPECT_EQ(json::parse(client_->Get("/api/meshes")->body)["uploaded"].size(), 0u);
+    EXPECT_TRUE(fs::is_empty(dir_ / "data" / "meshes"));
+    expectProblem(client_->Delete("/api/meshes/" + mesh), 404);
+    expectProblem(submit({{"mesh", mesh}, {"photons", 10}}), 422, "mesh");  // its stone is forgotten too
+    EXPECT_EQ(status(running)["state"], "canceled");                        // the jobs that used it stay
+}
+
+TEST_F(ServiceTest, UploadedMeshesTakeAtMostMaxMeshStore) {
+    stopService();
+    ServiceLimits limits;
+    const size_t cube = std::string(kCubeObj).size();
+    limits.maxMeshStoreBytes = 2 * cube + cube / 2;
+    start(limits);
+    const auto upload = [&] {
+        return client_->Post("/api/meshes?name=cube.obj", kCubeObj, "application/octet-stream");
+    };
+    auto first = upload();
+    ASSERT_TRUE(first && first->status == 201);
+    ASSERT_EQ(upload()->status, 201);
+    auto third = upload();
+    expectProblem(third, 507, "file");
+    EXPECT_NE(json::parse(third->body)["detail"].get<std::string>().find(
+                  "--max-mesh-store of " + std::to_string(limits.maxMeshStoreBytes) + " bytes"),
+              std::string::npos)
+        << third->body;
+    EXPECT_EQ(json::parse(client_->Get("/api/meshes")->body)["uploaded"].size(), 2u);
+    ASSERT_EQ(client_->Delete("/api/meshes/" + json::parse(first->body)["mesh"].get<std::string>())->status,
+              204);
+    EXPECT_EQ(upload()->status, 201);  // deleting made room
 }
 
 // A job that gives no name is named by its design and the proportions it changes, in its status and its
@@ -847,6 +935,60 @@ TEST_F(ServiceTest, SweepSearchLinksTheBestDesign) {
     auto obj = client_->Get(done["links"]["best_obj"].get<std::string>());
     ASSERT_TRUE(obj && obj->status == 200);
     EXPECT_EQ(obj->body.rfind("# facetlight cut round_brilliant", 0), 0u) << obj->body.substr(0, 80);
+}
+
+// Issue 27: an uploaded GemCad design lists its tiers, a search over two of them runs over HTTP, and its
+// best design comes back as .asc that uploads again as the same kind of stone.
+TEST_F(ServiceTest, UploadedDesignTiersAreSweptAndTheBestComesBackAsAsc) {
+    std::ifstream in(std::string(FACETLIGHT_SOURCE_DIR) + "/tests/data/brilliant.asc", std::ios::binary);
+    const std::string asc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    auto up = client_->Post("/api/meshes?name=brilliant.asc", asc, "application/octet-stream");
+    ASSERT_TRUE(up);
+    ASSERT_EQ(up->status, 201) << up->body;
+    const json design = json::parse(up->body);
+    ASSERT_EQ(design["tiers"].size(), 5u) << design.dump();
+    EXPECT_EQ(design["tiers"][0]["parameter"], "tier:P1");
+    EXPECT_EQ(design["tiers"][0]["angle_deg"], 41);
+    EXPECT_EQ(design["frame"]["file_orientation"], true);
+
+    json job = {{"mesh", design["mesh"]},
+                {"photons", 1500},
+                {"threads", 2},
+                {"viewer", {{"enabled", false}}},
+                {"sweep",
+                 {{"axes", {{{"name", "tier:P1"}, {"from", 40}, {"to", 42}, {"step", 1}},
+                            {{"name", "tier:C1"}, {"values", {33, 35}}}}},
+                  {"maximize", "weighted_return"},
+                  {"refine_rounds", 1}}}};
+    const json done = waitFinished(submitOk(job));
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    EXPECT_EQ(done["name"], "brilliant.asc, sweep of tier:P1 × tier:C1");
+    const json sweep = getJson(done["links"]["sweep"]);
+    ASSERT_EQ(sweep["points"].size(), 6u);
+    EXPECT_EQ(sweep["points"][0]["values"]["tier:P1"], 40);
+    auto best = client_->Get(done["links"]["best_asc"].get<std::string>());
+    ASSERT_TRUE(best && best->status == 200);
+    EXPECT_EQ(best->body.rfind("GemCad 5.0\n", 0), 0u) << best->body.substr(0, 80);
+    auto again = client_->Post("/api/meshes?name=best.asc", best->body, "application/octet-stream");
+    ASSERT_TRUE(again);
+    ASSERT_EQ(again->status, 201) << again->body;
+    EXPECT_EQ(json::parse(again->body)["facet_count"], design["facet_count"]);
+
+    // One point of it traced on its own, as the page's sweep chart does when a point is clicked: `cut` holds
+    // the design's tier slopes.
+    const json point = waitFinished(submitOk(
+        {{"mesh", design["mesh"]}, {"photons", 1500}, {"viewer", {{"enabled", false}}}, {"cut", {{"tier:P1", 42}}}}));
+    ASSERT_EQ(point["state"], "succeeded") << point.dump();
+    EXPECT_EQ(point["name"], "brilliant.asc tier:P1 42");
+    const json stats = getJson(point["links"]["stats"]);
+    EXPECT_NEAR(stats["cutting_sheet"]["tiers"][0]["measured_angle_deg"].get<double>(), -42, 1e-6);
+    EXPECT_EQ(stats["material"]["source"], "design file");
+
+    // A tier the design lacks is refused at submission, naming the axis or the cut.
+    job["sweep"]["axes"][0]["name"] = "tier:P9";
+    expectProblem(submit(job), 422, "sweep.axes[0]");
+    expectProblem(submit({{"mesh", design["mesh"]}, {"photons", 1500}, {"cut", {{"tier:P9", 42}}}}), 422,
+                  "cut.tier:P9");
 }
 
 TEST_F(ServiceTest, SweepCancelsAndForgetsItsPoints) {

@@ -33,21 +33,24 @@ def free_port():
 
 
 class Server:
-    def __init__(self, binary, work, *extra, log_dir=None):
+    def __init__(self, binary, work, *extra, log_dir=None, host="127.0.0.1", per_peer=MAX_PER_PEER,
+                 request_timeout=REQUEST_TIMEOUT_S):
         self.port = free_port()
+        self.disk_full = False  # on a full disk /healthz may answer 503: nothing can be written
         os.makedirs(os.path.join(work, "meshes"), exist_ok=True)
         self.log_path = os.path.join(log_dir or work, "server.log")
         self.log = open(self.log_path, "ab")
         self.proc = subprocess.Popen(
-            [binary, "--host", "127.0.0.1", "--port", str(self.port), "--data", os.path.join(work, "data"),
+            [binary, "--host", host, "--port", str(self.port), "--data", os.path.join(work, "data"),
              "--meshes", os.path.join(work, "meshes"), "--web", os.path.join(work, "web"), "--cores", "1",
-             "--http-threads", str(HTTP_THREADS), "--max-connections-per-peer", str(MAX_PER_PEER),
-             "--request-timeout", str(REQUEST_TIMEOUT_S), "--max-body", str(MAX_BODY), *extra],
+             "--http-threads", str(HTTP_THREADS), "--max-connections-per-peer", str(per_peer),
+             "--request-timeout", str(request_timeout), "--max-body", str(MAX_BODY), *extra],
             stdout=self.log, stderr=self.log)
         deadline = time.time() + 20
         while time.time() < deadline:
             try:
-                if self.request(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n\r\n", timeout=1)[0] == 200:
+                # 503: up, on a disk that takes no more writes.
+                if self.request(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n\r\n", timeout=1)[0] in (200, 503):
                     return
             except OSError:
                 time.sleep(0.05)
@@ -166,6 +169,8 @@ def cases():
         ("unknown job png", http("GET", "/api/jobs/%s/render.png" % ID), 404, None),
         ("cancel unknown", http("POST", "/api/jobs/%s/cancel" % ID), 404, None),
         ("delete unknown", http("DELETE", "/api/jobs/" + ID), 404, None),
+        ("delete unknown mesh", http("DELETE", "/api/meshes/" + ID), 404, None),
+        ("delete shipped mesh", http("DELETE", "/api/meshes/round_brilliant"), 404, None),
         ("id not hex", http("GET", "/api/jobs/ZZZZ"), 404, None),
         ("traversal", http("GET", "/api/jobs/../../etc/passwd"), {400, 404}, None),
         ("encoded traversal", http("GET", "/api/jobs/%2e%2e%2f%2e%2e%2fetc%2fpasswd"), {400, 404}, None),
@@ -278,6 +283,7 @@ def cases():
         ("multipart upload from evil origin", multipart(CUBE_OBJ, **EVIL), 403, None),
         ("cancel from evil origin", http("POST", "/api/jobs/%s/cancel" % ID, headers=EVIL), 403, None),
         ("delete from evil origin", http("DELETE", "/api/jobs/" + ID, headers=EVIL), 403, None),
+        ("delete mesh from evil origin", http("DELETE", "/api/meshes/" + ID, headers=EVIL), 403, None),
         ("list from evil origin", http("GET", "/api/jobs", headers=EVIL), 200, None),
         ("form-encoded job", post_job(job(), "application/x-www-form-urlencoded"), 415, None),
         ("text/plain job", post_job(job(), "text/plain"), 415, None),
@@ -365,7 +371,7 @@ def healthz_fast(server, name):
         status = server.request(http("GET", "/healthz"), timeout=1)[0]
     except OSError as e:
         return fail(name, "/healthz did not answer within 1 s afterwards (%s)" % e)
-    if status != 200:
+    if status not in ((200, 503) if server.disk_full else (200,)):
         fail(name, "/healthz answered %d afterwards" % status)
     return time.time() - start
 
@@ -531,6 +537,43 @@ def expect(server, name, raw, wanted):
     return status, body
 
 
+def run_slow_clients_across_peers(binary, work):
+    """Issue 31, item 3: slow clients from 5 addresses, each under the per-peer cap, together more than
+    --max-http-threads: /healthz from another address must still answer within 1 s every time (it waited for a
+    slow client's deadline)."""
+    threads, per_peer, peers = 16, 8, 5
+    server = Server(binary, os.path.join(work, "slow-peers"), "--max-http-threads", str(threads),
+                    per_peer=per_peer, request_timeout=20)
+    slow = []
+    try:
+        for peer in range(2, 2 + peers):
+            for _ in range(per_peer):
+                s = socket.socket()
+                s.bind(("127.0.0.%d" % peer, 0))
+                s.settimeout(5)
+                s.connect(("127.0.0.1", server.port))
+                s.sendall(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\n")
+                slow.append(s)
+        time.sleep(0.3)
+        start, worst, probes = time.time(), 0, 0
+        while time.time() - start < 4:
+            for s in slow:
+                try:
+                    s.sendall(b"X-Slow: 1\r\n")
+                except OSError:
+                    pass  # ended by the server to free its thread: what should happen
+            worst = max(worst, healthz_fast(server, "/healthz beside slow clients of %d addresses" % peers) or 0)
+            probes += 1
+            time.sleep(0.25)
+        print("  /healthz beside %d slow clients from %d addresses (%d threads at most): %d probes, slowest %.0f ms"
+              % (len(slow), peers, threads, probes, worst * 1000))
+    finally:
+        for s in slow:
+            s.close()
+        server.stop()
+    return probes
+
+
 def run_allowed_host(binary, work):
     """--allowed-host adds a name the server is reached by (behind a proxy, or on the network)."""
     server = Server(binary, os.path.join(work, "allowed"), "--allowed-host", "Gems.Example")
@@ -544,6 +587,93 @@ def run_allowed_host(binary, work):
     finally:
         server.stop()
     return 4
+
+
+TOKEN = "t0ken-for-the-hostile-suite-0123"
+
+
+def refuses_to_start(binary, name, args, why):
+    """The server exits at once with a non-zero status, saying `why` on stderr."""
+    try:
+        done = subprocess.run([binary, "--port", str(free_port()), *args], capture_output=True, timeout=10)
+    except subprocess.TimeoutExpired:
+        return fail(name, "the server started")
+    if done.returncode == 0 or why not in done.stderr.decode("latin-1"):
+        fail(name, "exit %d, stderr %r (expected %r)" % (done.returncode, done.stderr[-300:], why))
+
+
+def run_bearer_token(binary, work):
+    """Issue 31, item 1: with --token-file every /api request needs the token; /healthz and the page do not;
+    a --host other than loopback needs a token file or an explicit --no-auth."""
+    folder = os.path.join(work, "token")
+    os.makedirs(os.path.join(folder, "web"))
+    with open(os.path.join(folder, "web", "index.html"), "w") as f:
+        f.write("<!doctype html><title>facetlight</title>")
+    token_file = os.path.join(folder, "token")
+    with open(token_file, "w") as f:
+        f.write(TOKEN + "\n")
+    empty = os.path.join(folder, "empty")
+    open(empty, "w").close()
+    refuses_to_start(binary, "--host 0.0.0.0 without a token", ["--host", "0.0.0.0"], "--token-file")
+    refuses_to_start(binary, "--host 192.0.2.1 without a token", ["--host", "192.0.2.1"], "--no-auth")
+    refuses_to_start(binary, "empty token file", ["--token-file", empty], "empty")
+    refuses_to_start(binary, "missing token file", ["--token-file", os.path.join(folder, "missing")], "not a file")
+    refuses_to_start(binary, "token file and --no-auth", ["--token-file", token_file, "--no-auth"], "excludes")
+    n = 5
+    bearer = {"Authorization": "Bearer " + TOKEN}
+    server = Server(binary, folder, "--token-file", token_file, host="0.0.0.0")
+    try:
+        expect(server, "job list without the token", http("GET", "/api/jobs"), 401)
+        headers = server.request(http("GET", "/api/jobs"))[1]
+        if not headers.get("www-authenticate", "").startswith("Bearer"):
+            fail("job list without the token", "WWW-Authenticate is %r" % headers.get("www-authenticate"))
+        expect(server, "job list with another token",
+               http("GET", "/api/jobs", headers={"Authorization": "Bearer " + TOKEN[:-1] + "4"}), 401)
+        expect(server, "job list with the token as Basic",
+               http("GET", "/api/jobs", headers={"Authorization": "Basic " + TOKEN}), 401)
+        expect(server, "job without the token", post_job(job()), 401)
+        expect(server, "upload without the token", upload(CUBE_OBJ), 401)
+        expect(server, "result file without the token", http("GET", "/api/jobs/%s/render.png" % ID), 401)
+        expect(server, "result file with the token", http("GET", "/api/jobs/%s/render.png" % ID, headers=bearer),
+               404)
+        expect(server, "openapi without the token", http("GET", "/api/openapi.json"), 401)
+        expect(server, "job list with the token", http("GET", "/api/jobs", headers=bearer), 200)
+        expect(server, "job with the token", post_job(job(), **bearer), 202)
+        expect(server, "healthz without the token", http("GET", "/healthz"), 200)
+        expect(server, "page without the token", http("GET", "/"), 200)
+        n += 12
+    finally:
+        server.stop()
+    server = Server(binary, os.path.join(work, "no-auth"), "--no-auth", host="0.0.0.0")
+    try:
+        expect(server, "job list with --no-auth", http("GET", "/api/jobs"), 200)
+        n += 1
+    finally:
+        server.stop()
+    return n
+
+
+def run_mesh_store(binary, work):
+    """Issue 31, item 10: uploads take at most --max-mesh-store together (507 beyond, naming it); a mesh can be
+    deleted (204), but not while a queued or running job names it (409)."""
+    server = Server(binary, os.path.join(work, "mesh-store"), "--max-mesh-store", str(2 * len(CUBE_OBJ) + 10))
+    try:
+        first = json.loads(expect(server, "first upload", upload(CUBE_OBJ), 201)[1])["mesh"]
+        second = json.loads(expect(server, "second upload", upload(CUBE_OBJ), 201)[1])["mesh"]
+        status, body = expect(server, "upload past --max-mesh-store", upload(CUBE_OBJ), 507)
+        if status == 507 and "--max-mesh-store" not in json.loads(body)["detail"]:
+            fail("upload past --max-mesh-store", "the problem does not name the limit: %.300r" % body)
+        expect(server, "delete an upload", http("DELETE", "/api/meshes/" + first), 204)
+        expect(server, "delete it again", http("DELETE", "/api/meshes/" + first), 404)
+        expect(server, "upload after a delete", upload(CUBE_OBJ), 201)
+        running = json.loads(server.request(post_job(job(mesh=second, photons=100000000)))[2])["id"]
+        expect(server, "delete a mesh a job uses", http("DELETE", "/api/meshes/" + second), 409)
+        server.request(http("POST", "/api/jobs/%s/cancel" % running))
+        wait_finished(server, running)
+        expect(server, "delete it once the job ended", http("DELETE", "/api/meshes/" + second), 204)
+    finally:
+        server.stop()
+    return 8
 
 
 def run_durable_cancel(binary, work):
@@ -638,6 +768,13 @@ def run_real_full_disk(binary, work):
             if wait_finished(server, done)["state"] != "succeeded":
                 fail("real full disk", "the first job did not succeed")
             fill(os.path.join(disk, "filler"))
+            # Issue 31, item 10: with --min-free 0 a disk without a free byte said "ok".
+            time.sleep(1.1)  # the write probe's answer is kept a second
+            status, _, body = server.request(http("GET", "/healthz"))
+            health = json.loads(body)
+            if status != 503 or health["storage"]["state"] != "full" or not health["storage"].get("detail"):
+                fail("/healthz on a really full disk with --min-free 0", "%d %.300r" % (status, health))
+            server.disk_full = True
             status, body = expect(server, "job on a really full disk", post_job(rendered), {202, 507})
             if status == 202:  # the database had room: then the results have none
                 end = wait_finished(server, json.loads(body)["id"])
@@ -653,10 +790,12 @@ def run_real_full_disk(binary, work):
             server.stop()
         fill(os.path.join(disk, "filler"))  # what the delete freed
         server = Server(binary, disk, log_dir=work)  # starts on a full disk, under the default --min-free
+        server.disk_full = True
         try:
-            health = server.get_json("/healthz")
-            if health["status"] != "degraded" or health["storage"]["state"] != "full":
-                fail("start on a full disk", "/healthz says %.300r" % health)
+            status, _, body = server.request(http("GET", "/healthz"))
+            health = json.loads(body)
+            if status != 503 or health["status"] != "degraded" or health["storage"]["state"] != "full":
+                fail("start on a full disk", "/healthz says %d %.300r" % (status, health))
             expect(server, "job after a start on a full disk", post_job(job()), 507)
             n += 2
         finally:
@@ -683,6 +822,39 @@ def run_real_full_disk(binary, work):
     return n
 
 
+def run_no_inodes(binary, work):
+    """A disk with bytes free but no inode left takes no new file: /healthz must say so (its write probe), not
+    "ok" (needs root to mount a tmpfs; else skipped)."""
+    disk = os.path.join(work, "tmpfs-inodes")
+    os.makedirs(disk)
+    if subprocess.call(["mount", "-t", "tmpfs", "-o", "size=8m,nr_inodes=200", "tmpfs", disk],
+                       stderr=subprocess.DEVNULL) != 0:
+        print("  disk without inodes: skipped (cannot mount a tmpfs here)")
+        return 0
+    try:
+        server = Server(binary, disk, "--min-free", "0", log_dir=work)
+        try:
+            for i in range(1000):
+                try:
+                    open(os.path.join(disk, "inode-%d" % i), "w").close()
+                except OSError as e:
+                    if e.errno != errno.ENOSPC:
+                        raise
+                    break
+            time.sleep(1.1)  # the write probe's answer is kept a second
+            status, _, body = server.request(http("GET", "/healthz"))
+            health = json.loads(body)
+            if status != 503 or "takes no more writes" not in health["storage"].get("detail", ""):
+                fail("/healthz on a disk without inodes", "%d %.300r" % (status, health))
+            if health["storage"]["free_bytes"] == 0:
+                fail("/healthz on a disk without inodes", "no byte free either: the probe was not what told")
+        finally:
+            server.stop()
+    finally:
+        subprocess.call(["umount", "-l", disk])
+    return 1
+
+
 def main():
     binary = sys.argv[1]
     work = tempfile.mkdtemp()
@@ -703,10 +875,14 @@ def main():
     finally:
         server.stop()
     try:
+        total += run_slow_clients_across_peers(binary, work)
         total += run_allowed_host(binary, work)
+        total += run_bearer_token(binary, work)
+        total += run_mesh_store(binary, work)
         total += run_durable_cancel(binary, work)
         total += run_storage_guard(binary, work)
         total += run_real_full_disk(binary, work)
+        total += run_no_inodes(binary, work)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     print("  %d answers of API routes checked against the OpenAPI document" % check_documented(openapi))

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "request_guard.h"
@@ -161,4 +163,41 @@ TEST(RequestGuard, LogLinesCannotBeForged) {
     EXPECT_EQ(escapeForLog(std::string("a\0b", 3)), "a\\x00b");
     EXPECT_EQ(escapeForLog("\xc3\xa9"), "\\xc3\\xa9");
     EXPECT_EQ(escapeForLog(std::string(300, 'a'), 200), std::string(200, 'a') + "...");
+}
+
+// Issue 31, item 1: with a token, every /api request carries it; /healthz and the page do not need it.
+TEST(RequestGuard, ApiRequestsCarryTheBearerToken) {
+    RequestRules withToken = rules();
+    withToken.token = "s3cret-token-0123456789";
+    const auto check = [&](const std::string& method, const std::string& path, const std::string& auth) {
+        std::vector<std::pair<std::string, std::string>> headers;
+        if (!auth.empty()) headers.emplace_back("Authorization", auth);
+        return checkRequest(request(method, path, headers), withToken);
+    };
+    for (const std::string& path :
+         std::vector<std::string>{"/api/jobs", "/api/jobs/" + kId, "/api/jobs/" + kId + "/render.png",
+                                  "/api/openapi.json", "/api/nothing-here", "/api"}) {
+        const auto none = check("GET", path, "");
+        ASSERT_TRUE(none) << path;
+        EXPECT_EQ(none->status, 401) << path;
+        EXPECT_NE(
+            std::find(none->headers.begin(), none->headers.end(),
+                      std::pair<std::string, std::string>{"WWW-Authenticate", "Bearer realm=\"facetlight\""}),
+            none->headers.end());
+        EXPECT_FALSE(check("GET", path, "Bearer s3cret-token-0123456789")) << path;
+    }
+    EXPECT_FALSE(check("GET", "/api/jobs", "bearer  s3cret-token-0123456789 "));  // the scheme in any case
+    for (const char* wrong : {"Bearer s3cret-token-012345678", "Bearer s3cret-token-01234567890",
+                              "Bearer S3cret-token-0123456789", "Basic s3cret-token-0123456789",
+                              "s3cret-token-0123456789", "Bearer", "Bearer "}) {
+        const auto r = check("GET", "/api/jobs", wrong);
+        ASSERT_TRUE(r) << wrong;
+        EXPECT_EQ(r->status, 401) << wrong;
+    }
+    EXPECT_EQ(check("DELETE", "/api/jobs/" + kId, "")->status, 401);
+    EXPECT_FALSE(check("GET", "/healthz", ""));
+    EXPECT_FALSE(check("GET", "/index.html", ""));
+    EXPECT_FALSE(check("GET", "/apis.js", ""));
+    // Without a token nothing is asked.
+    EXPECT_EQ(statusOf(request("GET", "/api/jobs")), 0);
 }

@@ -3,7 +3,7 @@ import { api, jobUrl } from './api.js';
 import { FIGURES } from './constants.js';
 import { $, h } from './dom.js';
 import { fireCompare } from './fire.js';
-import { decimalsFor, fmtPctErr, shortId } from './format.js';
+import { decimalsFor, fmtNumber, fmtPctErr, shortId } from './format.js';
 import { pictures, scaleEnd } from './heatmap.js';
 import { jobName } from './meshes.js';
 import { jobSummary } from './progress.js';
@@ -86,6 +86,21 @@ function ranking(entries) {
     })));
 }
 
+// The design's size, weight and traced index, with a link to its faceting diagram (the result page's design
+// section has the whole sheet).
+function designSummary(e) {
+  const size = e.stats.size;
+  const m = e.stats.material;
+  const diagram = (e.job.links || {}).diagram;
+  if (!size && !m) return null;
+  const parts = [];
+  if (size) parts.push(`${fmtNumber(size.length_mm, 2)} × ${fmtNumber(size.width_mm, 2)} × ${fmtNumber(size.depth_mm, 2)} mm`);
+  if (size && size.carats != null) parts.push(`${fmtNumber(size.carats, 2)} ct`);
+  if (m) parts.push(`n ${fmtNumber(m.n_d, 3)}${m.source === 'design file' ? ' (the design\'s own)' : ''}`);
+  return h('p', { class: 'compare-design' }, parts.join(' · '),
+    diagram ? [' · ', h('a', { href: diagram, target: '_blank', rel: 'noopener' }, 'faceting diagram')] : null);
+}
+
 function compareCards(entries) {
   // One colour scale for every heat-map, so that the same colour means the same share in each design.
   const commonScale = scaleEnd(Math.max(0, ...entries.flatMap((e) => (e.stats.facets || []).map((f) => f.leaving_share))));
@@ -99,6 +114,7 @@ function compareCards(entries) {
         h('p', { class: 'rank-meta' }, jobSummary(e.job.settings)),
         h('p', { class: 'compare-value' }, fmtPctErr(t.crown_return, t.crown_return_stderr), h('span', { class: 'muted' }, ' crown return')),
         pictures(e.job, entryName(e), e.stats, commonScale),
+        designSummary(e),
         regionTable(e.stats.regions || {}, `Light leaving each region, ${entryName(e)}`, true));
     })));
 }

@@ -1,6 +1,8 @@
 // Small DOM helpers: $ (one element), h('p', {class: 'x'}, 'text', child) and svg(...) for SVG elements, and a
 // form field's error (the element err-<field> beside it: the field is named by the API's dotted path). Text is
-// always put in as text, never as HTML.
+// always put in as text, never as HTML. An <img> of an /api picture is loaded with the server's token (api.js).
+
+import { setImageSource } from './api.js';
 
 export const $ = (selector, root = document) => root.querySelector(selector);
 
@@ -12,6 +14,7 @@ export function h(tag, attrs = {}, ...children) {
     else if (key === 'text') el.textContent = value;
     else if (key.startsWith('on')) el.addEventListener(key.slice(2), value);
     else if (key === 'style') el.style.cssText = value;
+    else if (key === 'src' && tag === 'img') setImageSource(el, String(value));
     else el.setAttribute(key, value === true ? '' : String(value));
   }
   for (const child of children.flat(Infinity)) {

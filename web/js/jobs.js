@@ -172,21 +172,31 @@ function alertStatus(message) {
   el.textContent = message;
 }
 
+let degraded = false;  // /healthz answered 503: shown until it answers 200
 let lastHealth = '';
 export async function refreshHealth() {
   try {
     const health = await api('/healthz');
     lastHealth = `Service ready · ${health.cores} cores`;
+    degraded = false;
     setServerStatus(true);
     return health;
   } catch (e) {
-    setServerStatus(false, e.message);
-    return null;
+    // 503: the server answers, but its disk takes nothing more (storage.detail says why).
+    const storage = e.body && e.body.storage;
+    if (!storage) {
+      setServerStatus(false, e.message);
+      return null;
+    }
+    lastHealth = `Service degraded: ${storage.detail}`;
+    degraded = true;
+    setServerStatus(true);
+    return e.body;
   }
 }
 
 function setServerStatus(ok, message) {
   const el = $('#server-status');
-  el.classList.toggle('down', !ok);
+  el.classList.toggle('down', !ok || degraded);
   el.textContent = ok ? lastHealth || 'Service ready' : `Service unreachable: ${message}`;
 }

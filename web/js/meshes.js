@@ -50,6 +50,7 @@ export async function loadMeshes(select) {
   const preferred = [previous, 'round_brilliant'].find((m) => m && meshes.has(m));
   if (preferred) el.value = preferred;
   describeMesh();
+  document.dispatchEvent(new CustomEvent('meshes-loaded', { detail: list }));
   return list.shipped || [];
 }
 
@@ -69,6 +70,7 @@ export function describeMesh() {
   if (p.lower_half_angle_deg != null) parts.push(`lower halves ${fmtNumber(p.lower_half_angle_deg, 2)}°`);
   if (p.total_depth_pct != null) parts.push(`depth ${fmtNumber(p.total_depth_pct, 1)} %`);
   if (!m.convex) parts.push('non-convex');
+  if ((m.tiers || []).length) parts.push(`GemCad design: ${m.tiers.length} tiers to sweep`);
   hint.textContent = parts.join(' · ');
 }
 

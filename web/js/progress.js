@@ -50,7 +50,7 @@ export function lightText(settings) {
 
 export function jobSummary(settings) {
   if (!settings) return '';
-  const parts = [`${fmtInt(settings.photons)} photons`, humanize(settings.material || ''), lightText(settings)];
+  const parts = [`${fmtInt(settings.photons)} photons`, settings.material === 'auto' ? 'its design\'s index or diamond' : humanize(settings.material || ''), lightText(settings)];
   if (settings.dispersion === false) parts.push('no dispersion');
   return parts.filter(Boolean).join(' · ');
 }

@@ -1,6 +1,7 @@
 // One job's result: the figures, the pictures, the region and facet tables.
 import { api, jobUrl } from './api.js';
 import { FACET_COLUMNS, FIGURES, POLL_ACTIVE_MS, REGIONS } from './constants.js';
+import { designSection } from './design.js';
 import { $, h } from './dom.js';
 import { decimalsFor, fmtDuration, fmtInt, fmtNumber, fmtPct, fmtPctErr, fmtTime, humanize, shortId } from './format.js';
 import { fireSection } from './fire.js';
@@ -219,6 +220,7 @@ function resultPage(job, stats) {
       h('h2', { id: 'pictures-title' }, 'Pictures'), pictures(job, name, stats)),
     viewerSection(job, stats),
     fireSection(job, stats),
+    designSection(job, stats),
     h('div', { class: 'result-grid' },
       h('section', { class: 'card', 'aria-labelledby': 'regions-title' },
         h('h2', { id: 'regions-title' }, 'Where the light leaves'), regionTable(stats.regions || {}, 'Light leaving each region')),

@@ -70,16 +70,60 @@ export function initSweepForm() {
   second.addEventListener('change', sync);
   sync();
   form.addEventListener('submit', submitSweep);
+  $('#s-shape').addEventListener('change', syncSweepQuantities);
+  // The meshes list changes when the user uploads one (web/js/meshes.js).
+  document.addEventListener('meshes-loaded', (ev) => setSweepShapes(ev.detail.shipped || [], ev.detail.uploaded || []));
 }
 
-// The shapes of the cut library among the shipped meshes: a sweep builds its designs from their parameters.
-export function setSweepShapes(shipped) {
-  const names = shipped.filter((m) => !m.error).map((m) => m.mesh);
-  if (!names.length) return;
+// The quantities any stone can be swept over besides its own parameters (sweep_axis.h's trace axes).
+const TRACE_QUANTITIES = ['tilt', 'head_shadow', 'n'];
+// Every mesh the form offers, by its `mesh` name: a library shape's parameters, an upload's tiers.
+const sweepMeshes = new Map();
+
+// What the form may sweep: the shapes of the cut library (their parameters), and the user's uploads: a GemCad
+// design's tiers (tier:NAME, its slope) or, for a mesh, the trace settings only (docs/gemcad.md).
+export function setSweepShapes(shipped, uploaded = []) {
+  const shapes = shipped.filter((m) => !m.error && (m.parameters || []).length);
+  const designs = uploaded.filter((m) => !m.error);
+  if (!shapes.length && !designs.length) return;
   const el = $('#s-shape');
   const previous = el.value;
-  el.replaceChildren(...names.map((n) => h('option', { value: n }, humanize(n))));
-  el.value = names.includes(previous) ? previous : names[0];
+  sweepMeshes.clear();
+  for (const m of [...shapes, ...designs]) sweepMeshes.set(m.mesh, m);
+  el.replaceChildren(
+    h('optgroup', { label: 'Shapes of the cut library' }, shapes.map((m) => h('option', { value: m.mesh }, humanize(m.mesh)))),
+    designs.length ? h('optgroup', { label: 'Your designs and meshes' },
+      designs.map((m) => h('option', { value: m.mesh }, `${m.file_name || m.name}${(m.tiers || []).length ? ` (${m.tiers.length} tiers)` : ''}`))) : null);
+  el.value = sweepMeshes.has(previous) ? previous : (shapes[0] || designs[0]).mesh;
+  syncSweepQuantities();
+}
+
+// The quantities the chosen shape offers; choosing a design starts the first axis on its first tier.
+function syncSweepQuantities() {
+  const m = sweepMeshes.get($('#s-shape').value);
+  if (!m) return;
+  const tiers = m.tiers || [];
+  const own = tiers.length ? tiers.map((t) => t.parameter) : (m.parameters || []).map((p) => p.name);
+  $('#sweep-quantities').replaceChildren(...[...own, ...TRACE_QUANTITIES].map((q) => h('option', { value: q })));
+  const form = $('#sweep-form');
+  const first = form.elements['name-0'];
+  const known = new Set([...own, ...TRACE_QUANTITIES]);
+  if (tiers.length && !known.has(first.value)) {
+    const t = tiers[0];
+    first.value = t.parameter;
+    form.elements['from-0'].value = Math.max(1, Math.round((t.angle_deg - 1.5) * 4) / 4);
+    form.elements['to-0'].value = Math.min(89, Math.round((t.angle_deg + 1.5) * 4) / 4);
+    form.elements['step-0'].value = 0.5;
+    const second = form.elements['name-1'];
+    if (tiers[1] && !known.has(second.value)) {
+      second.value = tiers[1].parameter;
+      form.elements['from-1'].value = Math.max(1, Math.round((tiers[1].angle_deg - 2) * 4) / 4);
+      form.elements['to-1'].value = Math.min(89, Math.round((tiers[1].angle_deg + 2) * 4) / 4);
+      form.elements['step-1'].value = 1;
+    }
+  } else if (!tiers.length && !known.has(first.value)) {
+    first.value = own[0] || 'tilt';
+  }
 }
 
 function axisFromForm(form, i) {
@@ -167,7 +211,7 @@ async function pollSweep(id) {
   if (sweepView.best) $('#sweep-best').replaceChildren(bestCard(sweepView.best, points.axes));
   if (job.state === 'succeeded') {
     $('#sweep-links').replaceChildren(...Object.entries(job.links)
-      .filter(([k]) => ['sweep', 'sweep_csv', 'sweep_picture', 'best', 'best_obj'].includes(k))
+      .filter(([k]) => ['sweep', 'sweep_csv', 'sweep_picture', 'best', 'best_obj', 'best_asc'].includes(k))
       .map(([k, href]) => h('a', { class: 'button secondary small', href }, k.replace('_', ' '))));
   }
   if (job.state === 'queued' || job.state === 'running') sweepView.timer = setTimeout(() => pollSweep(id), POLL_ACTIVE_MS);
@@ -194,7 +238,9 @@ function bestCard(best, axes) {
       ` (${fmtNumber(d.photons, 0)} photons${best.constraints.length ? `; ${best.constraints.join(', ')}` : ''})`),
     h('p', { class: 'hint' }, ties ? `${ties} other design${ties === 1 ? '' : 's'} of the last round cannot be told apart from it at this photon count.`
       : 'No other design of the last round comes within its noise.'),
-    h('p', {}, 'Cut it: ', h('code', { class: 'best-command' }, `${d.command} --out best.obj`)),
+    // A library shape's best is a facetlight cut line; a design's is its tweaked .asc (docs/gemcad.md).
+    d.command ? h('p', {}, 'Cut it: ', h('code', { class: 'best-command' }, `${d.command} --out best.obj`))
+      : h('p', {}, 'The design with these tier angles: ', h('a', { href: jobUrl(sweepView.id, '/best.asc'), download: 'best.asc' }, 'best.asc'), ' (GemCad)'),
     h('button', { type: 'button', class: 'button secondary small', 'data-action': 'open-best', onclick: () => openBest(d) },
       'Open as a job'));
 }

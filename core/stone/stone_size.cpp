@@ -1,0 +1,25 @@
+#include "stone/stone_size.h"
+
+#include <cmath>
+
+#include "util/error.h"
+
+namespace facetlight {
+
+StoneSize stoneSize(const Stone& stone, double sizeMm, std::optional<double> densityGcm3) {
+    const double diameter = stone.proportions.diameter;
+    if (!(diameter > 0)) throw Error("stone '" + stone.name + "' has no girdle width to scale to a size");
+    if (!(sizeMm > 0) || !std::isfinite(sizeMm)) throw Error("the size must be a positive number of mm");
+    const double mm = sizeMm / diameter;
+    StoneSize s;
+    s.lengthMm = stone.proportions.length * mm;
+    s.widthMm = stone.proportions.width * mm;
+    s.depthMm = stone.bounds.extent().z * mm;
+    s.volumeMm3 = stone.volume() * mm * mm * mm;
+    const Vec3 block = stone.bounds.extent();
+    s.blockRetention = stone.volume() / (block.x * block.y * block.z);
+    if (densityGcm3) s.carats = s.volumeMm3 * 1e-3 * *densityGcm3 / 0.2;
+    return s;
+}
+
+}  // namespace facetlight

@@ -1,0 +1,21 @@
+#pragma once
+// A stone at a physical size (docs/gemcad.md, "Size and weight"): the mesh's units scaled so that its girdle
+// diameter (the width of a fancy shape) is `sizeMm`, as a job's size_mm says. Weight follows from a density.
+#include <optional>
+
+#include "stone/stone.h"
+
+namespace facetlight {
+
+struct StoneSize {
+    double lengthMm = 0, widthMm = 0, depthMm = 0;  // girdle outline's long and short extents; table to culet
+    double volumeMm3 = 0;
+    // The share of the smallest upright block around the stone that the stone keeps (a rough sawn to a block).
+    double blockRetention = 0;
+    std::optional<double> carats;  // with a density; 1 carat = 0.2 g (the metric carat, CGPM 1907)
+};
+
+// Throws Error when the stone has no girdle diameter to scale by or sizeMm is not positive.
+StoneSize stoneSize(const Stone& stone, double sizeMm, std::optional<double> densityGcm3);
+
+}  // namespace facetlight
