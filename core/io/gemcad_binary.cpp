@@ -11,6 +11,7 @@
 #include <string>
 
 #include "io/gemcad_design.h"
+#include "io/mesh_io.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -282,6 +283,22 @@ class GemCadBinaryParser {
 };
 
 }  // namespace
+
+bool looksLikeGemCadBinary(std::string_view bytes) {
+    // The first facet record: a finite plane, tier number 1, a name, an outline flag of 0 or 1.
+    try {
+        ByteReader in(bytes);
+        double n[3];
+        for (double& c : n) c = in.float64("");
+        if (!std::isfinite(n[0]) || !std::isfinite(n[1]) || !std::isfinite(n[2])) return false;
+        if (std::hypot(std::hypot(n[0], n[1]), n[2]) == 0 || in.int32("") != 1) return false;
+        in.text("");
+        const int32_t outline = in.int32("");
+        return outline == 0 || outline == 1;
+    } catch (const Error&) {
+        return false;
+    }
+}
 
 GemCadDesign parseGemCadBinary(std::string_view bytes, const MeshLimits& limits) {
     return GemCadBinaryParser(bytes, limits).parse();

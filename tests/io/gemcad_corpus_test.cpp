@@ -32,7 +32,9 @@ const CorpusDesign kCorpus[] = {
     {"astryx-star.asc", 10, 57, true}, {"smallest-square.asc", 4, 16, false},
 };
 
-void PrintTo(const CorpusDesign& d, std::ostream* os) { *os << d.file; }
+void PrintTo(const CorpusDesign& d, std::ostream* os) {
+    *os << d.file;
+}
 
 double toDegrees(double r) {
     return r * 180 / kPi;
@@ -83,41 +85,32 @@ TEST(GemCadCorpusTable, EveryCorpusDesignHasARow) {
     }
 }
 
-TEST_P(GemCadCorpus, OpensAsTheFileStates) {
-    const CorpusDesign& row = GetParam();
-    std::filesystem::path path;
-    for (const auto& p : test::corpusFiles(".asc"))
-        if (p.filename() == row.file) path = p;
-    if (path.empty()) GTEST_SKIP() << row.file << " is not in the corpus folder";
+namespace {
 
-    const test::AscFacts facts = test::readAscFacts(test::readWholeFile(path));
-    ASSERT_EQ(facts.tiers.size(), row.tiers) << "the test's reading of the file";
-    ASSERT_EQ(facts.facetCount(), row.facets) << "the test's reading of the file";
-
+// Opens a corpus file with loadStone and holds the stone to what the design's .asc states.
+void expectAsTheFileStates(const std::filesystem::path& path, const test::AscFacts& facts,
+                           const CorpusDesign& row) {
+    const std::string file = path.filename().string();
     Stone stone;
     try {
         stone = loadStone(path.string());
     } catch (const Error& e) {
-        FAIL() << row.file << " does not open: " << e.what();
+        FAIL() << file << " does not open: " << e.what();
     }
-    EXPECT_EQ(stone.facets.size(), row.facets) << row.file << ": facets in the stone, against the file's";
+    EXPECT_EQ(stone.facets.size(), row.facets) << file << ": facets in the stone, against the file's";
 
     // Each facet the file lists has its own facet in the stone, at the tier's slope and the index's azimuth.
     std::set<size_t> used;
     size_t wrong = 0;
     std::ostringstream firstWrong;
-    for (size_t t = 0; t < facts.tiers.size(); ++t) {
+    for (size_t t = 0; t < facts.tiers.size() && !stone.facets.empty(); ++t) {
         const test::AscTierFacts& tier = facts.tiers[t];
         for (double index : tier.indices) {
             const double azimuth = facts.azimuthDeg(index);
             const Vec3 want = fileNormal(tier.angleDeg, azimuth);
             size_t best = 0;
-            double bestDot = -2;
-            for (size_t f = 0; f < stone.facets.size(); ++f) {
-                const double d = dot(stone.facets[f].normal, want);
-                if (d > bestDot) bestDot = d, best = f;
-            }
-            if (stone.facets.empty()) break;
+            for (size_t f = 1; f < stone.facets.size(); ++f)
+                if (dot(stone.facets[f].normal, want) > dot(stone.facets[best].normal, want)) best = f;
             const Vec3 n = stone.facets[best].normal;
             const bool vertical = std::fabs(std::fabs(tier.angleDeg) - 90) < kToleranceDeg;
             const bool slopeOk = vertical ? std::fabs(std::fabs(slopeDeg(n)) - 90) <= kToleranceDeg
@@ -131,14 +124,47 @@ TEST_P(GemCadCorpus, OpensAsTheFileStates) {
                            << ", want azimuth " << azimuth;
         }
     }
-    EXPECT_EQ(wrong, 0u) << row.file << ": " << wrong << " of " << row.facets
+    EXPECT_EQ(wrong, 0u) << file << ": " << wrong << " of " << row.facets
                          << " facets not where the file puts them; first: " << firstWrong.str();
 
     if (row.table) {
         bool up = false;
         for (const Facet& f : stone.facets) up = up || f.normal.z >= std::cos(toRadians(kToleranceDeg));
-        EXPECT_TRUE(up) << row.file << ": no facet faces +z: the table was turned away (tipped)";
+        EXPECT_TRUE(up) << file << ": no facet faces +z: the table was turned away (tipped)";
     }
+}
+
+// The corpus file of this row with the given extension, and what its .asc states; empty if absent.
+std::filesystem::path corpusFile(const CorpusDesign& row, const std::string& extension) {
+    std::filesystem::path want = row.file;
+    want.replace_extension(extension);
+    for (const auto& p : test::corpusFiles(extension))
+        if (p.filename() == want) return p;
+    return {};
+}
+
+test::AscFacts checkedFacts(const CorpusDesign& row) {
+    const test::AscFacts facts = test::readAscFacts(test::readWholeFile(corpusFile(row, ".asc")));
+    EXPECT_EQ(facts.tiers.size(), row.tiers) << "the test's reading of " << row.file;
+    EXPECT_EQ(facts.facetCount(), row.facets) << "the test's reading of " << row.file;
+    return facts;
+}
+
+}  // namespace
+
+TEST_P(GemCadCorpus, OpensAsTheFileStates) {
+    const CorpusDesign& row = GetParam();
+    const std::filesystem::path path = corpusFile(row, ".asc");
+    if (path.empty()) GTEST_SKIP() << row.file << " is not in the corpus folder";
+    expectAsTheFileStates(path, checkedFacts(row), row);
+}
+
+// The same design saved as GemCad's binary .gem opens as its .asc states.
+TEST_P(GemCadCorpus, GemOpensAsItsAscStates) {
+    const CorpusDesign& row = GetParam();
+    const std::filesystem::path path = corpusFile(row, ".gem");
+    if (path.empty() || corpusFile(row, ".asc").empty()) GTEST_SKIP() << "no .asc/.gem pair for " << row.file;
+    expectAsTheFileStates(path, checkedFacts(row), row);
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, GemCadCorpus, testing::ValuesIn(kCorpus),
