@@ -81,7 +81,7 @@ void addInfoCommand(CLI::App& app) {
     auto options = std::make_shared<InfoOptions>();
     CLI::App* cmd = app.add_subcommand(
         "info", "Describe a stone: its cutting sheet, size and weight, facets by region, proportions");
-    cmd->add_option("--mesh", options->mesh, "OBJ, STL or GemCad .asc file, or a shipped shape name")
+    cmd->add_option("--mesh", options->mesh, "OBJ, STL or GemCad .asc/.gem file, or a shipped shape name")
         ->required();
     cmd->add_flag("--json", options->json, "Print JSON instead of text");
     cmd->add_flag("--keep-frame", options->keepFrame,

@@ -38,7 +38,7 @@ inline StoneOptions stoneOptions(const TraceOptions& o) {
 // `withMesh` false: the subcommand makes its own stones (a sweep) and takes no --mesh.
 inline void addTraceOptions(CLI::App* cmd, TraceOptions& o, bool withMesh = true) {
     if (withMesh) {
-        cmd->add_option("--mesh", o.mesh, "OBJ, STL or GemCad .asc file, or a shipped shape name")->required();
+        cmd->add_option("--mesh", o.mesh, "OBJ, STL or GemCad .asc/.gem file, or a shipped shape name")->required();
         cmd->add_flag("--keep-frame", o.keepFrame,
                       "Keep a mesh's own orientation (GemCad designs always keep theirs; docs/gemcad.md)");
     }

@@ -217,7 +217,7 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
     std::optional<MeshFormat> format;
     if (req.has_param("format")) {
         format = parseMeshFormat(req.get_param_value("format"));
-        if (!format) return problem(res, 422, "format must be one of obj, stl, asc", "format");
+        if (!format) return problem(res, 422, "format must be one of obj, stl, asc, gem", "format");
     }
     try {
         const MeshRecord m = catalog_.upload(body.bytes(), fileName, format);

@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--port", port, "TCP port")->capture_default_str()->check(CLI::Range(0, 65535));
     app.add_option("--data", config.dataDir, "Folder for the job store and results")->capture_default_str();
-    app.add_option("--meshes", config.meshesDir, "Folder of shipped meshes (.obj, .stl, .asc)")
+    app.add_option("--meshes", config.meshesDir, "Folder of shipped meshes (.obj, .stl, .asc, .gem)")
         ->capture_default_str();
     app.add_option("--web", config.webDir, "Folder of the web page served at /")->capture_default_str();
     auto& l = config.limits;

@@ -12,7 +12,8 @@ namespace facetlight::server {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr MeshFormat kFormats[] = {MeshFormat::Obj, MeshFormat::Stl, MeshFormat::GemCad};
+constexpr MeshFormat kFormats[] = {MeshFormat::Obj, MeshFormat::Stl, MeshFormat::GemCad,
+                                   MeshFormat::GemCadBinary};
 
 // The last path component of an uploaded file's name, reduced to harmless characters.
 std::string cleanFileName(std::string_view fileName) {
@@ -52,6 +53,8 @@ std::string_view meshFormatName(MeshFormat format) {
             return "stl";
         case MeshFormat::GemCad:
             return "asc";
+        case MeshFormat::GemCadBinary:
+            return "gem";
     }
     return "obj";
 }

@@ -62,6 +62,6 @@ class MeshCatalog {
 };
 
 std::string_view meshFormatName(MeshFormat format);
-std::optional<MeshFormat> parseMeshFormat(std::string_view name);  // obj, stl, asc
+std::optional<MeshFormat> parseMeshFormat(std::string_view name);  // obj, stl, asc, gem
 
 }  // namespace facetlight::server

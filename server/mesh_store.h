@@ -20,7 +20,7 @@ namespace facetlight::server {
 struct MeshRecord {
     std::string id;
     std::string name;    // the file name it was uploaded as, cleaned
-    std::string format;  // obj, stl or asc
+    std::string format;  // obj, stl, asc or gem
     std::string createdAt;
     nlohmann::json summary;  // stoneSummaryJson of the built stone
 };

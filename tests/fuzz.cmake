@@ -3,7 +3,7 @@
 # (scripts/fuzz builds and runs them; docs/reliability.md has the figures).
 option(FACETLIGHT_FUZZ "Build libFuzzer targets for the mesh loaders and the job body (needs clang)" OFF)
 
-set(FACETLIGHT_FUZZ_TARGETS obj stl gemcad)
+set(FACETLIGHT_FUZZ_TARGETS obj stl gemcad gemcad_binary)
 if(TARGET facetlight_server)
   list(APPEND FACETLIGHT_FUZZ_TARGETS job request)
 endif()

@@ -75,8 +75,10 @@ std::shared_ptr<const FileShape> fileShape(const std::string& path, const MeshLi
         auto file = std::make_shared<FileShape>();
         file->shape.name = std::filesystem::path(path).stem().string();
         file->shape.description = "the design in " + path;
-        if (format == MeshFormat::GemCad) {
-            auto design = std::make_shared<const GemCadDesign>(parseGemCadDesign(bytes, limits));
+        if (format == MeshFormat::GemCad || format == MeshFormat::GemCadBinary) {
+            auto design = std::make_shared<const GemCadDesign>(format == MeshFormat::GemCad
+                                                                   ? parseGemCadDesign(bytes, limits)
+                                                                   : parseGemCadBinary(bytes, limits));
             auto built = std::make_shared<const PolygonMesh>(buildGemCadMesh(*design, limits));
             for (size_t t = 0; t < design->tiers.size(); ++t) {
                 const GemCadTier& tier = design->tiers[t];

@@ -12,7 +12,7 @@ namespace facetlight {
 // Reads a GemCad .asc text. Throws Error naming the line on anything it cannot read.
 GemCadDesign parseGemCadDesign(std::string_view text, const MeshLimits& limits = {});
 
-// Reads a GemCad binary .gem project file into the same design (layout: docs/optics.md, "GemCad designs").
+// Reads a GemCad binary .gem project file into the same design (layout: docs/optics.md, "GemCad binary .gem").
 GemCadDesign parseGemCadBinary(std::string_view bytes, const MeshLimits& limits = {});
 
 // The azimuth of an index on the design's gear, degrees clockwise from +y in [0, 360).

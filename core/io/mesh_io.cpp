@@ -30,11 +30,13 @@ std::optional<MeshFormat> formatFromFileName(std::string_view fileName) {
     if (ext == ".obj") return MeshFormat::Obj;
     if (ext == ".stl") return MeshFormat::Stl;
     if (ext == ".asc") return MeshFormat::GemCad;
+    if (ext == ".gem") return MeshFormat::GemCadBinary;
     return std::nullopt;
 }
 
 MeshFormat detectFormat(std::string_view bytes) {
     if (isBinaryStl(bytes)) return MeshFormat::Stl;
+    if (looksLikeGemCadBinary(bytes)) return MeshFormat::GemCadBinary;
     if (startsWithSolid(bytes) && lowercase(bytes.substr(0, 4096)).find("facet") != std::string::npos)
         return MeshFormat::Stl;
     if (lowercase(skipSpace(bytes).substr(0, 6)) == "gemcad") return MeshFormat::GemCad;
@@ -53,6 +55,8 @@ PolygonMesh parseMesh(std::string_view bytes, MeshFormat format, const MeshLimit
             return parseStl(bytes, limits);
         case MeshFormat::GemCad:
             return parseGemCad(bytes, limits);
+        case MeshFormat::GemCadBinary:
+            return buildGemCadMesh(parseGemCadBinary(bytes, limits), limits);
     }
     throw Error("unknown mesh format");
 }

@@ -10,7 +10,7 @@
 
 namespace facetlight {
 
-enum class MeshFormat { Obj, Stl, GemCad };
+enum class MeshFormat { Obj, Stl, GemCad, GemCadBinary };
 
 // Wavefront OBJ: polygons of any size; g/o/usemtl names become polygon names.
 PolygonMesh parseObj(std::string_view text, const MeshLimits& limits = {});
@@ -18,8 +18,10 @@ PolygonMesh parseObj(std::string_view text, const MeshLimits& limits = {});
 PolygonMesh parseStl(std::string_view bytes, const MeshLimits& limits = {});
 // GemCad .asc design: tiers of facet planes, intersected as half-spaces; polygon names from tier names.
 PolygonMesh parseGemCad(std::string_view text, const MeshLimits& limits = {});
+// Whether the bytes begin as a GemCad binary .gem does (it has no signature: its first facet record's shape).
+bool looksLikeGemCadBinary(std::string_view bytes);
 
-// The format from a file name's extension (.obj, .stl, .asc), if it has a known one.
+// The format from a file name's extension (.obj, .stl, .asc, .gem), if it has a known one.
 std::optional<MeshFormat> formatFromFileName(std::string_view fileName);
 // The format from the content itself, for uploads without a trustworthy name.
 MeshFormat detectFormat(std::string_view bytes);

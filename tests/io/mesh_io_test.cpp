@@ -13,6 +13,7 @@ using namespace facetlight;
 namespace {
 
 const std::string kData = std::string(FACETLIGHT_SOURCE_DIR) + "/tests/data/";
+const std::string kFuzzCorpus = std::string(FACETLIGHT_SOURCE_DIR) + "/tests/fuzz/corpus/";
 
 std::string readFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -341,6 +342,7 @@ TEST(MeshIo, FormatFromFileName) {
     EXPECT_EQ(formatFromFileName("cut.obj"), MeshFormat::Obj);
     EXPECT_EQ(formatFromFileName("/a/b/Cut.STL"), MeshFormat::Stl);
     EXPECT_EQ(formatFromFileName("design.asc"), MeshFormat::GemCad);
+    EXPECT_EQ(formatFromFileName("Design.GEM"), MeshFormat::GemCadBinary);
     EXPECT_EQ(formatFromFileName("notes.txt"), std::nullopt);
     EXPECT_EQ(formatFromFileName("obj"), std::nullopt);
     EXPECT_EQ(formatFromFileName(""), std::nullopt);
@@ -352,6 +354,9 @@ TEST(MeshIo, DetectFormat) {
     EXPECT_EQ(detectFormat(readFile(kData + "cube_ascii.stl")), MeshFormat::Stl);
     EXPECT_EQ(detectFormat("  SOLID x\n facet normal 0 0 1\n"), MeshFormat::Stl);
     EXPECT_EQ(detectFormat(readFile(kData + "brilliant.asc")), MeshFormat::GemCad);
+    const std::string gem = readFile(kFuzzCorpus + "gemcad_binary/octahedron.gem");
+    EXPECT_EQ(detectFormat(gem), MeshFormat::GemCadBinary);
+    EXPECT_EQ(detectFormat(gem.substr(0, 20)), MeshFormat::Obj) << "too short for a facet record";
     EXPECT_EQ(detectFormat(kQuadCube), MeshFormat::Obj);
     EXPECT_EQ(detectFormat("solid-looking OBJ comment? no: v 0 0 0\n"), MeshFormat::Obj);
     EXPECT_EQ(detectFormat(""), MeshFormat::Obj);
@@ -361,6 +366,9 @@ TEST(MeshIo, ParseMeshDispatches) {
     EXPECT_EQ(parseMesh(kQuadCube, MeshFormat::Obj).polygons.size(), 6u);
     EXPECT_EQ(parseMesh(binaryCube("x"), MeshFormat::Stl).polygons.size(), 12u);
     EXPECT_GT(parseMesh(readFile(kData + "brilliant.asc"), MeshFormat::GemCad).polygons.size(), 80u);
+    EXPECT_EQ(parseMesh(readFile(kFuzzCorpus + "gemcad_binary/octahedron.gem"), MeshFormat::GemCadBinary)
+                  .polygons.size(),
+              8u);
 }
 
 TEST(MeshIo, LoadStoneNamesThePathOnFailure) {
@@ -385,4 +393,10 @@ TEST(MeshIo, LoadStoneUsesTheFileStemAsName) {
     const Stone s = loadStone(kData + "cube_quads.obj");
     EXPECT_EQ(s.name, "cube_quads");
     EXPECT_EQ(s.facets.size(), 6u);
+}
+
+TEST(MeshIo, LoadStoneReadsAGemFile) {
+    const Stone s = loadStone(kFuzzCorpus + "gemcad_binary/reversed_gear.gem");
+    EXPECT_EQ(s.name, "reversed_gear");
+    EXPECT_EQ(s.facets.size(), 8u);  // culet, 3 pavilion, 3 crown facets and the table
 }
