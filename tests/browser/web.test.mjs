@@ -179,6 +179,26 @@ async function noHorizontalOverflow() {
   return page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth + 1);
 }
 
+// The pictures within `scope` as the page shows them: the width drawn and the link around each.
+async function shownPictures(scope) {
+  return page.$$eval(`${scope} img`, (imgs) => imgs.map((img) => ({
+    src: img.getAttribute('src'), width: img.getBoundingClientRect().width,
+    link: img.closest('a') && img.closest('a').getAttribute('href'),
+  })));
+}
+
+// Every picture within `scope` at least 480 px wide on the desktop page (its text legible) and a link to
+// itself, which opens it at full size.
+async function assertLegiblePictures(scope) {
+  const shown = await shownPictures(scope);
+  assert.ok(shown.length > 0, scope);
+  for (const p of shown) {
+    assert.ok(p.width >= 480, `${p.src} shown ${Math.round(p.width)} px wide`);
+    assert.equal(p.link, p.src, `${p.src} opens at full size`);
+  }
+  return shown;
+}
+
 test('the page\'s modules import no circle', () => {
   const graph = webImports();
   const done = new Set();
@@ -342,6 +362,12 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(pics.length, 3);
     for (const p of pics) assert.ok(p.width > 0, `${p.src} did not load`);
     assert.deepEqual(pics.map((p) => p.src.split('/').pop()), ['render.png', 'heatmap.png', 'angular.png']);
+    // Legible: every picture at least 480 px wide, the heat-map across the card with its facets' shapes on it.
+    const legible = await assertLegiblePictures('#result-body .pictures');
+    const heatmapWidth = legible.find((p) => p.src.endsWith('heatmap.png')).width;
+    assert.ok(heatmapWidth >= 1000, `the heat-map shown ${Math.round(heatmapWidth)} px wide`);
+    const overlay = await page.$eval('.pic-heatmap svg.heatmap-overlay', (el) => el.getBoundingClientRect().width);
+    assert.ok(Math.abs(overlay - heatmapWidth) < 1, `the facets' shapes (${overlay} px) lie over the picture (${heatmapWidth} px)`);
 
     const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
     // The verdict comes first: the score, every viewer figure beside the reference's with its set-up, the faults.
@@ -602,6 +628,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.deepEqual(pics.map((p) => p.src.split('/').pop()), ['aset.png', 'tilt.webp', 'tilt.png']);
     // The browser decodes the animated WebP.
     for (const p of pics) assert.ok(p.width > 0, `${p.src} did not load`);
+    await assertLegiblePictures('[data-section="viewer"]');
     assert.equal(await page.locator('table.aset-shares tbody tr').count(), 5);
     const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
     const head = await page.textContent('table.aset-shares tr[data-aset="head"] td');
@@ -609,6 +636,10 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.deepEqual(stats.tilt_series.settings, { max_deg: 6, step_deg: 1, axis_deg: 90 });
     assert.match(await page.textContent('[data-section="viewer"] figcaption'), /±6° about the front–back \(y\) axis: scintillation .* 13 frames/);
     await shot('09b-viewer-views');
+    await page.setViewportSize(PHONE);
+    await page.waitForTimeout(200);
+    assert.ok(await noHorizontalOverflow(), 'the viewer views fit a phone');
+    await page.setViewportSize(DESKTOP);
   });
 
   test('a job with fire shows its figures with errors, the histogram chart and the fire heat-map', async () => {
@@ -624,6 +655,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.waitForSelector('[data-section="fire"]');
     const pics = await picturesLoaded('[data-section="fire"]');
     assert.deepEqual(pics.map((p) => p.src.split('/').pop()), ['heatmap_fire.png']);
+    await assertLegiblePictures('[data-section="fire"]');
     const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
     const mean = await page.textContent('[data-figure="fire.mean_separation_deg"] .figure-value');
     assert.match(mean, /° ± /);
