@@ -8,6 +8,7 @@ import { fireSection } from './fire.js';
 import { linkFacet, pictures } from './heatmap.js';
 import { jobName } from './meshes.js';
 import { jobSummary, lightText, progressBar, stateBadge } from './progress.js';
+import { tiltChartSvg } from './tilt.js';
 import { verdictCard } from './verdict.js';
 
 export const resultView = { id: '', timer: 0, stats: null, sort: { key: 'leaving_share', dir: -1 } };
@@ -174,8 +175,9 @@ function zoomable(src, alt) {
 }
 
 // A job's viewer figures: the ASET picture with its shares, the tilt series' animation with its
-// scintillation, and its chart; none when the job asked for neither.
-export function viewerFigures(job, stats, name = '') {
+// scintillation, and its chart; none when the job asked for neither. With `tiltRange` ([lo, hi] in percent,
+// the comparison's common range) the chart is drawn on the page on that range instead of tilt.png's own.
+export function viewerFigures(job, stats, name = '', tiltRange = null) {
   const links = job.links || {};
   const aset = stats.aset;
   const tilt = stats.tilt_series;
@@ -192,7 +194,11 @@ export function viewerFigures(job, stats, name = '') {
       zoomable(links.tilt_animation, `The stone${name ? ` (${name})` : ''} rocking through the tilt series (animation)`),
       tilt ? h('figcaption', {}, scintillationText(tilt)) : null) : null,
     links.tilt_chart ? h('figure', { class: 'viewer-tilt-chart' },
-      zoomable(links.tilt_chart, `Light return against tilt${name ? `, ${name}` : ''}`)) : null,
+      tiltRange && tilt ? [
+        h('a', { href: links.tilt_chart, target: '_blank', rel: 'noopener', class: 'zoom', title: 'Open tilt.png, on this design\'s own range' },
+          tiltChartSvg(tilt, tiltRange, name)),
+        h('figcaption', {}, `Light return against tilt, on the comparison's common range (${tiltRange[0]} to ${tiltRange[1]} %)`)]
+        : zoomable(links.tilt_chart, `Light return against tilt${name ? `, ${name}` : ''}`)) : null,
   ].filter(Boolean);
 }
 
