@@ -6,6 +6,7 @@
 
 #include "pictures/colormap.h"
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace facetlight {
 namespace {
@@ -16,13 +17,13 @@ std::string percent(double share, int decimals) {
     return buffer;
 }
 
-constexpr int kWidth = 1100, kHeight = 720;
-constexpr Point2 kCentre[2] = {{kWidth * 0.25 + 5, 330}, {kWidth * 0.75 - 5, 330}};
+constexpr int kWidth = 1100, kHeight = 770;
+constexpr Point2 kCentre[2] = {{kWidth * 0.25 + 5, 350}, {kWidth * 0.75 - 5, 350}};
 
 }  // namespace
 
 HeatmapLayout heatmapLayout(const Stone& stone) {
-    constexpr double kHalf = 230;  // pixels from a diagram's centre to the stone's widest point
+    constexpr double kHalf = 250;  // pixels from a diagram's centre to the stone's widest point
     double extent = 0;
     for (const Vec3& v : stone.vertices) extent = std::max({extent, std::fabs(v.x), std::fabs(v.y)});
     if (!(extent > 0)) extent = 1;
@@ -80,40 +81,120 @@ struct ShareWording {
     std::string bar;    // the colour bar's label
 };
 
-// The facet diagram of `share` (one per facet, in [0, 1]); facets of zero share stay unlabelled.
+// The top of the colour scale: the 95th percentile of the shares of the drawn facets other than the table,
+// rounded up to a tick of the colour bar. The table takes a large share of most designs; on a scale up to it
+// every other facet would be the same dark colour. The largest share when no other facet has any.
+double scaleTop(const Stone& stone, const HeatmapLayout& layout, const std::vector<double>& share) {
+    std::vector<double> others;
+    double largest = 0;
+    for (const HeatmapFacet& f : layout.facets) {
+        largest = std::max(largest, share[f.facet]);
+        if (stone.facets[f.facet].region != Region::Table) others.push_back(share[f.facet]);
+    }
+    double top = 0;
+    if (!others.empty()) {
+        std::sort(others.begin(), others.end());
+        top = others[size_t(std::ceil(0.95 * double(others.size()))) - 1];
+    }
+    if (!(top > 0)) top = largest;
+    if (!(top > 0)) return 0;
+    double step;
+    niceTicks(100 * top, step);
+    return std::ceil(100 * top / step - 1e-9) * step / 100;
+}
+
+// The part of `polygon` where a x + b y <= c (Sutherland-Hodgman against one half-plane).
+std::vector<Point2> clipped(const std::vector<Point2>& polygon, double a, double b, double c) {
+    std::vector<Point2> out;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        const Point2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+        const double dp = a * p[0] + b * p[1] - c, dq = a * q[0] + b * q[1] - c;
+        if (dp <= 0) out.push_back(p);
+        if ((dp < 0) != (dq < 0) && dp != dq) {
+            const double t = dp / (dp - dq);
+            out.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+        }
+    }
+    return out;
+}
+
+// Diagonal stripes over a polygon: the mark of a share beyond the colour scale.
+void hatch(Image& image, const std::vector<Point2>& polygon, const Rgb& c) {
+    constexpr double kPeriod = 12, kStripe = 3;
+    double lo = INFINITY, hi = -INFINITY;
+    for (const Point2& p : polygon) {
+        lo = std::min(lo, p[0] + p[1]);
+        hi = std::max(hi, p[0] + p[1]);
+    }
+    for (double s = std::floor(lo / kPeriod) * kPeriod; s < hi; s += kPeriod) {
+        const std::vector<Point2> stripe = clipped(clipped(polygon, 1, 1, s + kStripe), -1, -1, -s);
+        if (stripe.size() >= 3) fillPolygon(image, stripe, c);
+    }
+}
+
+// Whether a w x h box centred on `c` lies inside the convex polygon (either orientation).
+bool boxInside(const std::vector<Point2>& polygon, const Point2& c, double w, double h) {
+    double area = 0;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        const Point2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+        area += p[0] * q[1] - q[0] * p[1];
+    }
+    for (const Point2 corner : {Point2{c[0] - w / 2, c[1] - h / 2}, Point2{c[0] + w / 2, c[1] - h / 2},
+                                Point2{c[0] + w / 2, c[1] + h / 2}, Point2{c[0] - w / 2, c[1] + h / 2}}) {
+        for (size_t i = 0; i < polygon.size(); ++i) {
+            const Point2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+            const double side = (q[0] - p[0]) * (corner[1] - p[1]) - (q[1] - p[1]) * (corner[0] - p[0]);
+            if (side * area < 0) return false;
+        }
+    }
+    return true;
+}
+
+// A facet's share in percent, without the sign (the colour bar says it): to 0.1 %, finer below it.
+std::string shareLabel(double share) {
+    if (share == 0) return "0";
+    return formatNumber(100 * share < 0.1 ? "%.2f" : "%.1f", 100 * share);
+}
+
+// The facet diagram of `share` (one per facet, in [0, 1]) on a colour scale that shows the differences
+// between the facets (scaleTop); facets beyond it are hatched and named under the colour bar. Each facet
+// that holds its label at a legible size (11 pixels and up) carries its share.
 Image shareHeatmap(const Stone& stone, const std::vector<double>& share, const ShareWording& words) {
     const HeatmapLayout layout = heatmapLayout(stone);
     Image image(layout.width, layout.height, {1, 1, 1});
     const Rgb ink{0.1f, 0.1f, 0.1f};
+    const double top = scaleTop(stone, layout, share);
+    const auto beyond = [&](const HeatmapFacet& f) { return share[f.facet] > top * (1 + 1e-9); };
 
-    const double maxShare = *std::max_element(share.begin(), share.end());
-    // The colour scale ends on the colour bar's first tick at or above the largest share.
-    double step;
-    niceTicks(100 * maxShare, step);
-    const double barMax = std::ceil(100 * maxShare / step - 1e-9) * step / 100;
-
+    std::vector<const HeatmapFacet*> clippedFacets;
+    for (const HeatmapFacet& f : layout.facets) {
+        fillPolygon(image, f.outline, viridis(top > 0 ? share[f.facet] / top : 0));
+        if (beyond(f)) {
+            hatch(image, f.outline, ink);
+            clippedFacets.push_back(&f);
+        }
+        drawPolyline(image, f.outline, true, 1.2, ink);
+    }
+    for (const HeatmapFacet& f : layout.facets) {
+        const std::string label = shareLabel(share[f.facet]);
+        for (const double scale : {2.0, 1.6}) {
+            // On hatching the label sits on a patch of the top colour.
+            const double w = textWidth(label, scale) + 6, h = textHeight(scale) + 6;
+            if (!boxInside(f.outline, f.centroid, w, h)) continue;
+            const double t = top > 0 ? std::min(1.0, share[f.facet] / top) : 0;
+            if (beyond(f)) {
+                const double x0 = f.centroid[0] - w / 2, y0 = f.centroid[1] - h / 2;
+                const Point2 patch[4] = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
+                fillPolygon(image, patch, viridis(1));
+            }
+            drawText(image, f.centroid[0], f.centroid[1] - textHeight(scale) / 2 + 0.5, label, scale,
+                     contrastOn(t), Align::Center);
+            break;
+        }
+    }
     for (int side = 0; side < 2; ++side) {
-        std::vector<const HeatmapFacet*> order;
-        for (const HeatmapFacet& f : layout.facets) {
-            if (f.side != side) continue;
-            order.push_back(&f);
-            fillPolygon(image, f.outline, viridis(barMax > 0 ? share[f.facet] / barMax : 0));
-            drawPolyline(image, f.outline, true, 1.2, ink);
-        }
-        // The busiest facets of this side, labelled with their shares.
-        std::vector<const HeatmapFacet*> busiest = order;
-        std::sort(busiest.begin(), busiest.end(), [&](const HeatmapFacet* a, const HeatmapFacet* b) {
-            return share[a->facet] > share[b->facet];
-        });
-        busiest.resize(std::min<size_t>(busiest.size(), 8));
-        for (const HeatmapFacet* f : busiest) {
-            if (share[f->facet] == 0) continue;
-            const double t = barMax > 0 ? share[f->facet] / barMax : 0;
-            drawText(image, f->centroid[0], f->centroid[1] - textHeight(1.5) / 2, percent(share[f->facet], 1),
-                     1.5, contrastOn(t), Align::Center);
-        }
         const char* title = side == 0 ? "Crown and table, from above" : "Pavilion, from below";
-        drawText(image, kCentre[side][0], 78, title, 2.5, ink, Align::Center);
+        drawText(image, kCentre[side][0], 70, title, 2.5, ink, Align::Center);
     }
 
     drawText(image, kWidth / 2.0, 14, words.title, 3, ink, Align::Center);
@@ -123,8 +204,30 @@ Image shareHeatmap(const Stone& stone, const std::vector<double>& share, const S
                                 ", crown " + percent(regionShare[size_t(Region::Crown)], 1) + ", pavilion " +
                                 percent(regionShare[size_t(Region::Pavilion)], 1) + ", girdle " +
                                 percent(regionShare[size_t(Region::Girdle)], 1);
-    drawText(image, kWidth / 2.0, 48, summary, 2, ink, Align::Center);
-    drawColourBar(image, 200, kHeight - 110, kWidth - 400, 24, barMax > 0 ? 100 * barMax : 1, words.bar, 2);
+    drawText(image, kWidth / 2.0, 44, summary, 2, ink, Align::Center);
+
+    constexpr double kBarX = 200, kBarW = kWidth - 400, kBarH = 24, kBarY = kHeight - 124;
+    drawColourBar(image, kBarX, kBarY, kBarW, kBarH, top > 0 ? 100 * top : 1, words.bar, 2);
+    if (!clippedFacets.empty()) {
+        // The bar's arrow past its end stands for the shares beyond it, hatched like their facets.
+        const std::vector<Point2> arrow = {
+            {kBarX + kBarW, kBarY}, {kBarX + kBarW + 22, kBarY + kBarH / 2}, {kBarX + kBarW, kBarY + kBarH}};
+        fillPolygon(image, arrow, viridis(1));
+        hatch(image, arrow, ink);
+        drawPolyline(image, arrow, true, 1, ink);
+        std::sort(
+            clippedFacets.begin(), clippedFacets.end(),
+            [&](const HeatmapFacet* a, const HeatmapFacet* b) { return share[a->facet] > share[b->facet]; });
+        std::string names;
+        for (size_t i = 0; i < std::min<size_t>(clippedFacets.size(), 3); ++i) {
+            std::string name = stone.facets[clippedFacets[i]->facet].name;
+            std::replace(name.begin(), name.end(), '_', ' ');
+            names += (i ? ", " : "") + name + " " + percent(share[clippedFacets[i]->facet], 1);
+        }
+        if (clippedFacets.size() > 3) names += " and " + std::to_string(clippedFacets.size() - 3) + " more";
+        drawText(image, kWidth / 2.0, kBarY + kBarH + 12 + 2 * (textHeight(2) + 4) + 4,
+                 "Hatched: beyond the scale (" + names + ")", 2, ink, Align::Center);
+    }
     return image;
 }
 

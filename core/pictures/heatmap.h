@@ -1,8 +1,9 @@
 #pragma once
 // The facet diagram: the crown and table seen from above (left) and the pavilion seen from below (right),
 // each facet filled by its share of the light leaving the stone (or, the fire view, of the fire), with
-// outlines, the busiest facets' shares written on them and a colour bar with numbered ticks (readable without
-// colour).
+// outlines, the share written on every facet that holds it legibly and a colour bar with numbered ticks
+// (readable without colour). The scale ends near the largest share of the facets other than the table, so
+// that their differences show; a share beyond it (the table's, mostly) is hatched and named under the bar.
 #include <vector>
 
 #include <nlohmann/json.hpp>

@@ -14,6 +14,15 @@ constexpr double kLeft = 80, kRight = 20, kTop = 96, kBottom = 60;
 
 }  // namespace
 
+std::string tiltChartSubtitle(const TiltSeries& series) {
+    // stb_easy_font has no plus-minus sign. An error of 0 (no pixel switched, or every one) is no error to
+    // print: the share alone.
+    const AsetShare s = series.scintillation();
+    const std::string share = s.standardError > 0 ? formatWithError(100 * s.share, 100 * s.standardError)
+                                                  : formatNumber("%.1f", 100 * s.share);
+    return "ASET view, lit = bright or low light; scintillation " + share + " % per frame";
+}
+
 Image tiltChart(const TiltSeries& series, const std::string& title) {
     Image image(kWidth, kHeight, {1, 1, 1});
     const Rgb ink{0.1f, 0.1f, 0.1f}, grid{0.85f, 0.85f, 0.85f}, line{0.8f, 0.15f, 0.1f};
@@ -61,10 +70,7 @@ Image tiltChart(const TiltSeries& series, const std::string& title) {
 
     drawText(image, kWidth / 2.0, 10, title, textWidth(title, 2.5) > kWidth - 10 ? 1.5 : 2.5, ink,
              Align::Center);
-    const AsetShare s = series.scintillation();
-    const std::string subtitle = "ASET view, lit = bright or low light; scintillation " +
-                                 formatNumber("%.1f", 100 * s.share) + " +- " +
-                                 formatNumber("%.1f", 100 * s.standardError) + " % per frame";
+    const std::string subtitle = tiltChartSubtitle(series);
     drawText(image, kWidth / 2.0, 40, subtitle, textWidth(subtitle, 2) > kWidth - 10 ? 1.5 : 2, ink,
              Align::Center);
     drawText(image, kLeft + plotW / 2, kHeight - 24, "tilt about " + tiltAxisName(series.axisDeg) + " (deg)",

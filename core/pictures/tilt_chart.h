@@ -10,5 +10,8 @@
 namespace facetlight {
 
 Image tiltChart(const TiltSeries& series, const std::string& title);
+// Its subtitle: the scintillation with its standard error to the error's own digits ("7.41 +- 0.04 % per
+// frame"), never an error rounded to 0.
+std::string tiltChartSubtitle(const TiltSeries& series);
 
 }  // namespace facetlight

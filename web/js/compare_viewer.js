@@ -3,6 +3,7 @@
 import { h } from './dom.js';
 import { fmtPctErr, shortId } from './format.js';
 import { ASET_CLASSES, viewerFigures } from './result.js';
+import { tiltRange } from './tilt.js';
 
 // The frame the stone is face-up in (tilt 0), the middle of the series.
 function faceUpFrame(tilt) {
@@ -32,12 +33,15 @@ function viewerTable(entries, nameOf) {
 export function viewerCompare(entries, nameOf) {
   const ranked = entries.map((e, i) => ({ ...e, rank: i + 1 }));
   if (!ranked.some((e) => viewerFigures(e.job, e.stats).length)) return null;
+  // Two or more tilt series share one y range, so that their charts read against each other.
+  const tilts = ranked.map((e) => e.stats.tilt_series).filter(Boolean);
+  const range = tilts.length > 1 ? tiltRange(tilts) : null;
   return h('section', { 'aria-labelledby': 'viewer-compare-title', 'data-section': 'viewer-compare' },
     h('h2', { id: 'viewer-compare-title' }, 'What a viewer sees, side by side'),
     h('p', { class: 'hint' }, 'ASET colours: each view ray traced back through the stone and coloured by where its light comes from (the sky by elevation and the viewer\'s head cone, not the job\'s light model). Shares of the face-up area with one standard error.'),
     h('div', { class: 'card' }, viewerTable(ranked, nameOf)),
     h('div', { class: 'compare-grid' }, ranked.map((e) => {
-      const figures = viewerFigures(e.job, e.stats, nameOf(e));
+      const figures = viewerFigures(e.job, e.stats, nameOf(e), range);
       return h('article', { class: 'card viewer-card', 'data-id': e.job.id },
         h('h3', {}, h('span', { class: 'rank-no small' }, `#${e.rank}`), ' ', h('a', { href: `#/jobs/${e.job.id}` }, nameOf(e))),
         figures.length ? figures : h('p', { class: 'empty' }, 'This job asked for no ASET view or tilt series.'));

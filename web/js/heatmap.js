@@ -125,7 +125,7 @@ export function pictures(job, name, stats, commonScale = 0) {
   ].filter(Boolean);
   const drawHeatmap = commonScale > 0 && links.heatmap_layout;
   const figures = items.map((p) => h('figure', { class: `picture ${p.cls}` },
-    h('a', { href: p.href, target: '_blank', rel: 'noopener' },
+    h('a', { href: p.href, target: '_blank', rel: 'noopener', class: 'zoom', title: 'Open the picture at full size' },
       drawHeatmap && p.cls === 'pic-heatmap' ? h('div', { class: 'heatmap-pending' })
         : h('img', { src: p.href, alt: p.alt, ...(p.cls === 'pic-angular' ? {} : size), decoding: 'async' })),
     h('figcaption', {}, p.title, h('span', { class: 'muted picture-light' }, ` · ${p.light}`))));

@@ -8,6 +8,7 @@ import { fireSection } from './fire.js';
 import { linkFacet, pictures } from './heatmap.js';
 import { jobName } from './meshes.js';
 import { jobSummary, lightText, progressBar, stateBadge } from './progress.js';
+import { tiltChartSvg } from './tilt.js';
 import { verdictCard } from './verdict.js';
 
 export const resultView = { id: '', timer: 0, stats: null, sort: { key: 'leaving_share', dir: -1 } };
@@ -167,25 +168,37 @@ export function scintillationText(tilt) {
   return `Rocked ±${fmtNumber(max, 1)}° about ${tiltAxisName(axis)}: scintillation ${fmtPctErr(tilt.scintillation, tilt.scintillation_stderr)} of the face-up area per frame, over ${tilt.frames.length} frames`;
 }
 
-// A job's viewer figures: the ASET picture with its shares, the tilt series' animation and chart; none
-// when the job asked for neither.
-export function viewerFigures(job, stats, name = '') {
+// A picture as a link to itself, which opens it at full size.
+function zoomable(src, alt) {
+  return h('a', { href: src, target: '_blank', rel: 'noopener', class: 'zoom', title: 'Open the picture at full size' },
+    h('img', { src, alt, loading: 'lazy' }));
+}
+
+// A job's viewer figures: the ASET picture with its shares, the tilt series' animation with its
+// scintillation, and its chart; none when the job asked for neither. With `tiltRange` ([lo, hi] in percent,
+// the comparison's common range) the chart is drawn on the page on that range instead of tilt.png's own.
+export function viewerFigures(job, stats, name = '', tiltRange = null) {
   const links = job.links || {};
   const aset = stats.aset;
   const tilt = stats.tilt_series;
   const of = name ? ` of ${name}` : ' of the stone';
   return [
     links.aset ? h('figure', { class: 'viewer-aset' },
-      h('img', { src: links.aset, alt: `ASET view${of} face-up`, loading: 'lazy' }),
+      zoomable(links.aset, `ASET view${of} face-up`),
       aset ? h('table', { class: 'data aset-shares' },
         h('caption', {}, `Shares of the face-up area (${fmtInt(aset.rays)} view rays)`),
         h('tbody', {}, ASET_CLASSES.filter(([k]) => aset.shares[k]).map(([k, label]) => h('tr', { 'data-aset': k },
           h('th', { scope: 'row' }, label),
           h('td', { class: 'num' }, fmtPctErr(aset.shares[k].share, aset.shares[k].stderr)))))) : null) : null,
     links.tilt_animation ? h('figure', { class: 'viewer-tilt' },
-      h('img', { src: links.tilt_animation, alt: `The stone${name ? ` (${name})` : ''} rocking through the tilt series (animation)`, loading: 'lazy' }),
-      tilt ? h('figcaption', {}, scintillationText(tilt)) : null,
-      h('img', { src: links.tilt_chart, alt: `Light return against tilt${name ? `, ${name}` : ''}`, loading: 'lazy' })) : null,
+      zoomable(links.tilt_animation, `The stone${name ? ` (${name})` : ''} rocking through the tilt series (animation)`),
+      tilt ? h('figcaption', {}, scintillationText(tilt)) : null) : null,
+    links.tilt_chart ? h('figure', { class: 'viewer-tilt-chart' },
+      tiltRange && tilt ? [
+        h('a', { href: links.tilt_chart, target: '_blank', rel: 'noopener', class: 'zoom', title: 'Open tilt.png, on this design\'s own range' },
+          tiltChartSvg(tilt, tiltRange, name)),
+        h('figcaption', {}, `Light return against tilt, on the comparison's common range (${tiltRange[0]} to ${tiltRange[1]} %)`)]
+        : zoomable(links.tilt_chart, `Light return against tilt${name ? `, ${name}` : ''}`)) : null,
   ].filter(Boolean);
 }
 
@@ -196,7 +209,7 @@ function viewerSection(job, stats) {
   return h('section', { class: 'card', 'aria-labelledby': 'viewer-title', 'data-section': 'viewer' },
     h('h2', { id: 'viewer-title' }, 'What a viewer sees'),
     h('p', { class: 'hint' }, 'Each view ray traced back through the stone and coloured by where its light comes from (AGS ASET colours: the sky by elevation and the viewer\'s head cone, not the job\'s light model).'),
-    h('div', { class: 'result-grid' }, figures));
+    h('div', { class: 'viewer-grid' }, figures));
 }
 
 function resultPage(job, stats) {
