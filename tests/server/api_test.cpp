@@ -937,18 +937,20 @@ TEST_F(ServiceTest, SweepSearchLinksTheBestDesign) {
     EXPECT_EQ(obj->body.rfind("# facetlight cut round_brilliant", 0), 0u) << obj->body.substr(0, 80);
 }
 
-// Issue 27: an uploaded GemCad design lists its tiers, a search over two of them runs over HTTP, and its
-// best design comes back as .asc that uploads again as the same kind of stone.
+// Issue 27: an uploaded GemCad design (GemCad's own round brilliant, tests/data/gemcad/SRB.asc) lists its
+// tiers, a search over two of them runs over HTTP, and its best design comes back as .asc that uploads again
+// as the same stone.
 TEST_F(ServiceTest, UploadedDesignTiersAreSweptAndTheBestComesBackAsAsc) {
-    std::ifstream in(std::string(FACETLIGHT_SOURCE_DIR) + "/tests/data/brilliant.asc", std::ios::binary);
+    std::ifstream in(std::string(FACETLIGHT_SOURCE_DIR) + "/tests/data/gemcad/SRB.asc", std::ios::binary);
     const std::string asc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    auto up = client_->Post("/api/meshes?name=brilliant.asc", asc, "application/octet-stream");
+    auto up = client_->Post("/api/meshes?name=SRB.asc", asc, "application/octet-stream");
     ASSERT_TRUE(up);
     ASSERT_EQ(up->status, 201) << up->body;
     const json design = json::parse(up->body);
     ASSERT_EQ(design["tiers"].size(), 5u) << design.dump();
-    EXPECT_EQ(design["tiers"][0]["parameter"], "tier:P1");
-    EXPECT_EQ(design["tiers"][0]["angle_deg"], 41);
+    EXPECT_EQ(design["tiers"][0]["parameter"], "tier:1");
+    EXPECT_EQ(design["tiers"][0]["angle_deg"], 42.5);
+    EXPECT_EQ(design["facet_count"], 73);
     EXPECT_EQ(design["frame"]["file_orientation"], true);
 
     json job = {{"mesh", design["mesh"]},
@@ -956,36 +958,46 @@ TEST_F(ServiceTest, UploadedDesignTiersAreSweptAndTheBestComesBackAsAsc) {
                 {"threads", 2},
                 {"viewer", {{"enabled", false}}},
                 {"sweep",
-                 {{"axes", {{{"name", "tier:P1"}, {"from", 40}, {"to", 42}, {"step", 1}},
-                            {{"name", "tier:C1"}, {"values", {33, 35}}}}},
+                 {{"axes", {{{"name", "tier:1"}, {"from", 42.5}, {"to", 43.5}, {"step", 0.5}},
+                            {{"name", "tier:A"}, {"values", {33, 35}}}}},
                   {"maximize", "weighted_return"},
                   {"refine_rounds", 1}}}};
     const json done = waitFinished(submitOk(job));
     ASSERT_EQ(done["state"], "succeeded") << done.dump();
-    EXPECT_EQ(done["name"], "brilliant.asc, sweep of tier:P1 × tier:C1");
+    EXPECT_EQ(done["name"], "SRB.asc, sweep of tier:1 × tier:A");
     const json sweep = getJson(done["links"]["sweep"]);
     ASSERT_EQ(sweep["points"].size(), 6u);
-    EXPECT_EQ(sweep["points"][0]["values"]["tier:P1"], 40);
+    EXPECT_EQ(sweep["points"][0]["values"]["tier:1"], 42.5);
     auto best = client_->Get(done["links"]["best_asc"].get<std::string>());
     ASSERT_TRUE(best && best->status == 200);
     EXPECT_EQ(best->body.rfind("GemCad 5.0\n", 0), 0u) << best->body.substr(0, 80);
     auto again = client_->Post("/api/meshes?name=best.asc", best->body, "application/octet-stream");
     ASSERT_TRUE(again);
     ASSERT_EQ(again->status, 201) << again->body;
-    EXPECT_EQ(json::parse(again->body)["facet_count"], design["facet_count"]);
+    const json reread = json::parse(again->body);
+    EXPECT_EQ(reread["facet_count"], 73);
+    // The same stone: the tiers at the best point's slopes, the others as designed.
+    const json values = getJson(done["links"]["best"])["best"]["values"];
+    std::map<std::string, double> designed;
+    for (const auto& t : design["tiers"]) designed[t["parameter"]] = t["angle_deg"];
+    for (const auto& tier : reread["tiers"]) {
+        const std::string name = tier["parameter"];
+        const double expected = values.contains(name) ? values[name].get<double>() : designed.at(name);
+        EXPECT_NEAR(tier["angle_deg"].get<double>(), expected, 1e-6) << name;
+    }
 
     // One point of it traced on its own, as the page's sweep chart does when a point is clicked: `cut` holds
     // the design's tier slopes.
     const json point = waitFinished(submitOk(
-        {{"mesh", design["mesh"]}, {"photons", 1500}, {"viewer", {{"enabled", false}}}, {"cut", {{"tier:P1", 42}}}}));
+        {{"mesh", design["mesh"]}, {"photons", 1500}, {"viewer", {{"enabled", false}}}, {"cut", {{"tier:1", 43}}}}));
     ASSERT_EQ(point["state"], "succeeded") << point.dump();
-    EXPECT_EQ(point["name"], "brilliant.asc tier:P1 42");
+    EXPECT_EQ(point["name"], "SRB.asc tier:1 43");
     const json stats = getJson(point["links"]["stats"]);
-    EXPECT_NEAR(stats["cutting_sheet"]["tiers"][0]["measured_angle_deg"].get<double>(), -42, 1e-6);
+    EXPECT_NEAR(stats["cutting_sheet"]["tiers"][1]["measured_angle_deg"].get<double>(), -43, 1e-6);
     EXPECT_EQ(stats["material"]["source"], "design file");
 
     // A tier the design lacks is refused at submission, naming the axis or the cut.
-    job["sweep"]["axes"][0]["name"] = "tier:P9";
+    job["sweep"]["axes"][0]["name"] = "tier:P9";  // SRB's tiers are 1, 2, A, B, C
     expectProblem(submit(job), 422, "sweep.axes[0]");
     expectProblem(submit({{"mesh", design["mesh"]}, {"photons", 1500}, {"cut", {{"tier:P9", 42}}}}), 422,
                   "cut.tier:P9");
