@@ -3,9 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "cuts/cut_library.h"
 #include "cuts/design_shape.h"
@@ -16,9 +14,12 @@
 #include "scene/scene.h"
 #include "stone/stone.h"
 #include "stone/stone_size.h"
+#include "support/expect_error.h"
 #include "util/error.h"
 
 using namespace facetlight;
+using facetlight::test::expectError;
+using facetlight::test::readFileBytes;
 
 namespace {
 
@@ -34,15 +35,6 @@ std::string pointedDesign(const std::string& gearLine, const std::string& indice
            " n C\na 90 1.1 " + indices + " n G\na 0 0.9 n T\n";
 }
 
-template <class F>
-void expectErrorText(F&& f, const std::string& fragment) {
-    try {
-        f();
-        ADD_FAILURE() << "expected an error containing '" << fragment << "'";
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    }
-}
 
 // In [0, 360), a hair below 360 (atan2 of -0) read as 0.
 double azimuthDeg(const Vec3& n) {
@@ -208,18 +200,13 @@ TEST(GemCadDesign, TheFilesIndexIsTracedUnlessTheJobNamesAMaterial) {
 }
 
 TEST(GemCadDesign, Errors) {
-    auto expectError = [](const std::string& text, const std::string& fragment) {
-        try {
-            parseGemCad(text);
-            ADD_FAILURE() << "expected an error containing '" << fragment << "'";
-        } catch (const Error& e) {
-            EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-        }
+    auto refused = [](const std::string& text, const std::string& fragment) {
+        expectError([&] { parseGemCad(text); }, fragment);
     };
-    expectError("GemCad 5.0\ng 0 0\n", "GemCad line 2: the gear '0' must be a whole number");
-    expectError("GemCad 5.0\ng 96 0\nI 0.5\n", "GemCad line 3: the refractive index '0.5' must lie between 1 and 5");
-    expectError("GemCad 5.0\ng 96 0\na -45 1\n\n", "GemCad line 3: the tier lists no index");
-    expectError("GemCad 5.0\ng 96 0\na -45 -1 0\n", "GemCad line 3: the distance must be positive");
+    refused("GemCad 5.0\ng 0 0\n", "GemCad line 2: the gear '0' must be a whole number");
+    refused("GemCad 5.0\ng 96 0\nI 0.5\n", "GemCad line 3: the refractive index '0.5' must lie between 1 and 5");
+    refused("GemCad 5.0\ng 96 0\na -45 1\n\n", "GemCad line 3: the tier lists no index");
+    refused("GemCad 5.0\ng 96 0\na -45 -1 0\n", "GemCad line 3: the distance must be positive");
 }
 
 // ---- Writing, tweaking, the cutting sheet and the weight ----
@@ -228,17 +215,11 @@ namespace {
 
 const std::string kBrilliant = std::string(FACETLIGHT_SOURCE_DIR) + "/tests/data/brilliant.asc";
 
-std::string readText(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 }  // namespace
 
 TEST(GemCadDesign, WrittenDesignReadsBackTheSame) {
-    const GemCadDesign d = parseGemCadDesign(readText(kBrilliant));
+    const GemCadDesign d = parseGemCadDesign(readFileBytes(kBrilliant));
     const GemCadDesign again = parseGemCadDesign(writeGemCad(d));
     ASSERT_EQ(again.tiers.size(), d.tiers.size());
     EXPECT_EQ(again.gear, d.gear);
@@ -303,8 +284,8 @@ TEST(GemCadDesign, TweakedTierTurnsAboutItsGirdleMeet) {
     // Written back, the tweak opens as the same stone.
     const Stone reread = Stone::build(parseGemCad(writeGemCad(file->designAt({{"tier:P1", 42}}))), "reread");
     EXPECT_NEAR(reread.volume(), after.volume(), 1e-6 * after.volume());
-    expectErrorText([&] { completeCutValues(file->shape, {{"tier:P9", 40}}); }, "has no parameter 'tier:P9'");
-    expectErrorText([&] { completeCutValues(file->shape, {{"tier:P1", 95}}); }, "must lie between 1 and 89");
+    expectError([&] { completeCutValues(file->shape, {{"tier:P9", 40}}); }, "has no parameter 'tier:P9'");
+    expectError([&] { completeCutValues(file->shape, {{"tier:P1", 95}}); }, "must lie between 1 and 89");
 }
 
 TEST(GemCadDesign, CuttingSheetMeasuresEveryTierBack) {

@@ -3,24 +3,20 @@
 #include <cstring>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 #include "io/mesh_io.h"
+#include "support/expect_error.h"
 #include "util/error.h"
 
 using namespace facetlight;
+using facetlight::test::expectError;
+using facetlight::test::readFileBytes;
 
 namespace {
 
 const std::string kData = std::string(FACETLIGHT_SOURCE_DIR) + "/tests/data/";
 const std::string kFuzzCorpus = std::string(FACETLIGHT_SOURCE_DIR) + "/tests/fuzz/corpus/";
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 // The unit cube's corners and its 12 outward triangles.
 const Vec3 kCorners[8] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
@@ -61,15 +57,6 @@ void expectCube(const PolygonMesh& mesh, const std::string& what) {
     EXPECT_EQ(s.vertices.size(), 8u);
 }
 
-template <typename Parse>
-void expectError(Parse&& parse, const std::string& fragment) {
-    try {
-        parse();
-        ADD_FAILURE() << "expected an error containing '" << fragment << "'";
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    }
-}
 
 const std::string kQuadCube =
     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
@@ -78,7 +65,7 @@ const std::string kQuadCube =
 }  // namespace
 
 TEST(ObjLoader, QuadCube) {
-    const PolygonMesh m = parseObj(readFile(kData + "cube_quads.obj"));
+    const PolygonMesh m = parseObj(readFileBytes(kData + "cube_quads.obj"));
     EXPECT_EQ(m.vertices.size(), 8u);
     ASSERT_EQ(m.polygons.size(), 6u);
     for (const auto& p : m.polygons) EXPECT_EQ(p.vertices.size(), 4u);  // not triangulated
@@ -86,7 +73,7 @@ TEST(ObjLoader, QuadCube) {
 }
 
 TEST(ObjLoader, GroupObjectAndMaterialNamesWithRelativeIndices) {
-    const PolygonMesh m = parseObj(readFile(kData + "cube_groups.obj"));
+    const PolygonMesh m = parseObj(readFileBytes(kData + "cube_groups.obj"));
     ASSERT_EQ(m.polygons.size(), 6u);
     const char* names[] = {"bottom", "top", "front", "back", "left", "right"};
     for (int i = 0; i < 6; ++i) EXPECT_EQ(m.polygons[size_t(i)].name, names[i]);
@@ -176,7 +163,7 @@ TEST(StlLoader, BinaryWhoseHeaderBeginsWithSolid) {
 }
 
 TEST(StlLoader, AsciiCube) {
-    const PolygonMesh m = parseStl(readFile(kData + "cube_ascii.stl"));
+    const PolygonMesh m = parseStl(readFileBytes(kData + "cube_ascii.stl"));
     EXPECT_EQ(m.vertices.size(), 8u);
     EXPECT_EQ(m.polygons.size(), 12u);
     expectCube(m, "ascii");
@@ -222,7 +209,7 @@ TEST(StlLoader, Errors) {
 }
 
 TEST(StlLoader, DegenerateTrianglesAreDroppedWithAWarning) {
-    std::string ascii = readFile(kData + "cube_ascii.stl");
+    std::string ascii = readFileBytes(kData + "cube_ascii.stl");
     ascii.insert(
         ascii.find("endsolid"),
         "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 0 0 0\nvertex 1 1 1\nendloop\nendfacet\n");
@@ -333,7 +320,7 @@ TEST(GemCadLoader, HugeDistanceIsRefusedNotACrash) {
 // Issue 18: a rotated cube scaled 1e155 has finite coordinates whose products overflow.
 TEST(ObjLoader, HugeCoordinatesAreRefusedNotACrash) {
     const std::string obj =
-        readFile(std::string(FACETLIGHT_SOURCE_DIR) + "/tests/fuzz/corpus/obj/cube_1e155.obj");
+        readFileBytes(std::string(FACETLIGHT_SOURCE_DIR) + "/tests/fuzz/corpus/obj/cube_1e155.obj");
     ASSERT_FALSE(obj.empty());
     expectError([&] { Stone::build(parseObj(obj), "huge"); }, "vertex 1 lies too far out");
 }
@@ -351,10 +338,10 @@ TEST(MeshIo, FormatFromFileName) {
 TEST(MeshIo, DetectFormat) {
     EXPECT_EQ(detectFormat(binaryCube("anything")), MeshFormat::Stl);
     EXPECT_EQ(detectFormat(binaryCube("solid but binary")), MeshFormat::Stl);
-    EXPECT_EQ(detectFormat(readFile(kData + "cube_ascii.stl")), MeshFormat::Stl);
+    EXPECT_EQ(detectFormat(readFileBytes(kData + "cube_ascii.stl")), MeshFormat::Stl);
     EXPECT_EQ(detectFormat("  SOLID x\n facet normal 0 0 1\n"), MeshFormat::Stl);
-    EXPECT_EQ(detectFormat(readFile(kData + "brilliant.asc")), MeshFormat::GemCad);
-    const std::string gem = readFile(kFuzzCorpus + "gemcad_binary/octahedron.gem");
+    EXPECT_EQ(detectFormat(readFileBytes(kData + "brilliant.asc")), MeshFormat::GemCad);
+    const std::string gem = readFileBytes(kFuzzCorpus + "gemcad_binary/octahedron.gem");
     EXPECT_EQ(detectFormat(gem), MeshFormat::GemCadBinary);
     EXPECT_EQ(detectFormat(gem.substr(0, 20)), MeshFormat::Obj) << "too short for a facet record";
     EXPECT_EQ(detectFormat(kQuadCube), MeshFormat::Obj);
@@ -365,8 +352,8 @@ TEST(MeshIo, DetectFormat) {
 TEST(MeshIo, ParseMeshDispatches) {
     EXPECT_EQ(parseMesh(kQuadCube, MeshFormat::Obj).polygons.size(), 6u);
     EXPECT_EQ(parseMesh(binaryCube("x"), MeshFormat::Stl).polygons.size(), 12u);
-    EXPECT_GT(parseMesh(readFile(kData + "brilliant.asc"), MeshFormat::GemCad).polygons.size(), 80u);
-    EXPECT_EQ(parseMesh(readFile(kFuzzCorpus + "gemcad_binary/octahedron.gem"), MeshFormat::GemCadBinary)
+    EXPECT_GT(parseMesh(readFileBytes(kData + "brilliant.asc"), MeshFormat::GemCad).polygons.size(), 80u);
+    EXPECT_EQ(parseMesh(readFileBytes(kFuzzCorpus + "gemcad_binary/octahedron.gem"), MeshFormat::GemCadBinary)
                   .polygons.size(),
               8u);
 }
