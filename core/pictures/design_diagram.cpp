@@ -11,9 +11,12 @@ namespace facetlight {
 
 namespace {
 
-constexpr int kWidth = 1400, kHeight = 880;
+constexpr int kWidth = 1400;
 constexpr double kHalf = 190;  // pixels from a view's centre to the stone's widest point
 constexpr double kViewTop = 90, kViewCentre = kViewTop + 50 + kHalf;  // titles, index marks, then the views
+// The sheet under the views: its heading, then a row a tier in up to two columns of at most kRowsPerColumn.
+constexpr double kSheetTop = kViewCentre + kHalf + 64, kRowHeight = 20;
+constexpr size_t kRowsPerColumn = 16;
 const Rgb kPaper{1, 1, 1}, kInk{0.1f, 0.1f, 0.12f}, kFaint{0.45f, 0.45f, 0.5f};
 const Rgb kCrownFill{0.86f, 0.92f, 0.98f}, kPavilionFill{0.93f, 0.9f, 0.98f}, kGirdleFill{0.9f, 0.9f, 0.9f};
 
@@ -66,7 +69,11 @@ void drawView(Image& image, const Stone& stone, const View& view, double unit) {
 }  // namespace
 
 Image designDiagram(const Stone& stone, const std::optional<CuttingSheet>& sheet, const StoneSize& size) {
-    Image image(kWidth, kHeight, kPaper);
+    // As tall as the sheet needs: two columns once one would run past kRowsPerColumn.
+    const size_t tiers = sheet ? sheet->tiers.size() : 0;
+    const size_t perColumn = std::min(kRowsPerColumn, tiers > kRowsPerColumn ? (tiers + 1) / 2 : tiers);
+    const int height = int(kSheetTop + 30 + kRowHeight * double(perColumn + (tiers > 2 * perColumn)) + 16);
+    Image image(kWidth, height, kPaper);
     double extent = 0;
     for (const Vec3& v : stone.vertices) extent = std::max({extent, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
     const double unit = kHalf / (extent > 0 ? extent : 1);
@@ -88,8 +95,9 @@ Image designDiagram(const Stone& stone, const std::optional<CuttingSheet>& sheet
         const double dx = mirrored ? -sx : sx;
         const Point2 a{x + dx * (kHalf + 6), top - sy * (kHalf + 6)}, b{x + dx * (kHalf + 22), top - sy * (kHalf + 22)};
         drawLine(image, a, b, 2, kFaint);
-        drawText(image, b[0] + (dx >= 0 ? 4 : -4), b[1] - 14, "index " + std::to_string(std::abs(sheet ? sheet->gear : 96)), 1.3,
-                 kFaint, dx >= 0 ? Align::Left : Align::Right);
+        // Beside the mark's outer end, clear of the view's title above it.
+        drawText(image, b[0] + (dx >= 0 ? 6 : -6), b[1] - 5, "index " + std::to_string(std::abs(sheet ? sheet->gear : 96)),
+                 1.3, kFaint, dx >= 0 ? Align::Left : Align::Right);
     }
     // A scale bar of 1 mm (or 5 mm on a large stone) under the profile.
     const double mm = size.lengthMm > 0 ? stone.proportions.length / size.lengthMm : 0;
@@ -113,23 +121,20 @@ Image designDiagram(const Stone& stone, const std::optional<CuttingSheet>& sheet
     std::string head = std::to_string(std::abs(sheet->gear)) + "-tooth gear, " + std::to_string(sheet->symmetry) +
                        "-fold" + (sheet->mirror ? " mirror" : "") + " symmetry";
     if (sheet->refractiveIndex) head += ", index " + formatNumber("%.3f", *sheet->refractiveIndex);
-    const double headY = top + kHalf + 64;
-    drawText(image, 30, headY, head, 1.8, kInk);
-    const double rowHeight = 20;
-    const double y = headY + 30;
+    drawText(image, 30, kSheetTop, head, 1.8, kInk);
+    const double y = kSheetTop + 30;
     size_t row = 0;
-    const size_t perColumn = size_t((kHeight - y - 10) / rowHeight);
     for (const SheetTier& t : sheet->tiers) {
         const double x = 30 + double(row / perColumn) * 690;
-        const double yy = y + double(row % perColumn) * rowHeight;
+        const double yy = y + double(row % perColumn) * kRowHeight;
         std::string indices;
         for (double i : t.indices) indices += (indices.empty() ? "" : "-") + gearIndexText(i, sheet->gear);
         if (indices.size() > 58) indices = indices.substr(0, 55) + "...";
         std::string line = t.name + "  " + (std::signbit(t.angleDeg) ? "P " : "C ") +
                            formatNumber("%.2f", std::fabs(t.angleDeg)) + "  " + indices;
         drawText(image, x, yy, line, 1.6, kInk);
-        if (++row >= 2 * perColumn) {
-            drawText(image, x, yy + rowHeight, "... (the full sheet: stats.json cutting_sheet)", 1.4, kFaint);
+        if (++row >= 2 * perColumn && row < tiers) {
+            drawText(image, x, yy + kRowHeight, "... (the full sheet: stats.json cutting_sheet)", 1.4, kFaint);
             break;
         }
     }

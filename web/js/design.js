@@ -40,7 +40,8 @@ function sizeList(size, material) {
       ['Keeps of its block', `${fmtNumber(100 * size.block_retention, 1)} %`]);
   }
   if (material) {
-    rows.push(['Traced as', `${humanize(material.name)}, n ${fmtNumber(material.n_d, 4)} (${SOURCE_TEXT[material.source] || material.source})`]);
+    const what = material.source === 'design file' ? '' : `${humanize(material.name)}, `;
+    rows.push(['Traced as', `${what}n ${fmtNumber(material.n_d, 4)}: ${SOURCE_TEXT[material.source] || material.source}`]);
   }
   return h('dl', { class: 'kv' }, rows.map(([k, v]) => [h('dt', {}, k), h('dd', {}, v)]));
 }
