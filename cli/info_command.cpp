@@ -26,6 +26,7 @@ struct InfoOptions {
     std::string material = SceneSettings{}.material;
     std::optional<double> density;
     std::string diagram;
+    std::string rough;
 };
 
 nlohmann::json sizeJson(const StoneSize& s, double sizeMm, const MaterialChoice& material,
@@ -40,7 +41,8 @@ nlohmann::json sizeJson(const StoneSize& s, double sizeMm, const MaterialChoice&
 }
 
 void printText(const Stone& stone, const std::optional<CuttingSheet>& sheet, const StoneSize& size,
-               double sizeMm, const MaterialChoice& material, std::optional<double> density) {
+               double sizeMm, const MaterialChoice& material, std::optional<double> density,
+               std::optional<double> roughShare) {
     std::printf("%s: %zu facets, %zu triangles, %s\n", stone.name.c_str(), stone.facets.size(),
                 stone.triangles.size(), stone.convex ? "convex" : "not convex");
     if (!stone.frame.fileOrientation)
@@ -60,7 +62,9 @@ void printText(const Stone& stone, const std::optional<CuttingSheet>& sheet, con
         std::printf(", %.3f ct (%s, %.2f g/cm^3)", *size.carats, material.material.name().c_str(), *density);
     else
         std::printf(" (no weight: %s names no density; give --density)", material.material.name().c_str());
-    std::printf("; keeps %.1f %% of its block\n", 100 * size.blockRetention);
+    std::printf("; keeps %.1f %% of its block", 100 * size.blockRetention);
+    if (roughShare) std::printf(" and %.1f %% of the rough", 100 * *roughShare);
+    std::printf("\n");
     const Proportions& p = stone.proportions;
     std::printf("\nproportions (length %.4g x width %.4g)\n", p.length, p.width);
     printProportions(p);
@@ -91,6 +95,8 @@ void addInfoCommand(CLI::App& app) {
     cmd->add_option("--material", options->material,
                     "The material whose density gives the weight (auto: the design's own, else diamond)");
     cmd->add_option("--density", options->density, "Density in g/cm^3, for a material that names none");
+    cmd->add_option("--rough", options->rough,
+                    "A rough (OBJ, STL or design) in the same units and frame: report the share of it the stone keeps");
     cmd->add_option("--diagram", options->diagram,
                     "Also write the faceting diagram (crown, profile, pavilion, tiers) as a PNG to this file");
     cmd->callback([options] {
@@ -106,13 +112,21 @@ void addInfoCommand(CLI::App& app) {
         const StoneSize size = stoneSize(stone, options->sizeMm, density);
         const std::optional<CuttingSheet> sheet = cuttingSheet(stone);
         if (!options->diagram.empty()) writeFile(options->diagram, encodePng(designDiagram(stone, sheet, size)));
+        std::optional<double> roughShare;
+        if (!options->rough.empty()) {
+            StoneOptions asDrawn;
+            asDrawn.keepFrame = true;
+            const Stone drawn = options->keepFrame || stone.design ? stone : resolveStone(options->mesh, asDrawn);
+            roughShare = roughRetention(drawn, resolveStone(options->rough, asDrawn));
+        }
         if (options->json) {
             nlohmann::json j = stoneJson(stone);
             if (sheet) j["cutting_sheet"] = toJson(*sheet);
             j["size"] = sizeJson(size, options->sizeMm, material, density);
+            if (roughShare) j["size"]["rough_retention"] = *roughShare;
             std::cout << j.dump(2) << "\n";
         } else {
-            printText(stone, sheet, size, options->sizeMm, material, density);
+            printText(stone, sheet, size, options->sizeMm, material, density, roughShare);
         }
     });
 }

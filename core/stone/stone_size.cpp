@@ -22,4 +22,23 @@ StoneSize stoneSize(const Stone& stone, double sizeMm, std::optional<double> den
     return s;
 }
 
+double roughRetention(const Stone& stone, const Stone& rough) {
+    if (!stone.frame.fileOrientation || !rough.frame.fileOrientation)
+        throw Error("the stone and the rough must keep their files' orientation to be compared");
+    if (!(rough.volume() > 0)) throw Error("the rough '" + rough.name + "' has no volume");
+    if (rough.convex) {
+        const double tolerance = 1e-6 * length(rough.bounds.extent());
+        for (const Vec3& v : stone.vertices) {
+            const Vec3 p = v + stone.frame.shift - rough.frame.shift;  // the stone's vertex in the rough's frame
+            for (const Facet& f : rough.facets) {
+                const double out = dot(f.normal, p) - f.offset;
+                if (out > tolerance)
+                    throw Error("the stone does not fit inside the rough '" + rough.name + "': a corner lies " +
+                                std::to_string(out) + " outside its facet " + f.name);
+            }
+        }
+    }
+    return stone.volume() / rough.volume();
+}
+
 }  // namespace facetlight

@@ -18,4 +18,9 @@ struct StoneSize {
 // Throws Error when the stone has no girdle diameter to scale by or sizeMm is not positive.
 StoneSize stoneSize(const Stone& stone, double sizeMm, std::optional<double> densityGcm3);
 
+// The share of a rough's volume the stone keeps (the yield), both read from files in the same units and
+// frame (each built with StoneOptions::keepFrame, so that undoing their centring puts them back as drawn).
+// Throws Error when the stone does not lie inside a convex rough (a non-convex rough is not checked).
+double roughRetention(const Stone& stone, const Stone& rough);
+
 }  // namespace facetlight

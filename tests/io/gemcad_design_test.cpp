@@ -335,3 +335,21 @@ TEST(GemCadDesign, WeightAgreesWithTheTradesEstimate) {
     EXPECT_LT(size.blockRetention, 0.6);
     EXPECT_FALSE(stoneSize(s, 6.5, std::nullopt).carats);
 }
+
+// The yield from a rough: the share of its volume the stone keeps, refused when the stone sticks out of it.
+TEST(GemCadDesign, RoughRetentionIsTheVolumeShareOfAStoneInsideItsRough) {
+    auto box = [](double lo, double hi) {
+        std::string obj;
+        for (int i = 0; i < 8; ++i)
+            obj += "v " + std::to_string(i & 1 ? hi : lo) + " " + std::to_string(i & 2 ? hi : lo) + " " +
+                   std::to_string(i & 4 ? hi : lo) + "\n";
+        return obj + "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+    };
+    StoneOptions asDrawn;
+    asDrawn.keepFrame = true;
+    const Stone stone = Stone::build(parseObj(box(0, 1)), "stone", asDrawn);
+    // A rough from -1 to 3: 64 times the stone's volume, the stone off its centre but inside.
+    EXPECT_NEAR(roughRetention(stone, Stone::build(parseObj(box(-1, 3)), "rough", asDrawn)), 1.0 / 64, 1e-12);
+    expectError([&] { roughRetention(stone, Stone::build(parseObj(box(0.5, 4)), "small", asDrawn)); },
+                "the stone does not fit inside the rough 'small'");
+}
