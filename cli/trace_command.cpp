@@ -54,6 +54,7 @@ void run(const TraceCommandOptions& o) {
 
     if (!comm.isRoot()) return;
     nlohmann::json stats = traceReport(result, stone, settings);
+    addDesignFacts(stats, designFacts(stone, settings));
     if (comm.size() > 1) stats["timing"]["ranks"] = comm.size();
     if (!viewer.is_null()) stats["viewer"] = std::move(viewer);
     const bool jsonToStdout = o.json && (o.jsonPath.empty() || o.jsonPath == "-");

@@ -4,7 +4,6 @@
 #include <sstream>
 #include <vector>
 
-#include "io/cutting_sheet.h"
 #include "photonmap/floor_photons.h"
 #include "photonmap/photon_map.h"
 #include "pictures/angular_plot.h"
@@ -18,7 +17,6 @@
 #include "render/renderer.h"
 #include "render/tilt_series.h"
 #include "scene/scene.h"
-#include "stone/stone_size.h"
 #include "trace/distributed_trace.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
@@ -113,16 +111,14 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
     if (anyRank(comm, traced.cancelled || control.cancelled())) throw Canceled();
     if (comm.isRoot()) {
         result.stats = traceReport(traced, stone, settings.trace);
+        const DesignFacts facts = designFacts(stone, settings.trace);
+        addDesignFacts(result.stats, facts);
         std::ostringstream csv;
         writeFacetCsv(csv, traced.stats, stone);
         result.file("stats.csv") = csv.str();
         result.file("heatmap.png") = encodePng(facetHeatmap(stone, traced.stats));
         result.file("heatmap.json") = toJson(heatmapLayout(stone), stone).dump();
-        if (stone.proportions.diameter > 0) {
-            const std::optional<double> density = chooseMaterial(settings.trace, stone).material.densityGcm3();
-            result.file("diagram.png") = encodePng(
-                designDiagram(stone, cuttingSheet(stone), stoneSize(stone, settings.trace.sizeMm, density)));
-        }
+        if (facts.size) result.file("diagram.png") = encodePng(designDiagram(stone, facts.sheet, *facts.size));
         if (traced.fire) {
             result.file("heatmap_fire.png") = encodePng(fireHeatmap(stone, *traced.fire));
         }

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <chrono>
 
-#include "io/cutting_sheet.h"
-#include "stone/stone_size.h"
 #include "trace/fire_trace.h"
 #include "trace/photon_walker.h"
 #include "util/parallel.h"
@@ -45,25 +43,37 @@ bool traceBlocks(const TraceBase& trace, uint64_t firstBlock, uint64_t lastBlock
 
 nlohmann::json traceReport(const TraceResult& result, const Stone& stone, const TraceSettings& settings) {
     nlohmann::json stats = statsToJson(result.stats, stone, toJson(settings), result.timing);
-    const MaterialChoice material = chooseMaterial(settings, stone);
-    stats["material"] = {{"name", material.material.name()},
-                         {"n_d", material.material.indexD()},
-                         {"dispersion_bg", material.material.dispersionBG()},
-                         {"source", material.source}};
-    if (const std::optional<CuttingSheet> sheet = cuttingSheet(stone)) stats["cutting_sheet"] = toJson(*sheet);
-    if (stone.proportions.diameter > 0) {  // else there is no girdle width to scale by
-        const std::optional<double> density = material.material.densityGcm3();
-        const StoneSize size = stoneSize(stone, settings.sizeMm, density);
-        stats["size"] = {{"size_mm", settings.sizeMm},   {"length_mm", size.lengthMm},
-                         {"width_mm", size.widthMm},     {"depth_mm", size.depthMm},
-                         {"volume_mm3", size.volumeMm3}, {"block_retention", size.blockRetention},
-                         {"density_g_cm3", density ? nlohmann::json(*density) : nlohmann::json()},
-                         {"carats", size.carats ? nlohmann::json(*size.carats) : nlohmann::json()}};
-    }
     if (result.fire)
         stats["fire"] =
             fireToJson(*result.fire, stone, settings.fire.pupilAngleDeg(), settings.light.headShadowDeg);
     return stats;
+}
+
+DesignFacts designFacts(const Stone& stone, const TraceSettings& settings) {
+    DesignFacts facts{chooseMaterial(settings, stone), cuttingSheet(stone), std::nullopt};
+    if (stone.proportions.diameter > 0)  // else there is no girdle width to scale by
+        facts.size = stoneSize(stone, settings.sizeMm, facts.material.material.densityGcm3());
+    return facts;
+}
+
+void addDesignFacts(nlohmann::json& stats, const DesignFacts& facts) {
+    const Material& m = facts.material.material;
+    stats["material"] = {{"name", m.name()},
+                         {"n_d", m.indexD()},
+                         {"dispersion_bg", m.dispersionBG()},
+                         {"source", facts.material.source}};
+    if (facts.sheet) stats["cutting_sheet"] = toJson(*facts.sheet);
+    if (const std::optional<StoneSize>& size = facts.size) {
+        const std::optional<double> density = m.densityGcm3();
+        stats["size"] = {{"size_mm", stats["settings"]["size_mm"]},
+                         {"length_mm", size->lengthMm},
+                         {"width_mm", size->widthMm},
+                         {"depth_mm", size->depthMm},
+                         {"volume_mm3", size->volumeMm3},
+                         {"block_retention", size->blockRetention},
+                         {"density_g_cm3", density ? nlohmann::json(*density) : nlohmann::json()},
+                         {"carats", size->carats ? nlohmann::json(*size->carats) : nlohmann::json()}};
+    }
 }
 
 TraceResult trace(const TraceBase& trace, RunControl* control) {

@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/ray.h"
+#include "io/cutting_sheet.h"
+#include "stone/stone_size.h"
 #include "stats/facet_stats.h"
 #include "stats/fire_stats.h"
 #include "trace/trace_base.h"
@@ -54,9 +56,21 @@ struct TraceResult {
     std::optional<FireStats> fire;  // when settings.fire.enabled
 };
 
-// stats.json of a trace (docs/stats-schema.md): the facet statistics with the job's settings, the material
-// traced and where it came from, and the fire trace's `fire` member when it ran.
+// The facet statistics of a trace with the job's settings, and the fire trace's `fire` member when it ran
+// (docs/stats-schema.md): what every trace reports, a sweep's points included.
 nlohmann::json traceReport(const TraceResult& result, const Stone& stone, const TraceSettings& settings);
+
+// What stats.json says of the stone beside its statistics (docs/gemcad.md): the material traced and where it
+// came from, the cutting sheet (none for a mesh that is not convex) and the size and weight at size_mm (none
+// without a girdle width to scale by). Worked out once by those that write stats.json, not for sweep points.
+struct DesignFacts {
+    MaterialChoice material;
+    std::optional<CuttingSheet> sheet;
+    std::optional<StoneSize> size;
+};
+DesignFacts designFacts(const Stone& stone, const TraceSettings& settings);
+// Adds `material`, `cutting_sheet` and `size` to a trace's statistics.
+void addDesignFacts(nlohmann::json& stats, const DesignFacts& facts);
 
 // The whole job: the trace's settings.photons photons with settings.threads workers (and the fire trace when
 // settings.fire.enabled).

@@ -33,6 +33,11 @@ OBJ
 "$tool" trace --mesh "$dir/tetra.obj" --photons 2000 --no-view --keep-frame --json "$dir/kept.json" >/dev/null
 python3 - "$dir/tetra.json" "$dir/kept.json" <<'PY'
 import json, sys
+stats = json.load(open(sys.argv[1]))
+# trace --json writes what a job's stats.json holds of the stone (docs/stats-schema.md).
+assert stats["material"]["source"] == "default" and stats["material"]["name"] == "diamond", stats["material"]
+assert stats["cutting_sheet"]["source"] == "measured from the mesh", stats["cutting_sheet"]["source"]
+assert stats["size"]["carats"] > 0, stats["size"]
 turned, kept = (json.load(open(p))["mesh"]["frame"] for p in sys.argv[1:3])
 assert turned["file_orientation"] is False and turned["turned_deg"] > 1, turned
 assert kept["file_orientation"] is True and "table_facet" not in kept, kept
