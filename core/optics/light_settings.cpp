@@ -26,6 +26,12 @@ const Schema<LightSettings>& lightSettingsSchema() {
                     "(radiance falling as cos(theta) from the zenith)"}),
             vec3("position", &LightSettings::position, false,
                  {"--light-position", "Point: the source position (x y z), outside the stone"}),
+            optionalNumber("polarizer_deg", &LightSettings::polarizerDeg,
+                           {.lo = 0, .hi = 180, .openHi = true},
+                           {"--polarizer",
+                            "A linear polariser over the light, its axis this far from the stone's x axis "
+                            "(needs --polarization on)",
+                            "degrees"}),
         },
         // No stone reaches beyond kMaxMeshCoordinate (a light at 1e308 "succeeded" with no photon hitting);
         // LightModel also refuses a light too far for its stone.

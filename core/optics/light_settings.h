@@ -1,6 +1,8 @@
 #pragma once
 // Where a job's light comes from (after Tungsten: plain settings, apart from the light model that uses them),
 // each setting described once in lightSettingsSchema().
+#include <optional>
+
 #include "geometry/geometry.h"
 #include "settings/settings_schema.h"
 #include "util/name_table.h"
@@ -25,6 +27,9 @@ struct LightSettings {
     double headShadowDeg = 0;  // hemisphere: half-angle of the observer's cone removed around the vertical
     SkyKind sky = SkyKind::Uniform;  // hemisphere
     Vec3 position{0, 0, 10};         // point: the source position, outside the stone's bounding sphere
+    // A linear polariser over the light: its axis in the horizontal plane at this angle from the stone's x
+    // axis toward its y (a polariscope's lower filter). None: unpolarised light. Needs polarised tracing.
+    std::optional<double> polarizerDeg;
 };
 
 // The table of LightSettings' fields (JSON key "light" of a job).

@@ -148,8 +148,8 @@ using BandExit = PhotonWalker::BandExit;
 // lane-wise, up to the reflect-or-refract draw at entry.
 struct BeamStart {
     StepResult hit;    // the entry point, facet and cos(incidence) (cosT: not known before the index)
-    LaneBits photons;  // the lanes that hold a photon
-    LaneBits hits;     // those that enter
+    LaneBits photons = 0;  // the lanes that hold a photon
+    LaneBits hits = 0;     // those that enter
 };
 // Photons [first, first + count) of the beam, their streams into state[], which advance by the draws of
 // the light ray and of the wavelength when dispersive; with `n`, the index of refraction at each lane's

@@ -28,6 +28,7 @@ class PhotonWalker {
         Vec3f p, d;
         float n = 0;
         uint32_t bounces = 0;
+        Polarization pol;  // when the trace is polarised
     };
 
     // Draws photon `index` and takes it to the stone; true when it is inside and has to be stepped on.
@@ -66,6 +67,10 @@ class PhotonWalker {
                 return false;
             }
             d = e.refracted;
+        } else if (s.polarized()) {
+            ph.pol = s.sourcePolarization(d);
+            if (!enterPolarized(s.scene().normal(hit.facet), 1.0f / ph.n, hit.facet, p, d, visit, ph))
+                return false;
         } else {
             const Vec3f normal = s.scene().normal(hit.facet);
             const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
@@ -94,10 +99,26 @@ class PhotonWalker {
         const Vec3f p = ph.p + ph.d * hit.t, d = ph.d;
         const Vec3f normal = s.scene().normal(hit.facet);
         const float cosI = std::clamp(dot(d, normal), 0.0f, 1.0f), n = ph.n;
-        const FresnelResult fr = fresnel(cosI, n);
-        if (!fr.totalInternal && ph.rng.uniform() >= fr.reflectance) {
-            visit.exited(hit.facet, p, refractOut(d, normal, n, cosI, fr.cosT), ph.bounces);
-            return false;
+        if (s.polarized()) {
+            // The facet's s-p frame; the same draws as below, none under total internal reflection.
+            const Vec3f sDir = sDirection(d, normal, ph.pol.x);
+            const Stokes st = rotateFrame(ph.pol.stokes, ph.pol.x, sDir, d);
+            const FacetWaves w = facetWaves(cosI, n);
+            if (!w.totalInternal && ph.rng.uniform() >= w.reflected.share(st)) {
+                const Vec3f out = refractOut(d, normal, n, cosI, w.cosT);
+                ph.pol = {w.refracted.apply(st), sDir};
+                if constexpr (requires { visit.exitPolarization(ph.pol, out); })
+                    visit.exitPolarization(ph.pol, out);
+                visit.exited(hit.facet, p, out, ph.bounces);
+                return false;
+            }
+            ph.pol = {w.reflected.apply(st), sDir};
+        } else {
+            const FresnelResult fr = fresnel(cosI, n);
+            if (!fr.totalInternal && ph.rng.uniform() >= fr.reflectance) {
+                visit.exited(hit.facet, p, refractOut(d, normal, n, cosI, fr.cosT), ph.bounces);
+                return false;
+            }
         }
         ph.p = p;
         ph.d = d - normal * (2 * cosI);
@@ -122,20 +143,47 @@ class PhotonWalker {
         if (!scene.enter(eye, dir, hit)) return false;
         const Vec3f p = eye + dir * hit.t;
         const Vec3f& normal = scene.normal(hit.facet);
-        const float cosI = std::clamp(-dot(dir, normal), 0.0f, 1.0f);
         const float eta = 1.0f / n;
-        const FresnelResult fr = fresnel(cosI, eta);
-        if (ph.rng.uniform() < fr.reflectance) {
-            visit.reflectedAtEntry(hit.facet, p, reflectOff(dir, normal, cosI));
-            return true;
+        ph.n = n;
+        if (s.polarized()) {
+            // An unpolarised eye: by reciprocity the share it sees is what unpolarised light would bring it.
+            ph.pol = {Stokes{}, frameAcross(dir, Vec3f(1, 0, 0))};
+            Vec3f d = dir;
+            if (!enterPolarized(normal, eta, hit.facet, p, d, visit, ph)) return true;
+            ph.d = d;
+        } else {
+            const float cosI = std::clamp(-dot(dir, normal), 0.0f, 1.0f);
+            const FresnelResult fr = fresnel(cosI, eta);
+            if (ph.rng.uniform() < fr.reflectance) {
+                visit.reflectedAtEntry(hit.facet, p, reflectOff(dir, normal, cosI));
+                return true;
+            }
+            ph.d = refractIn(dir, normal, eta, cosI, fr.cosT);
         }
         visit.entered(hit.facet);
         ph.p = p;
-        ph.d = refractIn(dir, normal, eta, cosI, fr.cosT);
-        ph.n = n;
         ph.bounces = 0;
         while (step(s, scene, visit, ph)) {
         }
+        return true;
+    }
+
+    // The polarised reflect-or-refract choice where a ray along d meets facet `facet` (outward normal
+    // `normal`) at p from outside (eta = 1 / n): false after visit.reflectedAtEntry; else d is the refracted
+    // direction and ph.pol the state inside.
+    template <class Visitor>
+    static bool enterPolarized(const Vec3f& normal, float eta, uint32_t facet, const Vec3f& p, Vec3f& d,
+                               Visitor& visit, Photon& ph) {
+        const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
+        const Vec3f sDir = sDirection(d, normal, ph.pol.x);
+        const Stokes st = rotateFrame(ph.pol.stokes, ph.pol.x, sDir, d);
+        const FacetWaves w = facetWaves(cosI, eta);
+        if (ph.rng.uniform() < w.reflected.share(st)) {
+            visit.reflectedAtEntry(facet, p, reflectOff(d, normal, cosI));
+            return false;
+        }
+        d = refractIn(d, normal, eta, cosI, w.cosT);
+        ph.pol = {w.refracted.apply(st), sDir};
         return true;
     }
 
@@ -215,16 +263,15 @@ class PhotonWalker {
     }
     // The bands of photons [begin, end): band k of photon i into exits[(i - begin) * bands.size() + k], as
     // walkBands() gives it. A convex stone's bands are walked a packet at a time, one (photon, band) per
-    // lane.
+    // lane, unless photons carry their polarisation.
     static void blockBands(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const float> bands,
                            std::span<BandExit> exits) {
-        if (s.scene().convex()) {
+        if (s.scene().convex() && !s.polarized()) {
             bandPackets(s, begin, end, bands, exits);
             return;
         }
         for (uint64_t i = begin; i < end; ++i)
-            walkBands(s, *s.scene().embree(), i, bands,
-                      exits.subspan((i - begin) * bands.size(), bands.size()));
+            walkBands(s, i, bands, exits.subspan((i - begin) * bands.size(), bands.size()));
     }
 
     // What the packet walk (photon_packet.cpp, compiled once per SIMD target) reads of the trace and its
@@ -251,8 +298,10 @@ class PhotonWalker {
     // Photons [begin, end) into one thread's tally.
     static void tally(const TraceBase& s, uint64_t begin, uint64_t end, FacetStats& stats) {
         Tally t{s, stats};
-        if (s.scene().convex()) {
+        if (s.scene().convex() && !s.polarized()) {
             packets(s, begin, end, t);
+        } else if (s.scene().convex()) {
+            for (uint64_t i = begin; i < end; ++i) walk(s, *s.scene().convex(), i, t);
         } else {
             for (uint64_t i = begin; i < end; ++i) walk(s, *s.scene().embree(), i, t);
         }

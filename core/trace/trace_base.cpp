@@ -14,7 +14,13 @@ TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
     const double headShadowDeg = scene.lightSettings().headShadowDeg;
     cosHeadShadow_ = headShadowDeg > 0 ? float(std::cos(radians(headShadowDeg))) : 2.0f;
     for (int c = 0; c < kConeCount; ++c) cosCone_[c] = float(std::cos(radians(kConeDegrees[c])));
-    if (scene.light().collimated() && !scene.dispersive()) {
+    if (const std::optional<double> deg = scene.lightSettings().polarizerDeg) {
+        // A tilt turns the stone about x (LightSettings::tiltDeg): the world's horizontal y is cross(up, x).
+        const Vec3f x(1, 0, 0), y = normalize(cross(up_, x));
+        const double a = radians(*deg);
+        polarizer_ = x * float(std::cos(a)) + y * float(std::sin(a));
+    }
+    if (scene.light().collimated() && !scene.dispersive() && !polarized()) {
         // The same float operations as PhotonWalker::enter, so a photon's fate is bit for bit the same.
         const Vec3f d(scene.light().direction());
         const float eta = 1.0f / scene.fixedIndex();

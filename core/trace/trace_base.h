@@ -4,9 +4,11 @@
 // world alone. The statistics trace, the fire trace, the photon pass and the ASET view's rays share it.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "geometry/ray.h"
+#include "optics/polarization.h"
 #include "scene/scene.h"
 #include "stats/facet_stats.h"
 #include "trace/trace_settings.h"
@@ -30,6 +32,14 @@ class TraceBase {
     };
     const std::vector<FixedEntry>& fixedEntries() const { return fixedEntry_; }
 
+    // Whether photons carry their polarisation, and the state a photon leaves the light in along d (stone
+    // frame): unpolarised, or linear along the polariser's axis seen across d.
+    bool polarized() const { return settings_.polarization == PolarizationMode::On; }
+    Polarization sourcePolarization(const Vec3f& d) const {
+        return polarizer_ ? Polarization{Stokes{1, 1, 0, 0}, frameAcross(d, *polarizer_)}
+                          : Polarization{Stokes{}, frameAcross(d, Vec3f(1, 0, 0))};
+    }
+
     // What the tallies need: whether a facet is on the crown side (table or crown), the world's vertical in
     // the stone's frame, the exit-angle bins, cos of the head-shadow half-angle (2 without a head cone) and
     // of each return cone.
@@ -43,6 +53,7 @@ class TraceBase {
     const Scene& scene_;
     TraceSettings settings_;
     std::vector<FixedEntry> fixedEntry_;
+    std::optional<Vec3f> polarizer_;  // the light's polariser axis, stone frame
     std::vector<uint8_t> crownSide_;  // 1 for table and crown facets
     Vec3f up_;
     ExitAngleBins exitBin_;

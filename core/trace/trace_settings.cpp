@@ -58,6 +58,10 @@ const Schema<TraceSettings>& traceSettingsSchema() {
                     {"--no-dispersion", "Trace every photon at 589.3 nm"}),
             count("max_bounces", &TraceSettings::maxBounces, 1, 100000,
                   {"--max-bounces", "Internal reflections before a photon counts as trapped"}),
+            choice("polarization", &TraceSettings::polarization, kPolarizationNames,
+                   {"--polarization",
+                    "off: each facet reflects the unpolarised Fresnel average; on: each photon carries its "
+                    "polarisation (Stokes vector) through every facet"}),
             choice("intersector", inherited<TraceSettings>(&TraceSettings::intersector), kIntersectorNames,
                    {"--intersector", "Ray-stone intersection"}),
             object("light", inherited<TraceSettings>(&TraceSettings::light), lightSettingsSchema()),
@@ -69,6 +73,12 @@ const Schema<TraceSettings>& traceSettingsSchema() {
         // The material's name matters only without an `n` to override it.
         [](const TraceSettings& s, const std::string& path) {
             if (!s.constantIndex) readChoice(s.material, fieldPath(path, "material"), materialChoices());
+            if (s.light.polarizerDeg && s.polarization == PolarizationMode::Off) {
+                const std::string field = fieldPath(path, "light.polarizer_deg");
+                throw Error(field, field +
+                                       " needs polarization on (a polariser means nothing to unpolarised "
+                                       "tracing)");
+            }
         });
     return schema;
 }

@@ -10,6 +10,7 @@
 #include "geometry/geometry.h"
 #include "scene/scene_settings.h"
 #include "settings/settings_schema.h"
+#include "util/name_table.h"
 
 namespace facetlight {
 
@@ -23,12 +24,20 @@ struct FireSettings {
     double pupilAngleDeg() const { return degrees(2 * std::atan(pupilMm / 2 / distanceMm)); }
 };
 
+// How light's polarisation is traced (docs/optics.md, "Polarisation"): off, every facet reflecting the
+// unpolarised Fresnel average (the photon forgets what earlier facets did to it); on, each photon carries its
+// Stokes vector through every facet.
+enum class PolarizationMode { Off, On };
+inline constexpr NameTable<PolarizationMode, 2> kPolarizationNames{
+    {{{PolarizationMode::Off, "off"}, {PolarizationMode::On, "on"}}}};
+
 // The world's settings (the scene's) and the tracer's own.
 struct TraceSettings : SceneSettings {
     uint64_t photons = 1'000'000;
     int threads = 1;
     uint64_t seed = 1;     // photon i draws from Rng(seed, i)
     int maxBounces = 512;  // internal reflections after which a photon counts as trapped (docs/optics.md)
+    PolarizationMode polarization = PolarizationMode::Off;
     FireSettings fire;
 
     // Missing keys keep their defaults; throws Error naming the field by its dotted path.

@@ -183,7 +183,8 @@ TEST(SettingsSchema, JsonRoundTrip) {
     t.dispersion = false;
     t.maxBounces = 7;
     t.intersector = IntersectorKind::Embree;
-    t.light = {LightModelKind::Point, {1, 2, -3}, 12.5, 30, SkyKind::Cosine, {4, 5, 60}};
+    t.polarization = PolarizationMode::On;
+    t.light = {LightModelKind::Point, {1, 2, -3}, 12.5, 30, SkyKind::Cosine, {4, 5, 60}, 45};
     t.fire = {true, 3, 400};
     t.sizeMm = 8;
     t.viewer = ViewerSettings::forSetUp(ViewerSetUp::Close);

@@ -1,0 +1,168 @@
+// The tracer with polarised photons (docs/optics.md, "Polarisation"): analytic averages of whole traces.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "optics/material.h"
+#include "support/expect_error.h"
+#include "support/fixtures.h"
+#include "trace/photon_walker.h"
+
+using namespace facetlight;
+using nlohmann::json;
+
+namespace {
+
+Stone cube() {
+    PolygonMesh m;
+    for (int i = 0; i < 8; ++i)
+        m.vertices.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+    m.polygons = {{{0, 2, 3, 1}, "bottom"}, {{4, 5, 7, 6}, "top"},  {{0, 1, 5, 4}, "front"},
+                  {{2, 6, 7, 3}, "back"},   {{0, 4, 6, 2}, "left"}, {{1, 3, 7, 5}, "right"}};
+    return Stone::build(m, "cube");
+}
+
+uint32_t facetFacing(const Stone& stone, const Vec3& n) {
+    for (const Facet& f : stone.facets)
+        if (dot(f.normal, n) > 0.999) return f.id;
+    throw Error("no such facet");
+}
+
+TraceSettings polarized(uint64_t photons) {
+    TraceSettings s;
+    s.photons = photons;
+    s.seed = 11;
+    s.dispersion = false;
+    s.polarization = PolarizationMode::On;
+    return s;
+}
+
+// What crossed and parallel analysers below the stone pass of the light that leaves through its bottom.
+struct AnalyserTally {
+    Vec3f crossed, parallel;
+    uint32_t bottom;
+    double crossedSum = 0, parallelSum = 0;
+    uint64_t through = 0;
+    Polarization last;
+    Vec3f lastDir;
+
+    void wavelength(float) {}
+    void missed() {}
+    void reflectedAtEntry(uint32_t, const Vec3f&, const Vec3f&) {}
+    void entered(uint32_t) {}
+    void internalReflection(uint32_t) {}
+    void exitPolarization(const Polarization& p, const Vec3f& d) { last = p, lastDir = d; }
+    void exited(uint32_t facet, const Vec3f&, const Vec3f&, uint32_t) {
+        if (facet != bottom) return;
+        ++through;
+        crossedSum += analyserShare(last, lastDir, crossed);
+        parallelSum += analyserShare(last, lastDir, parallel);
+    }
+    void trapped(uint32_t) {}
+    void lost(uint32_t) {}
+};
+
+}  // namespace
+
+TEST(PolarizedTrace, IsotropicSlabBetweenCrossedPolarisersIsDark) {
+    const Stone stone = cube();
+    for (double polarizer : {0.0, 30.0, 90.0}) {
+        TraceSettings settings = polarized(20'000);
+        settings.light.polarizerDeg = polarizer;
+        const Scene scene(stone, settings);
+        const TraceBase trace(scene, settings);
+        const double a = radians(polarizer);
+        const Vec3f along(float(std::cos(a)), float(std::sin(a)), 0);
+        AnalyserTally t{{-along.y, along.x, 0}, along, facetFacing(stone, {0, 0, -1}), 0, 0, 0, {}, {}};
+        for (uint64_t i = 0; i < settings.photons; ++i) PhotonWalker::walk(trace, *scene.convex(), i, t);
+        ASSERT_GT(t.through, settings.photons / 3);
+        // Straight through at normal incidence the light keeps its polarisation (Born & Wolf, sec. 1.5.2).
+        EXPECT_LT(t.crossedSum, 1e-7 * double(t.through)) << polarizer << " (float rounding only)";
+        EXPECT_NEAR(t.parallelSum, double(t.through), 1e-4 * double(t.through)) << polarizer;
+    }
+}
+
+TEST(PolarizedTrace, AtBrewstersAngleOnlySLightReflects) {
+    // Collimated light at Brewster's angle on a diamond cube's top, in the x-z plane: a polariser along x
+    // lets through p light (in the plane of incidence), one along y s light (Born & Wolf, sec. 1.5.3).
+    const Stone stone = cube();
+    const double n = Material::byName("diamond").indexD();
+    const double brewster = std::atan(n);
+    const double thetaT = std::asin(std::sin(brewster) / n);
+    const double rs = std::sin(brewster - thetaT) / std::sin(brewster + thetaT), Rs = rs * rs;
+    const uint32_t top = facetFacing(stone, {0, 0, 1});
+    struct Case {
+        std::optional<double> polarizer;
+        double expected;
+    };
+    for (const Case& c : {Case{0.0, 0.0}, Case{90.0, Rs}, Case{std::nullopt, Rs / 2}}) {
+        TraceSettings settings = polarized(100'000);
+        settings.threads = 2;
+        settings.light.direction = {std::sin(brewster), 0, -std::cos(brewster)};
+        settings.light.polarizerDeg = c.polarizer;
+        const FacetStats s = test::traceStone(stone, settings).stats;
+        const double met = double(s.facets[top].reflected + s.facets[top].entering);
+        ASSERT_GT(met, 10'000);
+        const double reflected = double(s.facets[top].reflected) / met;
+        EXPECT_NEAR(reflected, c.expected, 4 * std::sqrt(Rs * (1 - Rs) / met) + 1e-6)
+            << (c.polarizer ? std::to_string(*c.polarizer) : "unpolarised");
+        if (c.expected == 0) {
+            EXPECT_EQ(s.facets[top].reflected, 0u);
+        }
+    }
+}
+
+TEST(PolarizedTrace, IdenticalForAnyThreadCount) {
+    TraceSettings settings = polarized(3 * kPhotonBlock + 77);
+    settings.dispersion = true;
+    settings.light.model = LightModelKind::Hemisphere;
+    settings.fire.enabled = true;
+    json first;
+    for (int threads : {1, 2, 3}) {
+        settings.threads = threads;
+        const TraceResult r = test::traceStone(test::roundBrilliant(), settings);
+        EXPECT_EQ(r.stats.entered, r.stats.exited + r.stats.trapped);
+        EXPECT_EQ(r.stats.hit, r.stats.entered + r.stats.reflectedAtEntry);
+        json j = traceReport(r, test::roundBrilliant(), settings);
+        j.erase("timing");
+        j["settings"].erase("threads");
+        if (threads == 1) {
+            first = j;
+        } else {
+            EXPECT_EQ(j.dump(), first.dump()) << threads << " threads";
+        }
+    }
+    EXPECT_EQ(first["settings"]["polarization"], "on");
+}
+
+TEST(PolarizedTrace, PolarisedAndUnpolarisedTracesDiffer) {
+    // The same photons and draws: only the reflect-or-refract probabilities after the first facet differ, so
+    // the two traces are close but not the same bits.
+    TraceSettings settings = polarized(20'000);
+    const TraceResult on = test::traceStone(test::roundBrilliant(), settings);
+    settings.polarization = PolarizationMode::Off;
+    const TraceResult off = test::traceStone(test::roundBrilliant(), settings);
+    EXPECT_FALSE(on.stats == off.stats);
+    EXPECT_EQ(on.stats.hit, off.stats.hit);
+    EXPECT_NEAR(double(on.stats.exited) / double(on.stats.hit),
+                double(off.stats.exited) / double(off.stats.hit), 0.02);
+}
+
+TEST(PolarizedTrace, PolariserNeedsPolarisedTracing) {
+    test::expectError(
+        [] {
+            TraceSettings::fromJson({{"light", {{"polarizer_deg", 30}}}});
+        },
+        "light.polarizer_deg");
+    test::expectError([] { TraceSettings::fromJson({{"polarization", "partly"}}); }, "polarization");
+    test::expectError(
+        [] {
+            TraceSettings::fromJson({{"polarization", "on"}, {"light", {{"polarizer_deg", 180}}}});
+        },
+        "light.polarizer_deg");
+    const TraceSettings s =
+        TraceSettings::fromJson({{"polarization", "on"}, {"light", {{"polarizer_deg", 30}}}});
+    EXPECT_EQ(s.polarization, PolarizationMode::On);
+    EXPECT_EQ(*s.light.polarizerDeg, 30);
+    EXPECT_EQ(toJson(s)["light"]["polarizer_deg"], 30);
+}
