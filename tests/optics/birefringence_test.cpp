@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 
 #include "util/error.h"
 
@@ -96,17 +97,38 @@ TEST(Birefringence, BrewsterAngleReflectsNoP) {
     EXPECT_LT(inside.reflected[0].share[0] + inside.reflected[1].share[0], 1e-24);
 }
 
+// Every outgoing ray leaves on its own side of the facet (outward normal `normal`): reflected rays back, transmitted
+// rays across. Returns how many of them have a wave normal pointing the other way (an extraordinary wave in a
+// strongly birefringent crystal near grazing), the case where the energy flow, not the wave normal, must choose.
+int countRaysOnTheirSide(const InterfaceWaves& w, const Vec3& normal) {
+    const double towardsReflected = w.incidentCount == 2 ? 1 : -1;
+    int backward = 0;
+    for (int j = 0; j < 2; ++j) {
+        for (const auto& [o, side] : {std::pair{&w.reflected[j], towardsReflected},
+                                      std::pair{&w.transmitted[j], -towardsReflected}}) {
+            if (!o->propagating) continue;
+            EXPECT_GT(side * dot(o->wave.ray, normal), 0);
+            if (side * dot(o->wave.waveNormal, normal) < 0) ++backward;
+        }
+    }
+    return backward;
+}
+
 TEST(Birefringence, EnergyIsConservedFromOutside) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> index(1.3, 2.8), unit(0, 1);
+    int backwardWaveNormals = 0;
     for (int trial = 0; trial < 2000; ++trial) {
         const UniaxialMedium crystal{index(rng), index(rng), randomUnit(rng)};
         const Vec3 normal = randomUnit(rng);
         Vec3 d = randomUnit(rng);
         if (dot(d, normal) > -1e-3) d = d - normal * (2 * dot(d, normal));
         if (dot(d, normal) > -1e-3) continue;
-        const InterfaceWaves w = enterCrystal(crystal, d, normal);
+        // Mostly air; sometimes a denser immersion liquid, where a crystal's wave normals can point backwards.
+        const double outside = trial % 4 ? 1.0 : index(rng);
+        const InterfaceWaves w = enterCrystal(crystal, d, normal, outside);
         for (int basis = 0; basis < 2; ++basis) EXPECT_NEAR(totalShare(w, basis), 1, 1e-12) << trial;
+        backwardWaveNormals += countRaysOnTheirSide(w, normal);
         // Any coherent or partial state: the outgoing shares add up to the incident intensity.
         const double a = unit(rng), phase = 2 * kPi * unit(rng);
         const Coherency j{a, 1 - a, std::polar(std::sqrt(a * (1 - a)) * unit(rng), phase)};
@@ -117,12 +139,13 @@ TEST(Birefringence, EnergyIsConservedFromOutside) {
         }
         EXPECT_NEAR(sum, 1, 1e-12) << trial;
     }
+    EXPECT_GT(backwardWaveNormals, 0);
 }
 
 TEST(Birefringence, EnergyIsConservedFromInsideWithTotalInternalReflection) {
     std::mt19937_64 rng(4);
     std::uniform_real_distribution<double> index(1.3, 2.8);
-    int total = 0, totalInternal = 0, partial = 0;
+    int total = 0, totalInternal = 0, partial = 0, backwardWaveNormals = 0;
     for (int trial = 0; trial < 4000; ++trial) {
         const UniaxialMedium crystal{index(rng), index(rng), randomUnit(rng)};
         const Vec3 k = randomUnit(rng);
@@ -133,6 +156,7 @@ TEST(Birefringence, EnergyIsConservedFromInsideWithTotalInternalReflection) {
         const InterfaceWaves w = leaveCrystal(crystal, in, normal);
         ++total;
         EXPECT_NEAR(totalShare(w, 0), 1, 1e-12) << trial;
+        backwardWaveNormals += countRaysOnTheirSide(w, normal);
         if (w.totalInternalReflection()) {
             ++totalInternal;
             EXPECT_EQ(w.transmitted[0].share[0] + w.transmitted[1].share[0], 0);
@@ -143,6 +167,7 @@ TEST(Birefringence, EnergyIsConservedFromInsideWithTotalInternalReflection) {
     EXPECT_GT(totalInternal, total / 5);
     EXPECT_LT(totalInternal, total);
     EXPECT_GT(partial, 0);
+    EXPECT_GT(backwardWaveNormals, 0);
 }
 
 TEST(Birefringence, TotalInternalReflectionReflectsEverythingWithPhases) {
@@ -180,8 +205,17 @@ TEST(Birefringence, TotalInternalReflectionPhasesAreFresnels) {
     const Complex rp = reflectedAlong(wp, cross(kr, s)) / dot(wp.incident[0].field, cross(k, s));
     EXPECT_NEAR(std::abs(rs), 1, 1e-12);
     EXPECT_NEAR(std::abs(rp), 1, 1e-12);
-    EXPECT_NEAR(std::abs(std::arg(rs)), ds, 1e-9);
-    EXPECT_NEAR(std::abs(std::arg(rp / rs)), dp - ds, 1e-9);
+    // Fields go as exp(i (k.r - w t)) and the evanescent wave decays: the phases are -d_s and -d_p.
+    EXPECT_NEAR(std::arg(rs), -ds, 1e-9);
+    EXPECT_NEAR(std::arg(rp / rs), -(dp - ds), 1e-9);
+    // The same from the other side: glass outside, an isotropic "crystal" of index 1 whose two waves are both
+    // evanescent, and which must decay into it for the phases to be the same.
+    const UniaxialMedium vacuum{1, 1, normalize(Vec3{1, 2, 2})};
+    const InterfaceWaves out = enterCrystal(vacuum, incoming(i), {0, 0, 1}, n1);
+    ASSERT_TRUE(out.totalInternalReflection());
+    EXPECT_NEAR(out.reflected[0].share[0] + out.reflected[1].share[0], 1, 1e-12);
+    EXPECT_NEAR(std::arg(out.reflected[0].amplitude[0]), -ds, 1e-9);
+    EXPECT_NEAR(std::arg(out.reflected[1].amplitude[1]), -dp, 1e-9);
 }
 
 TEST(Birefringence, WaveNormalsObeySnell) {
