@@ -58,7 +58,8 @@ PlaneWave extraordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal
 
 // One outgoing wave of an interface. Amplitudes are relative to the incident wave of unit E (per incident basis
 // polarisation: from outside s then p, from inside only [0]); the wave's field is wave.field times the
-// amplitude. fluxRatio is the wave's flux through the interface per unit |amplitude|^2, relative to the
+// amplitude, with fields going as exp(i (k.r - omega t)) (so total internal reflection gives Fresnel's phases
+// as -delta_s, -delta_p). fluxRatio is the wave's flux through the interface per unit |amplitude|^2, relative to the
 // incident wave's, so share[i] = fluxRatio * |amplitude[i]|^2 is its share of the incident energy. An evanescent
 // wave (propagating == false: beyond total internal reflection) carries no energy; its `wave` is not set.
 struct OutgoingWave {
