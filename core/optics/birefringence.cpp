@@ -60,7 +60,7 @@ Vec3 epsilonTimes(const UniaxialMedium& m, const Vec3& v) {
 }
 
 // E of the ordinary wave of (possibly complex) wave vector k: along k x c, perpendicular to the axis and to k
-// (Born & Wolf 15.3). Along the axis, the part of `reference` perpendicular to the axis.
+// (Born & Wolf ch. 15). Along the axis, the part of `reference` perpendicular to the axis.
 CVec3 ordinaryField(const UniaxialMedium& m, const CVec3& k, const Vec3& reference) {
     const CVec3 e = cross(k, toComplex(m.axis));
     if (norm2(e) > kAlongAxis * kAlongAxis * norm2(k)) return e;
@@ -68,7 +68,7 @@ CVec3 ordinaryField(const UniaxialMedium& m, const CVec3& k, const Vec3& referen
 }
 
 // E of the extraordinary wave: D lies in the plane of k and c, perpendicular to k, D ~ c (k.k) - k (k.c), and
-// E = eps^-1 D (Yariv & Yeh 4.2). Along the axis, k x E_o.
+// E = eps^-1 D (Yariv & Yeh ch. 4). Along the axis, k x E_o.
 CVec3 extraordinaryField(const UniaxialMedium& m, const CVec3& k, const Vec3& reference) {
     const CVec3 c = toComplex(m.axis);
     const CVec3 d = c * dot(k, k) - k * dot(k, c);

@@ -35,7 +35,7 @@ struct UniaxialMedium {
 };
 
 // The extraordinary index along a unit wave normal at angle theta to the axis:
-// 1 / n^2 = cos^2 theta / n_o^2 + sin^2 theta / n_e^2 (Born & Wolf 15.3).
+// 1 / n^2 = cos^2 theta / n_o^2 + sin^2 theta / n_e^2 (Born & Wolf ch. 15).
 double extraordinaryIndex(const UniaxialMedium& medium, const Vec3& waveNormal);
 
 // Ordinary and extraordinary in a crystal; s (E perpendicular to the plane of incidence) and p (E in it) in the

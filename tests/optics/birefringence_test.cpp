@@ -243,7 +243,7 @@ TEST(Birefringence, WaveNormalsObeySnell) {
     }
 }
 
-// A cleavage rhomb of calcite (n_o 1.6584, n_e 1.4864 at 589 nm; Born & Wolf 15.3, Hecht 8.4) at normal
+// A cleavage rhomb of calcite (n_o 1.6584, n_e 1.4864 at 589 nm: Hecht, Optics, ch. 8; Born & Wolf ch. 15) at normal
 // incidence, the optic axis 44.6 deg from the face normal. The e ray leaves the wave normal (the face normal)
 // by rho: its ray is along eps k, at tan(phi) = (n_o^2 / n_e^2) tan(theta) from the axis, so
 // tan(rho) = tan(phi - theta) = (n_o^2 - n_e^2) sin t cos t / (n_e^2 cos^2 t + n_o^2 sin^2 t) = 6.23 deg
@@ -266,9 +266,24 @@ TEST(Birefringence, CalciteRhombWalkOff) {
     EXPECT_LT(std::fabs(dot(e.ray, calcite.axis)), std::fabs(dot(e.waveNormal, calcite.axis)));
     const double separationMm = 10 * std::fabs(e.ray.x / e.ray.z);
     EXPECT_NEAR(separationMm, 1.092, 0.001);
-    // Unpolarised light shares the transmitted energy between the two images nearly equally.
-    const Coherency unpolarised;
-    EXPECT_NEAR(shareOf(w.transmitted[0], unpolarised), shareOf(w.transmitted[1], unpolarised), 0.01);
+    // Light polarised across the principal plane (along y) enters wholly as the o wave, light polarised in it
+    // (along x) wholly as the e wave, each reflected as from glass of its index along the normal: at normal
+    // incidence only E's tangential part enters the boundary conditions, with H = n z x E_t.
+    auto coherent = [&](const Vec3& e) {
+        const double as = dot(e, w.incident[0].field), ap = dot(e, w.incident[1].field);
+        return Coherency{as * as, ap * ap, as * ap};
+    };
+    const double nTheta = extraordinaryIndex(calcite, {0, 0, 1});
+    EXPECT_NEAR(nTheta, 1 / std::sqrt(std::cos(t) * std::cos(t) / (no * no) + std::sin(t) * std::sin(t) / (ne * ne)),
+                1e-15);
+    EXPECT_NEAR(e.index, nTheta, 1e-15);
+    EXPECT_NEAR(shareOf(w.transmitted[0], coherent({0, 1, 0})), 1 - fresnel(1, no, 0).Rs, 1e-12);
+    EXPECT_NEAR(shareOf(w.transmitted[1], coherent({0, 1, 0})), 0, 1e-12);
+    EXPECT_NEAR(shareOf(w.transmitted[1], coherent({1, 0, 0})), 1 - fresnel(1, nTheta, 0).Rs, 1e-12);
+    EXPECT_NEAR(shareOf(w.transmitted[0], coherent({1, 0, 0})), 0, 1e-12);
+    // The e wave's field leans out of the face with its ray: E is perpendicular to the ray, not to k.
+    EXPECT_NEAR(dot(e.field, e.ray), 0, 1e-15);
+    EXPECT_GT(std::fabs(e.field.z), 0.1);
 }
 
 TEST(Birefringence, AxisAlongTheNormalDoesNotSplitAtNormalIncidence) {
