@@ -45,8 +45,8 @@ Vec3 perpendicularTo(const Vec3& n) {
     return {1 + sign * n.x * n.x * a, sign * n.x * n.y * a, -sign * n.x};
 }
 
-// Below this |k x c| / |k| the wave normal counts as along the axis, where the ordinary and extraordinary waves
-// are degenerate and k x c no longer fixes a direction.
+// Below this |k x c| / |k| the wave normal counts as along the axis, where the ordinary and extraordinary
+// waves are degenerate and k x c no longer fixes a direction.
 constexpr double kAlongAxis = 1e-9;
 
 // eps^-1 v for eps = n_o^2 I + (n_e^2 - n_o^2) c c^T.
@@ -78,9 +78,9 @@ CVec3 extraordinaryField(const UniaxialMedium& m, const CVec3& k, const Vec3& re
 
 // One wave of the interface problem: its wave vector and field (complex when evanescent), and for a
 // propagating wave the normal component of its unit ray direction. That component is taken from the root
-// (q / n, or sqrt(b^2 - a c) / |eps k|) rather than from the vectors: near grazing it is small, and the incident
-// and the reflected wave of the same kind then carry exactly opposite fluxes, which keeps energy conserved to
-// rounding there too.
+// (q / n, or sqrt(b^2 - a c) / |eps k|) rather than from the vectors: near grazing it is small, and the
+// incident and the reflected wave of the same kind then carry exactly opposite fluxes, which keeps energy
+// conserved to rounding there too.
 struct Wave {
     WaveMode mode;
     CVec3 k;
@@ -90,12 +90,12 @@ struct Wave {
 };
 
 // The normal component q of the wave vector kt + q N of each outgoing wave. `side` is +1 for the waves whose
-// energy leaves along +N (transmitted), -1 for those leaving along -N (reflected); an evanescent wave must decay
-// on its side, Im(q) side > 0. For |k|^2 = n^2: q = side sqrt(n^2 - kt^2), the flux is along k. For the
+// energy leaves along +N (transmitted), -1 for those leaving along -N (reflected); an evanescent wave must
+// decay on its side, Im(q) side > 0. For |k|^2 = n^2: q = side sqrt(n^2 - kt^2), the flux is along k. For the
 // extraordinary wave, k.eps.k = n_o^2 n_e^2 is the quadratic a q^2 + 2 b q + c = 0 with a = N.eps.N,
 // b = kt.eps.N, c = kt.eps.kt - n_o^2 n_e^2; its ray is along eps k (the normal to the index surface), whose
-// normal component is b + a q = +-sqrt(b^2 - a c): the root with +sqrt sends energy along +N whichever way its
-// wave normal points. The principal complex square root gives the decaying root for either side.
+// normal component is b + a q = +-sqrt(b^2 - a c): the root with +sqrt sends energy along +N whichever way
+// its wave normal points. The principal complex square root gives the decaying root for either side.
 Wave isotropicWave(WaveMode mode, double n, const Vec3& kt, const Vec3& N, const Vec3& s, int side) {
     const Complex q = double(side) * std::sqrt(Complex(n * n - dot(kt, kt)));
     const CVec3 k = toComplex(kt) + toComplex(N) * q;
@@ -111,7 +111,8 @@ Wave ordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const Vec3& 
     return {WaveMode::Ordinary, k, ordinaryField(m, k, s), q2 > 0, q2 > 0 ? q.real() / m.nO : 0};
 }
 
-Wave extraordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s, int side) {
+Wave extraordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s,
+                                int side) {
     const Vec3 epsN = epsilonTimes(m, N);
     const double a = dot(N, epsN), b = dot(kt, epsN);
     const double c = dot(kt, epsilonTimes(m, kt)) - m.nO * m.nO * m.nE * m.nE;
@@ -124,8 +125,8 @@ Wave extraordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const V
     return {WaveMode::Extraordinary, k, extraordinaryField(m, k, s), propagating, rayNormal};
 }
 
-// The time-averaged Poynting flux along N of a propagating wave of unit field, up to the factor common to every
-// wave: N . Re(E x conj(H)) with H = k x E, i.e. |k - E (k.E)| times the normal component of the ray.
+// The time-averaged Poynting flux along N of a propagating wave of unit field, up to the factor common to
+// every wave: N . Re(E x conj(H)) with H = k x E, i.e. |k - E (k.E)| times the normal component of the ray.
 double normalFlux(const Wave& w) {
     const Vec3 k = realPart(w.k), e = normalize(realPart(w.field));
     return length(k - e * dot(k, e)) * w.rayNormal;
@@ -149,7 +150,8 @@ void solve4(Complex a[4][4], Complex b[4][2], int columns) {
         int pivot = col;
         for (int r = col + 1; r < 4; ++r)
             if (std::abs(a[r][col]) > std::abs(a[pivot][col])) pivot = r;
-        if (!(std::abs(a[pivot][col]) > 0)) throw Error("birefringence: the interface equations are singular");
+        if (!(std::abs(a[pivot][col]) > 0))
+            throw Error("birefringence: the interface equations are singular");
         if (pivot != col) {
             for (int j = 0; j < 4; ++j) std::swap(a[col][j], a[pivot][j]);
             for (int j = 0; j < columns; ++j) std::swap(b[col][j], b[pivot][j]);
@@ -277,19 +279,20 @@ InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction
     return out;
 }
 
-InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& incident, const Vec3& outwardNormal,
-                            double nOutside) {
+InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& incident,
+                            const Vec3& outwardNormal, double nOutside) {
     checkIndices(crystal, nOutside);
     const Vec3& N = outwardNormal;  // along the incident energy flow, out of the crystal
     if (incident.mode != WaveMode::Ordinary && incident.mode != WaveMode::Extraordinary)
         throw Error("birefringence: a wave inside the crystal is ordinary or extraordinary");
-    if (!(dot(incident.ray, N) > 0)) throw Error("birefringence: the wave's energy does not travel into the facet");
+    if (!(dot(incident.ray, N) > 0))
+        throw Error("birefringence: the wave's energy does not travel into the facet");
     const Vec3 k = incident.waveNormal * incident.index;
     const Vec3 kt = k - N * dot(k, N);
     const Vec3 s = sDirection(kt, N);
 
-    // The incident wave as given (its field may be any one of a degenerate pair), its ray's normal component
-    // from the same root as its reflected twin's (Wave), unless rounding at grazing incidence loses that root.
+    // The incident wave as given (its field may be any one of a degenerate pair), its ray's normal
+    // component from the same root as its reflected twin's (Wave), unless rounding at grazing loses the root.
     const Wave twin = incident.mode == WaveMode::Ordinary ? ordinaryInterfaceWave(crystal, kt, N, s, 1)
                                                           : extraordinaryInterfaceWave(crystal, kt, N, s, 1);
     const double rayNormal = twin.rayNormal > 0 ? twin.rayNormal : dot(incident.ray, N);
@@ -307,7 +310,8 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
 
 double shareOf(const OutgoingWave& wave, const Coherency& j) {
     const Complex ts = wave.amplitude[0], tp = wave.amplitude[1];
-    return wave.fluxRatio * (std::norm(ts) * j.ss + std::norm(tp) * j.pp + 2 * (ts * std::conj(tp) * j.sp).real());
+    return wave.fluxRatio *
+           (std::norm(ts) * j.ss + std::norm(tp) * j.pp + 2 * (ts * std::conj(tp) * j.sp).real());
 }
 
 }  // namespace facetlight

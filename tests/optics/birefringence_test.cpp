@@ -79,7 +79,8 @@ TEST(Birefringence, IsotropicCrystalFromInsideIsFresnel) {
             const double fs = dot(in.field, s), fp2 = 1 - fs * fs;
             EXPECT_NEAR(w.transmitted[0].share[0], fs * fs * (1 - f.Rs), 1e-12) << deg;
             EXPECT_NEAR(w.transmitted[1].share[0], fp2 * (1 - f.Rp), 1e-12) << deg;
-            EXPECT_NEAR(w.reflected[0].share[0] + w.reflected[1].share[0], fs * fs * f.Rs + fp2 * f.Rp, 1e-12);
+            EXPECT_NEAR(w.reflected[0].share[0] + w.reflected[1].share[0], fs * fs * f.Rs + fp2 * f.Rp,
+                        1e-12);
         }
     }
 }
@@ -97,9 +98,10 @@ TEST(Birefringence, BrewsterAngleReflectsNoP) {
     EXPECT_LT(inside.reflected[0].share[0] + inside.reflected[1].share[0], 1e-24);
 }
 
-// Every outgoing ray leaves on its own side of the facet (outward normal `normal`): reflected rays back, transmitted
-// rays across. Returns how many of them have a wave normal pointing the other way (an extraordinary wave in a
-// strongly birefringent crystal near grazing), the case where the energy flow, not the wave normal, must choose.
+// Every outgoing ray leaves on its own side of the facet (outward normal `normal`): reflected rays back,
+// transmitted rays across. Returns how many of them have a wave normal pointing the other way (an
+// extraordinary wave in a strongly birefringent crystal near grazing), the case where the energy flow, not
+// the wave normal, must choose.
 int countRaysOnTheirSide(const InterfaceWaves& w, const Vec3& normal) {
     const double towardsReflected = w.incidentCount == 2 ? 1 : -1;
     int backward = 0;
@@ -124,7 +126,7 @@ TEST(Birefringence, EnergyIsConservedFromOutside) {
         Vec3 d = randomUnit(rng);
         if (dot(d, normal) > -1e-3) d = d - normal * (2 * dot(d, normal));
         if (dot(d, normal) > -1e-3) continue;
-        // Mostly air; sometimes a denser immersion liquid, where a crystal's wave normals can point backwards.
+        // Mostly air; sometimes a denser liquid, where a crystal's wave normals can point backwards.
         const double outside = trial % 4 ? 1.0 : index(rng);
         const InterfaceWaves w = enterCrystal(crystal, d, normal, outside);
         for (int basis = 0; basis < 2; ++basis) EXPECT_NEAR(totalShare(w, basis), 1, 1e-12) << trial;
@@ -133,7 +135,8 @@ TEST(Birefringence, EnergyIsConservedFromOutside) {
         const double a = unit(rng), phase = 2 * kPi * unit(rng);
         const Coherency j{a, 1 - a, std::polar(std::sqrt(a * (1 - a)) * unit(rng), phase)};
         double sum = 0;
-        for (const OutgoingWave* o : {&w.reflected[0], &w.reflected[1], &w.transmitted[0], &w.transmitted[1]}) {
+        for (const OutgoingWave* o :
+             {&w.reflected[0], &w.reflected[1], &w.transmitted[0], &w.transmitted[1]}) {
             EXPECT_GE(o->fluxRatio, 0);
             sum += shareOf(*o, j);
         }
@@ -182,8 +185,9 @@ TEST(Birefringence, TotalInternalReflectionReflectsEverythingWithPhases) {
     EXPECT_GT(std::abs(std::arg(w.reflected[0].amplitude[0])), 0.1);
 }
 
-// Fresnel's rhomb (docs/optics.md): glass of 1.51 at 54.6 deg; total internal reflection delays p against s by
-// d_p - d_s with tan(d_s/2) = sqrt(sin^2 i - n^2) / cos i, tan(d_p/2) = the same / n^2 (n = 1 / 1.51): 45 deg.
+// Fresnel's rhomb (docs/optics.md): glass of 1.51 at 54.6 deg; total internal reflection delays p against s
+// by d_p - d_s = 45 deg, with tan(d_s/2) = sqrt(sin^2 i - n^2) / cos i and tan(d_p/2) = the same / n^2
+// (n = 1 / 1.51).
 TEST(Birefringence, TotalInternalReflectionPhasesAreFresnels) {
     const double n1 = 1.51, i = 54.6 * kDeg, n = 1 / n1;
     const double root = std::sqrt(std::sin(i) * std::sin(i) - n * n);
@@ -243,9 +247,9 @@ TEST(Birefringence, WaveNormalsObeySnell) {
     }
 }
 
-// A cleavage rhomb of calcite (n_o 1.6584, n_e 1.4864 at 589 nm: Hecht, Optics, ch. 8; Born & Wolf ch. 15) at normal
-// incidence, the optic axis 44.6 deg from the face normal. The e ray leaves the wave normal (the face normal)
-// by rho: its ray is along eps k, at tan(phi) = (n_o^2 / n_e^2) tan(theta) from the axis, so
+// A cleavage rhomb of calcite (n_o 1.6584, n_e 1.4864 at 589 nm: Hecht, Optics, ch. 8; Born & Wolf ch. 15) at
+// normal incidence, the optic axis 44.6 deg from the face normal. The e ray leaves the wave normal (the face
+// normal) by rho: its ray is along eps k, at tan(phi) = (n_o^2 / n_e^2) tan(theta) from the axis, so
 // tan(rho) = tan(phi - theta) = (n_o^2 - n_e^2) sin t cos t / (n_e^2 cos^2 t + n_o^2 sin^2 t) = 6.23 deg
 // (docs/optics.md); a 10 mm rhomb shows two images 10 tan(rho) = 1.09 mm apart.
 TEST(Birefringence, CalciteRhombWalkOff) {
@@ -257,8 +261,9 @@ TEST(Birefringence, CalciteRhombWalkOff) {
     EXPECT_NEAR(o.ray.z, -1, 1e-15);
     EXPECT_NEAR(e.waveNormal.z, -1, 1e-15);
     const double rho = std::acos(-e.ray.z);
-    const double closed = std::atan((no * no - ne * ne) * std::sin(t) * std::cos(t) /
-                                    (ne * ne * std::cos(t) * std::cos(t) + no * no * std::sin(t) * std::sin(t)));
+    const double closed =
+        std::atan((no * no - ne * ne) * std::sin(t) * std::cos(t) /
+                  (ne * ne * std::cos(t) * std::cos(t) + no * no * std::sin(t) * std::sin(t)));
     EXPECT_NEAR(rho, closed, 1e-12);
     EXPECT_NEAR(rho / kDeg, 6.23, 0.005);
     // Walk-off in the principal plane (the axis and the normal), away from the axis in a negative crystal.
@@ -274,7 +279,8 @@ TEST(Birefringence, CalciteRhombWalkOff) {
         return Coherency{as * as, ap * ap, as * ap};
     };
     const double nTheta = extraordinaryIndex(calcite, {0, 0, 1});
-    EXPECT_NEAR(nTheta, 1 / std::sqrt(std::cos(t) * std::cos(t) / (no * no) + std::sin(t) * std::sin(t) / (ne * ne)),
+    EXPECT_NEAR(nTheta,
+                1 / std::sqrt(std::cos(t) * std::cos(t) / (no * no) + std::sin(t) * std::sin(t) / (ne * ne)),
                 1e-15);
     EXPECT_NEAR(e.index, nTheta, 1e-15);
     EXPECT_NEAR(shareOf(w.transmitted[0], coherent({0, 1, 0})), 1 - fresnel(1, no, 0).Rs, 1e-12);
