@@ -173,6 +173,31 @@ TEST(Birefringence, EnergyIsConservedFromInsideWithTotalInternalReflection) {
     EXPECT_GT(backwardWaveNormals, 0);
 }
 
+// Reciprocity (Lorentz; eps is symmetric): a wave the facet lets in, sent back along its own ray, leaves into
+// air along the incoming light's path, each of s and p taking the share that the same polarisation gave it
+// coming in. Ties the two entry points together.
+TEST(Birefringence, TransmissionIsReciprocal) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> index(1.3, 2.8);
+    for (int trial = 0; trial < 500; ++trial) {
+        const UniaxialMedium crystal{index(rng), index(rng), randomUnit(rng)};
+        const Vec3 normal = randomUnit(rng);
+        Vec3 d = randomUnit(rng);
+        if (dot(d, normal) > 0) d = -d;
+        if (dot(d, normal) > -1e-2) continue;
+        const InterfaceWaves in = enterCrystal(crystal, d, normal);
+        for (const OutgoingWave& t : in.transmitted) {
+            PlaneWave back = t.wave;
+            back.waveNormal = -back.waveNormal;
+            back.ray = -back.ray;
+            const InterfaceWaves out = leaveCrystal(crystal, back, normal);
+            EXPECT_NEAR(length(out.transmitted[0].wave.ray + d), 0, 1e-12);
+            EXPECT_NEAR(out.transmitted[0].share[0], t.share[0], 1e-12) << trial;
+            EXPECT_NEAR(out.transmitted[1].share[0], t.share[1], 1e-12) << trial;
+        }
+    }
+}
+
 TEST(Birefringence, TotalInternalReflectionReflectsEverythingWithPhases) {
     const UniaxialMedium sapphire{1.768, 1.760, normalize(Vec3{1, 2, 3})};
     const PlaneWave in = ordinaryWave(sapphire, incoming(50 * kDeg) * -1.0);  // critical angle ~34.5 deg
