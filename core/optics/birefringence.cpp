@@ -231,9 +231,11 @@ Vec3 sDirection(const Vec3& kt, const Vec3& N) {
     return len > 1e-12 ? s / len : perpendicularTo(N);
 }
 
-void checkIndices(const UniaxialMedium& crystal, double nOutside) {
+void checkMedia(const UniaxialMedium& crystal, double nOutside) {
     if (!(crystal.nO > 0 && crystal.nE > 0 && nOutside > 0))
         throw Error("birefringence: indices must be positive");
+    if (!(std::fabs(dot(crystal.axis, crystal.axis) - 1) < 1e-9))
+        throw Error("birefringence: the optic axis must be a unit vector");
 }
 
 }  // namespace
@@ -259,7 +261,7 @@ PlaneWave extraordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal
 
 InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction, const Vec3& outwardNormal,
                             double nOutside) {
-    checkIndices(crystal, nOutside);
+    checkMedia(crystal, nOutside);
     const Vec3 N = -outwardNormal;  // along the incident energy flow, into the crystal
     const double cosI = dot(direction, N);
     if (!(cosI > 0)) throw Error("birefringence: the light does not travel into the facet");
@@ -281,7 +283,7 @@ InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction
 
 InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& incident,
                             const Vec3& outwardNormal, double nOutside) {
-    checkIndices(crystal, nOutside);
+    checkMedia(crystal, nOutside);
     const Vec3& N = outwardNormal;  // along the incident energy flow, out of the crystal
     if (incident.mode != WaveMode::Ordinary && incident.mode != WaveMode::Extraordinary)
         throw Error("birefringence: a wave inside the crystal is ordinary or extraordinary");

@@ -27,7 +27,8 @@ namespace facetlight {
 using Complex = std::complex<double>;
 
 // A uniaxial crystal: ordinary and extraordinary indices and the unit optic axis. n_o == n_e is an isotropic
-// medium (then the "ordinary" and "extraordinary" waves are just two orthogonal polarisations).
+// medium (then the "ordinary" and "extraordinary" waves are just two orthogonal polarisations). The interface
+// functions refuse (Error) an index that is not positive or an axis that is not of unit length.
 struct UniaxialMedium {
     double nO = 1;
     double nE = 1;

@@ -362,6 +362,8 @@ TEST(Birefringence, RefusesLightThatDoesNotMeetTheFacet) {
     EXPECT_THROW(enterCrystal(quartz, {0, 0, 1}, {0, 0, 1}), Error);
     EXPECT_THROW(leaveCrystal(quartz, ordinaryWave(quartz, {0, 0, -1}), {0, 0, 1}), Error);
     EXPECT_THROW(enterCrystal(UniaxialMedium{0, 1.5, {0, 0, 1}}, {0, 0, -1}, {0, 0, 1}), Error);
+    EXPECT_THROW(enterCrystal(UniaxialMedium{1.5, 1.6, {0, 0, 2}}, {0, 0, -1}, {0, 0, 1}), Error);
+    EXPECT_THROW(leaveCrystal(quartz, ordinaryWave(quartz, {0, 0, 1}), {0, 0, 1}, NAN), Error);
 }
 
 }  // namespace
