@@ -1,0 +1,117 @@
+#pragma once
+// The optics of one plane interface between a uniaxial crystal and an isotropic medium (air): the waves a
+// plane wave makes there, their directions, polarisations, complex amplitudes and energy shares
+// (docs/optics.md, "Birefringence: waves at an interface").
+//
+// Model: a non-magnetic crystal of dielectric tensor eps = n_o^2 I + (n_e^2 - n_o^2) c c^T (unit optic axis
+// c). Wave vectors are in units of the vacuum wave number, so |k| is the index along the wave normal. At the
+// interface the tangential part of k is conserved; each outgoing wave's normal component q solves its
+// dispersion relation (|k| = n_o for the ordinary wave, k.eps.k = n_o^2 n_e^2 for the extraordinary one) and
+// is chosen by the side its energy flows to, not by its wave normal; the four amplitudes (two reflected, two
+// transmitted) follow from the continuity of tangential E and H = k x E (mu = 1), in complex arithmetic so
+// that total internal reflection (evanescent waves) needs no special case. Sources: Born & Wolf, Principles
+// of Optics, ch. 15 (crystal optics); Yariv & Yeh, Optical Waves in Crystals, ch. 4; Weidlich & Wilkie,
+// "Realistic rendering of birefringency in uniaxial crystals", ACM TOG 27(1), 2008; Lekner, "Reflection and
+// refraction by uniaxial crystals", J. Phys.: Condens. Matter 3, 6121 (1991), whose amplitudes r_ss ... t_pe
+// this solves numerically.
+//
+// Why a small 4x4 complex solve rather than Lekner's closed forms: one code path serves both sides of the
+// interface, any axis, and total internal reflection, and the isotropic limit (n_o == n_e) reduces to
+// Fresnel's s/p amplitudes to rounding. Everything is fixed-size: no heap allocation per call.
+#include <complex>
+
+#include "geometry/geometry.h"
+
+namespace facetlight {
+
+using Complex = std::complex<double>;
+
+// A uniaxial crystal: ordinary and extraordinary indices and the unit optic axis. n_o == n_e is an isotropic
+// medium (then the "ordinary" and "extraordinary" waves are just two orthogonal polarisations). The interface
+// functions refuse (Error) an index that is not positive or an axis that is not of unit length.
+struct UniaxialMedium {
+    double nO = 1;
+    double nE = 1;
+    Vec3 axis{0, 0, 1};
+};
+
+// The extraordinary index along a unit wave normal at angle theta to the axis:
+// 1 / n^2 = cos^2 theta / n_o^2 + sin^2 theta / n_e^2 (Born & Wolf ch. 15).
+double extraordinaryIndex(const UniaxialMedium& medium, const Vec3& waveNormal);
+
+// Ordinary and extraordinary in a crystal; s (E perpendicular to the plane of incidence) and p (E in it) in
+// the isotropic medium outside.
+enum class WaveMode : unsigned char { S, P, Ordinary, Extraordinary };
+
+// A propagating plane wave. All vectors are unit and real.
+struct PlaneWave {
+    WaveMode mode = WaveMode::S;
+    Vec3 waveNormal;   // k / |k|
+    Vec3 ray;          // energy (Poynting) direction; differs from waveNormal only for an extraordinary wave
+    Vec3 field;        // E; for ordinary waves perpendicular to the axis and to k
+    double index = 1;  // |k|: n_o, n(theta) or the outside index
+};
+
+// The crystal's eigenmodes along a unit wave normal. Along the axis (where the two are degenerate) the
+// ordinary E is taken perpendicular to the axis in a fixed but arbitrary direction, and the extraordinary
+// E = k x E_o.
+PlaneWave ordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal);
+PlaneWave extraordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal);
+
+// One outgoing wave of an interface. Amplitudes are relative to the incident wave of unit E (per incident
+// basis polarisation: from outside s then p, from inside only [0]); the wave's field is wave.field times the
+// amplitude, with fields going as exp(i (k.r - omega t)) (so total internal reflection gives Fresnel's phases
+// as -delta_s, -delta_p). fluxRatio is the wave's flux through the interface per unit |amplitude|^2, relative
+// to the incident wave's, so share[i] = fluxRatio * |amplitude[i]|^2 is its share of the incident energy. An
+// evanescent wave (propagating == false: beyond total internal reflection) carries no energy; its `wave` is
+// not set.
+struct OutgoingWave {
+    PlaneWave wave;
+    bool propagating = false;
+    Complex amplitude[2] = {};
+    double fluxRatio = 0;
+    double share[2] = {};
+};
+
+// An incident state that is partially polarised: the coherency matrix J = <a a^H> of its amplitudes
+// a = (a_s, a_p) over the incident basis (from outside; from inside only ss is used). Unit intensity when
+// ss + pp == 1; unpolarised light is {0.5, 0.5, 0}.
+struct Coherency {
+    double ss = 0.5;
+    double pp = 0.5;
+    Complex sp{0, 0};  // <a_s conj(a_p)>
+};
+
+// The waves of one interface. From outside: incident[0], [1] are the s and p waves, reflected[] the s and p
+// waves outside, transmitted[] the ordinary and extraordinary waves inside. From inside: incident[0] is the
+// crystal wave, reflected[] the ordinary and extraordinary waves inside, transmitted[] the s and p waves
+// outside. s = normalize(k_incident x N) with N the normal along the incident energy flow (a fixed direction
+// perpendicular to N at normal incidence); each outside wave's p field is k / |k| x s.
+struct InterfaceWaves {
+    int incidentCount = 0;
+    PlaneWave incident[2];
+    OutgoingWave reflected[2];
+    OutgoingWave transmitted[2];
+
+    // No transmitted wave propagates: the reflected shares sum to 1.
+    bool totalInternalReflection() const {
+        return !transmitted[0].propagating && !transmitted[1].propagating;
+    }
+};
+
+// Light from the isotropic medium of index nOutside, travelling along unit `direction`, meets a crystal facet
+// of unit outward normal `outwardNormal` (dot(direction, outwardNormal) < 0, else Error).
+InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction, const Vec3& outwardNormal,
+                            double nOutside = 1);
+
+// A crystal eigenmode (from ordinaryWave, extraordinaryWave or an earlier interface) meets a facet of unit
+// outward normal `outwardNormal` from inside (dot(incident.ray, outwardNormal) > 0, else Error; its wave
+// normal may point either way for an extraordinary wave).
+InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& incident,
+                            const Vec3& outwardNormal, double nOutside = 1);
+
+// The energy share of `wave` for an incident state of coherency J over the incident basis:
+// fluxRatio * sum_mn t_m J_mn conj(t_n), t the wave's amplitudes.
+double shareOf(const OutgoingWave& wave, const Coherency& incident);
+
+}  // namespace facetlight

@@ -1,0 +1,370 @@
+#include "optics/birefringence.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <utility>
+
+#include "util/error.h"
+
+namespace facetlight {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = kPi / 180;
+
+Vec3 randomUnit(std::mt19937_64& rng) {
+    std::normal_distribution<double> g;
+    return normalize(Vec3{g(rng), g(rng), g(rng)});
+}
+
+double totalShare(const InterfaceWaves& w, int basis) {
+    return w.reflected[0].share[basis] + w.reflected[1].share[basis] + w.transmitted[0].share[basis] +
+           w.transmitted[1].share[basis];
+}
+
+// Fresnel amplitudes from n1 to n2 at incidence i (docs/optics.md, "Polarisation"): the reference the
+// isotropic limit must reproduce.
+struct Fresnel {
+    double rs, rp, Rs, Rp;
+};
+Fresnel fresnel(double n1, double n2, double i) {
+    const double cosI = std::cos(i), sinT = n1 * std::sin(i) / n2, cosT = std::sqrt(1 - sinT * sinT);
+    const double rs = (n1 * cosI - n2 * cosT) / (n1 * cosI + n2 * cosT);
+    const double rp = (n2 * cosI - n1 * cosT) / (n2 * cosI + n1 * cosT);
+    return {rs, rp, rs * rs, rp * rp};
+}
+
+// Light in the x-z plane at incidence i onto a facet of outward normal +z (from above, or from inside
+// towards it).
+Vec3 incoming(double i) {
+    return {std::sin(i), 0, -std::cos(i)};
+}
+
+TEST(Birefringence, IsotropicCrystalFromOutsideIsFresnel) {
+    std::mt19937_64 rng(1);
+    for (double n : {1.5, 2.4173}) {
+        const UniaxialMedium glass{n, n, randomUnit(rng)};
+        for (double deg : {0.0, 10.0, 30.0, 45.0, 60.0, 75.0, 89.0}) {
+            const Fresnel f = fresnel(1, n, deg * kDeg);
+            const InterfaceWaves w = enterCrystal(glass, incoming(deg * kDeg), {0, 0, 1});
+            ASSERT_EQ(w.incidentCount, 2);
+            EXPECT_FALSE(w.totalInternalReflection());
+            // s in, s out and p in, p out with Fresnel's signed amplitudes; no s <-> p coupling.
+            EXPECT_NEAR(w.reflected[0].amplitude[0].real(), f.rs, 1e-12) << n << " " << deg;
+            EXPECT_NEAR(w.reflected[1].amplitude[1].real(), f.rp, 1e-12) << n << " " << deg;
+            EXPECT_NEAR(std::abs(w.reflected[1].amplitude[0]), 0, 1e-12);
+            EXPECT_NEAR(std::abs(w.reflected[0].amplitude[1]), 0, 1e-12);
+            EXPECT_NEAR(w.reflected[0].share[0], f.Rs, 1e-12);
+            EXPECT_NEAR(w.reflected[1].share[1], f.Rp, 1e-12);
+            EXPECT_NEAR(w.transmitted[0].share[0] + w.transmitted[1].share[0], 1 - f.Rs, 1e-12);
+            EXPECT_NEAR(w.transmitted[0].share[1] + w.transmitted[1].share[1], 1 - f.Rp, 1e-12);
+        }
+    }
+}
+
+TEST(Birefringence, IsotropicCrystalFromInsideIsFresnel) {
+    std::mt19937_64 rng(2);
+    const double n = 1.7;
+    for (double deg : {0.0, 15.0, 30.0, 35.0}) {  // below the critical angle, 36.0 deg
+        const Fresnel f = fresnel(n, 1, deg * kDeg);
+        const UniaxialMedium glass{n, n, randomUnit(rng)};
+        for (const PlaneWave& in : {ordinaryWave(glass, incoming(deg * kDeg) * -1.0),
+                                    extraordinaryWave(glass, incoming(deg * kDeg) * -1.0)}) {
+            const InterfaceWaves w = leaveCrystal(glass, in, {0, 0, 1});
+            // The wave's field split over s and p, each transmitted as Fresnel says.
+            const Vec3 s = w.transmitted[0].wave.field;
+            const double fs = dot(in.field, s), fp2 = 1 - fs * fs;
+            EXPECT_NEAR(w.transmitted[0].share[0], fs * fs * (1 - f.Rs), 1e-12) << deg;
+            EXPECT_NEAR(w.transmitted[1].share[0], fp2 * (1 - f.Rp), 1e-12) << deg;
+            EXPECT_NEAR(w.reflected[0].share[0] + w.reflected[1].share[0], fs * fs * f.Rs + fp2 * f.Rp,
+                        1e-12);
+        }
+    }
+}
+
+TEST(Birefringence, BrewsterAngleReflectsNoP) {
+    const double n = 1.5;
+    const UniaxialMedium glass{n, n, {0.3, 0.4, std::sqrt(0.75)}};
+    const InterfaceWaves outside = enterCrystal(glass, incoming(std::atan(n)), {0, 0, 1});
+    EXPECT_LT(outside.reflected[1].share[1], 1e-24);
+    EXPECT_GT(outside.reflected[0].share[0], 0.1);
+    // From inside, Brewster's angle is atan(1 / n); with the axis along s the ordinary wave is pure p.
+    const UniaxialMedium axisAlongS{n, n, {0, 1, 0}};
+    const PlaneWave p = ordinaryWave(axisAlongS, incoming(std::atan(1 / n)) * -1.0);
+    const InterfaceWaves inside = leaveCrystal(axisAlongS, p, {0, 0, 1});
+    EXPECT_LT(inside.reflected[0].share[0] + inside.reflected[1].share[0], 1e-24);
+}
+
+// Every outgoing ray leaves on its own side of the facet (outward normal `normal`): reflected rays back,
+// transmitted rays across. Returns how many of them have a wave normal pointing the other way (an
+// extraordinary wave in a strongly birefringent crystal near grazing), the case where the energy flow, not
+// the wave normal, must choose.
+int countRaysOnTheirSide(const InterfaceWaves& w, const Vec3& normal) {
+    const double towardsReflected = w.incidentCount == 2 ? 1 : -1;
+    int backward = 0;
+    for (int j = 0; j < 2; ++j) {
+        for (const auto& [o, side] : {std::pair{&w.reflected[j], towardsReflected},
+                                      std::pair{&w.transmitted[j], -towardsReflected}}) {
+            if (!o->propagating) continue;
+            EXPECT_GT(side * dot(o->wave.ray, normal), 0);
+            if (side * dot(o->wave.waveNormal, normal) < 0) ++backward;
+        }
+    }
+    return backward;
+}
+
+TEST(Birefringence, EnergyIsConservedFromOutside) {
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> index(1.3, 2.8), unit(0, 1);
+    int backwardWaveNormals = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const UniaxialMedium crystal{index(rng), index(rng), randomUnit(rng)};
+        const Vec3 normal = randomUnit(rng);
+        Vec3 d = randomUnit(rng);
+        if (dot(d, normal) > -1e-3) d = d - normal * (2 * dot(d, normal));
+        if (dot(d, normal) > -1e-3) continue;
+        // Mostly air; sometimes a denser liquid, where a crystal's wave normals can point backwards.
+        const double outside = trial % 4 ? 1.0 : index(rng);
+        const InterfaceWaves w = enterCrystal(crystal, d, normal, outside);
+        for (int basis = 0; basis < 2; ++basis) EXPECT_NEAR(totalShare(w, basis), 1, 1e-12) << trial;
+        backwardWaveNormals += countRaysOnTheirSide(w, normal);
+        // Any coherent or partial state: the outgoing shares add up to the incident intensity.
+        const double a = unit(rng), phase = 2 * kPi * unit(rng);
+        const Coherency j{a, 1 - a, std::polar(std::sqrt(a * (1 - a)) * unit(rng), phase)};
+        double sum = 0;
+        for (const OutgoingWave* o :
+             {&w.reflected[0], &w.reflected[1], &w.transmitted[0], &w.transmitted[1]}) {
+            EXPECT_GE(o->fluxRatio, 0);
+            sum += shareOf(*o, j);
+        }
+        EXPECT_NEAR(sum, 1, 1e-12) << trial;
+    }
+    EXPECT_GT(backwardWaveNormals, 0);
+}
+
+TEST(Birefringence, EnergyIsConservedFromInsideWithTotalInternalReflection) {
+    std::mt19937_64 rng(4);
+    std::uniform_real_distribution<double> index(1.3, 2.8);
+    int total = 0, totalInternal = 0, partial = 0, backwardWaveNormals = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const UniaxialMedium crystal{index(rng), index(rng), randomUnit(rng)};
+        const Vec3 k = randomUnit(rng);
+        const PlaneWave in = trial % 2 ? ordinaryWave(crystal, k) : extraordinaryWave(crystal, k);
+        Vec3 normal = randomUnit(rng);
+        if (dot(in.ray, normal) < 0) normal = -normal;
+        if (dot(in.ray, normal) < 1e-3) continue;
+        const InterfaceWaves w = leaveCrystal(crystal, in, normal);
+        ++total;
+        EXPECT_NEAR(totalShare(w, 0), 1, 1e-12) << trial;
+        backwardWaveNormals += countRaysOnTheirSide(w, normal);
+        if (w.totalInternalReflection()) {
+            ++totalInternal;
+            EXPECT_EQ(w.transmitted[0].share[0] + w.transmitted[1].share[0], 0);
+        }
+        // One reflected wave evanescent while light still leaves: possible in a crystal only.
+        if (!w.reflected[0].propagating || !w.reflected[1].propagating) ++partial;
+    }
+    EXPECT_GT(totalInternal, total / 5);
+    EXPECT_LT(totalInternal, total);
+    EXPECT_GT(partial, 0);
+    EXPECT_GT(backwardWaveNormals, 0);
+}
+
+// Reciprocity (Lorentz; eps is symmetric): a wave the facet lets in, sent back along its own ray, leaves into
+// air along the incoming light's path, each of s and p taking the share that the same polarisation gave it
+// coming in. Ties the two entry points together.
+TEST(Birefringence, TransmissionIsReciprocal) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> index(1.3, 2.8);
+    for (int trial = 0; trial < 500; ++trial) {
+        const UniaxialMedium crystal{index(rng), index(rng), randomUnit(rng)};
+        const Vec3 normal = randomUnit(rng);
+        Vec3 d = randomUnit(rng);
+        if (dot(d, normal) > 0) d = -d;
+        if (dot(d, normal) > -1e-2) continue;
+        const InterfaceWaves in = enterCrystal(crystal, d, normal);
+        for (const OutgoingWave& t : in.transmitted) {
+            PlaneWave back = t.wave;
+            back.waveNormal = -back.waveNormal;
+            back.ray = -back.ray;
+            const InterfaceWaves out = leaveCrystal(crystal, back, normal);
+            EXPECT_NEAR(length(out.transmitted[0].wave.ray + d), 0, 1e-12);
+            EXPECT_NEAR(out.transmitted[0].share[0], t.share[0], 1e-12) << trial;
+            EXPECT_NEAR(out.transmitted[1].share[0], t.share[1], 1e-12) << trial;
+        }
+    }
+}
+
+TEST(Birefringence, TotalInternalReflectionReflectsEverythingWithPhases) {
+    const UniaxialMedium sapphire{1.768, 1.760, normalize(Vec3{1, 2, 3})};
+    const PlaneWave in = ordinaryWave(sapphire, incoming(50 * kDeg) * -1.0);  // critical angle ~34.5 deg
+    const InterfaceWaves w = leaveCrystal(sapphire, in, {0, 0, 1});
+    ASSERT_TRUE(w.totalInternalReflection());
+    EXPECT_EQ(w.transmitted[0].share[0], 0);
+    EXPECT_EQ(w.transmitted[1].share[0], 0);
+    EXPECT_NEAR(w.reflected[0].share[0] + w.reflected[1].share[0], 1, 1e-12);
+    // The reflection is not real: total internal reflection shifts the phase.
+    EXPECT_GT(std::abs(std::arg(w.reflected[0].amplitude[0])), 0.1);
+}
+
+// Fresnel's rhomb (docs/optics.md): glass of 1.51 at 54.6 deg; total internal reflection delays p against s
+// by d_p - d_s = 45 deg, with tan(d_s/2) = sqrt(sin^2 i - n^2) / cos i and tan(d_p/2) = the same / n^2
+// (n = 1 / 1.51).
+TEST(Birefringence, TotalInternalReflectionPhasesAreFresnels) {
+    const double n1 = 1.51, i = 54.6 * kDeg, n = 1 / n1;
+    const double root = std::sqrt(std::sin(i) * std::sin(i) - n * n);
+    const double ds = 2 * std::atan(root / std::cos(i)), dp = 2 * std::atan(root / (n * n * std::cos(i)));
+    EXPECT_NEAR((dp - ds) / kDeg, 45.0, 0.05);
+    // With the axis in the plane of incidence the ordinary wave is s, the extraordinary one p.
+    const UniaxialMedium glass{n1, n1, normalize(Vec3{1, 0, 1})};
+    const Vec3 k = incoming(i) * -1.0;
+    const InterfaceWaves ws = leaveCrystal(glass, ordinaryWave(glass, k), {0, 0, 1});
+    const InterfaceWaves wp = leaveCrystal(glass, extraordinaryWave(glass, k), {0, 0, 1});
+    ASSERT_TRUE(ws.totalInternalReflection());
+    // The reflected field over s, p = k_r x s, relative to the incident field over the same basis.
+    const Vec3 s{0, 1, 0}, kr{-std::sin(i), 0, -std::cos(i)};
+    auto reflectedAlong = [&](const InterfaceWaves& w, const Vec3& e) {
+        return w.reflected[0].amplitude[0] * dot(w.reflected[0].wave.field, e) +
+               w.reflected[1].amplitude[0] * dot(w.reflected[1].wave.field, e);
+    };
+    const Complex rs = reflectedAlong(ws, s) / dot(ws.incident[0].field, s);
+    const Complex rp = reflectedAlong(wp, cross(kr, s)) / dot(wp.incident[0].field, cross(k, s));
+    EXPECT_NEAR(std::abs(rs), 1, 1e-12);
+    EXPECT_NEAR(std::abs(rp), 1, 1e-12);
+    // Fields go as exp(i (k.r - w t)) and the evanescent wave decays: the phases are -d_s and -d_p.
+    EXPECT_NEAR(std::arg(rs), -ds, 1e-9);
+    EXPECT_NEAR(std::arg(rp / rs), -(dp - ds), 1e-9);
+    // The same from the other side: glass outside, an isotropic "crystal" of index 1 whose two waves are both
+    // evanescent, and which must decay into it for the phases to be the same.
+    const UniaxialMedium vacuum{1, 1, normalize(Vec3{1, 2, 2})};
+    const InterfaceWaves out = enterCrystal(vacuum, incoming(i), {0, 0, 1}, n1);
+    ASSERT_TRUE(out.totalInternalReflection());
+    EXPECT_NEAR(out.reflected[0].share[0] + out.reflected[1].share[0], 1, 1e-12);
+    EXPECT_NEAR(std::arg(out.reflected[0].amplitude[0]), -ds, 1e-9);
+    EXPECT_NEAR(std::arg(out.reflected[1].amplitude[1]), -dp, 1e-9);
+}
+
+TEST(Birefringence, WaveNormalsObeySnell) {
+    std::mt19937_64 rng(5);
+    const UniaxialMedium calcite{1.6584, 1.4864, randomUnit(rng)};
+    for (double deg : {5.0, 20.0, 40.0, 60.0, 80.0}) {
+        const double i = deg * kDeg;
+        const InterfaceWaves w = enterCrystal(calcite, incoming(i), {0, 0, 1});
+        const PlaneWave& o = w.transmitted[0].wave;
+        const PlaneWave& e = w.transmitted[1].wave;
+        EXPECT_EQ(o.mode, WaveMode::Ordinary);
+        EXPECT_EQ(e.mode, WaveMode::Extraordinary);
+        // Both wave normals in the plane of incidence, bent as Snell says with their own index.
+        EXPECT_NEAR(o.waveNormal.y, 0, 1e-15);
+        EXPECT_NEAR(e.waveNormal.y, 0, 1e-15);
+        EXPECT_NEAR(o.index, calcite.nO, 1e-13);
+        EXPECT_NEAR(o.index * o.waveNormal.x, std::sin(i), 1e-13);
+        EXPECT_NEAR(e.index, extraordinaryIndex(calcite, e.waveNormal), 1e-13);
+        EXPECT_NEAR(e.index * e.waveNormal.x, std::sin(i), 1e-13);
+        EXPECT_LT(o.waveNormal.z, 0);
+        EXPECT_LT(e.ray.z, 0);
+        // The reflected waves go back up at the mirror angle.
+        EXPECT_NEAR(w.reflected[0].wave.waveNormal.x, std::sin(i), 1e-15);
+        EXPECT_NEAR(w.reflected[0].wave.waveNormal.z, std::cos(i), 1e-15);
+    }
+}
+
+// A cleavage rhomb of calcite (n_o 1.6584, n_e 1.4864 at 589 nm: Hecht, Optics, ch. 8; Born & Wolf ch. 15) at
+// normal incidence, the optic axis 44.6 deg from the face normal. The e ray leaves the wave normal (the face
+// normal) by rho: its ray is along eps k, at tan(phi) = (n_o^2 / n_e^2) tan(theta) from the axis, so
+// tan(rho) = tan(phi - theta) = (n_o^2 - n_e^2) sin t cos t / (n_e^2 cos^2 t + n_o^2 sin^2 t) = 6.23 deg
+// (docs/optics.md); a 10 mm rhomb shows two images 10 tan(rho) = 1.09 mm apart.
+TEST(Birefringence, CalciteRhombWalkOff) {
+    const double no = 1.6584, ne = 1.4864, t = 44.6 * kDeg;
+    const UniaxialMedium calcite{no, ne, {std::sin(t), 0, std::cos(t)}};
+    const InterfaceWaves w = enterCrystal(calcite, {0, 0, -1}, {0, 0, 1});
+    const PlaneWave& o = w.transmitted[0].wave;
+    const PlaneWave& e = w.transmitted[1].wave;
+    EXPECT_NEAR(o.ray.z, -1, 1e-15);
+    EXPECT_NEAR(e.waveNormal.z, -1, 1e-15);
+    const double rho = std::acos(-e.ray.z);
+    const double closed =
+        std::atan((no * no - ne * ne) * std::sin(t) * std::cos(t) /
+                  (ne * ne * std::cos(t) * std::cos(t) + no * no * std::sin(t) * std::sin(t)));
+    EXPECT_NEAR(rho, closed, 1e-12);
+    EXPECT_NEAR(rho / kDeg, 6.23, 0.005);
+    // Walk-off in the principal plane (the axis and the normal), away from the axis in a negative crystal.
+    EXPECT_NEAR(e.ray.y, 0, 1e-15);
+    EXPECT_LT(std::fabs(dot(e.ray, calcite.axis)), std::fabs(dot(e.waveNormal, calcite.axis)));
+    const double separationMm = 10 * std::fabs(e.ray.x / e.ray.z);
+    EXPECT_NEAR(separationMm, 1.092, 0.001);
+    // Light polarised across the principal plane (along y) enters wholly as the o wave, light polarised in it
+    // (along x) wholly as the e wave, each reflected as from glass of its index along the normal: at normal
+    // incidence only E's tangential part enters the boundary conditions, with H = n z x E_t.
+    auto coherent = [&](const Vec3& e) {
+        const double as = dot(e, w.incident[0].field), ap = dot(e, w.incident[1].field);
+        return Coherency{as * as, ap * ap, as * ap};
+    };
+    const double nTheta = extraordinaryIndex(calcite, {0, 0, 1});
+    EXPECT_NEAR(nTheta,
+                1 / std::sqrt(std::cos(t) * std::cos(t) / (no * no) + std::sin(t) * std::sin(t) / (ne * ne)),
+                1e-15);
+    EXPECT_NEAR(e.index, nTheta, 1e-15);
+    EXPECT_NEAR(shareOf(w.transmitted[0], coherent({0, 1, 0})), 1 - fresnel(1, no, 0).Rs, 1e-12);
+    EXPECT_NEAR(shareOf(w.transmitted[1], coherent({0, 1, 0})), 0, 1e-12);
+    EXPECT_NEAR(shareOf(w.transmitted[1], coherent({1, 0, 0})), 1 - fresnel(1, nTheta, 0).Rs, 1e-12);
+    EXPECT_NEAR(shareOf(w.transmitted[0], coherent({1, 0, 0})), 0, 1e-12);
+    // The e wave's field leans out of the face with its ray: E is perpendicular to the ray, not to k.
+    EXPECT_NEAR(dot(e.field, e.ray), 0, 1e-15);
+    EXPECT_GT(std::fabs(e.field.z), 0.1);
+}
+
+TEST(Birefringence, AxisAlongTheNormalDoesNotSplitAtNormalIncidence) {
+    const UniaxialMedium calcite{1.6584, 1.4864, {0, 0, 1}};
+    const InterfaceWaves w = enterCrystal(calcite, {0, 0, -1}, {0, 0, 1});
+    for (const OutgoingWave& t : w.transmitted) {
+        ASSERT_TRUE(t.propagating);
+        EXPECT_NEAR(t.wave.index, 1.6584, 1e-13);
+        EXPECT_NEAR(t.wave.ray.z, -1, 1e-15);
+        EXPECT_NEAR(t.wave.waveNormal.z, -1, 1e-15);
+    }
+    // Both polarisations go in as they would into glass of n_o.
+    const Fresnel f = fresnel(1, 1.6584, 0);
+    for (int basis = 0; basis < 2; ++basis)
+        EXPECT_NEAR(w.transmitted[0].share[basis] + w.transmitted[1].share[basis], 1 - f.Rs, 1e-12);
+}
+
+TEST(Birefringence, EigenmodeFieldsAreOrthogonal) {
+    std::mt19937_64 rng(6);
+    for (int trial = 0; trial < 500; ++trial) {
+        const UniaxialMedium crystal{2.0, trial % 2 ? 2.2 : 1.8, randomUnit(rng)};
+        const Vec3 k = randomUnit(rng);
+        const PlaneWave o = ordinaryWave(crystal, k), e = extraordinaryWave(crystal, k);
+        EXPECT_NEAR(dot(o.field, e.field), 0, 1e-12);
+        EXPECT_NEAR(dot(o.field, crystal.axis), 0, 1e-12);
+        EXPECT_NEAR(dot(o.field, k), 0, 1e-12);
+        EXPECT_NEAR(length(o.ray - k), 0, 1e-12);
+        // D = eps E is transverse; the ray (Poynting vector E x (k x E)) is perpendicular to E.
+        const Vec3 d = e.field * (2.0 * 2.0) +
+                       crystal.axis * (dot(crystal.axis, e.field) * (crystal.nE * crystal.nE - 4.0));
+        EXPECT_NEAR(dot(d, k), 0, 1e-12);
+        const Vec3 poynting = cross(e.field, cross(k, e.field));
+        EXPECT_NEAR(length(normalize(poynting) - e.ray), 0, 1e-12);
+        EXPECT_NEAR(e.index, extraordinaryIndex(crystal, k), 1e-15);
+    }
+    // Along the axis the two are degenerate: still two orthogonal fields, both of index n_o.
+    const UniaxialMedium crystal{2.0, 2.2, {0, 0, 1}};
+    const PlaneWave o = ordinaryWave(crystal, {0, 0, 1}), e = extraordinaryWave(crystal, {0, 0, 1});
+    EXPECT_NEAR(dot(o.field, e.field), 0, 1e-15);
+    EXPECT_NEAR(e.index, 2.0, 1e-15);
+}
+
+TEST(Birefringence, RefusesLightThatDoesNotMeetTheFacet) {
+    const UniaxialMedium quartz{1.544, 1.553, {0, 0, 1}};
+    EXPECT_THROW(enterCrystal(quartz, {0, 0, 1}, {0, 0, 1}), Error);
+    EXPECT_THROW(leaveCrystal(quartz, ordinaryWave(quartz, {0, 0, -1}), {0, 0, 1}), Error);
+    EXPECT_THROW(enterCrystal(UniaxialMedium{0, 1.5, {0, 0, 1}}, {0, 0, -1}, {0, 0, 1}), Error);
+    EXPECT_THROW(enterCrystal(UniaxialMedium{1.5, 1.6, {0, 0, 2}}, {0, 0, -1}, {0, 0, 1}), Error);
+    EXPECT_THROW(leaveCrystal(quartz, ordinaryWave(quartz, {0, 0, 1}), {0, 0, 1}, NAN), Error);
+}
+
+}  // namespace
+}  // namespace facetlight
