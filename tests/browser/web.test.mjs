@@ -555,6 +555,11 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
       return { widest, room: sel.clientWidth - 40 };
     });
     assert.ok(cut.widest <= cut.room, `the material menu cuts its options off: ${JSON.stringify(cut)}`);
+    // It tells singly from doubly refracting materials, the latter with their birefringence.
+    const groups = await page.$$eval('#f-material optgroup', (gs) => Object.fromEntries(
+      gs.map((g) => [g.label.split(' ')[0], [...g.children].map((o) => [o.value, o.text])])));
+    assert.deepEqual(groups.Singly.map(([v]) => v), ['diamond', 'cubic_zirconia', 'fused_silica', 'bk7']);
+    assert.ok(groups.Doubly.some(([v, t]) => v === 'calcite' && /biref\. 0\.172/.test(t)), JSON.stringify(groups));
     // An upload has no parameters; a shape of the cut library shows the ones GET /api/meshes lists.
     await page.selectOption('#f-mesh', jobIds.brilliantMesh);
     assert.equal(await page.isHidden('#cut-fields'), true);
