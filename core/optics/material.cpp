@@ -153,6 +153,15 @@ double Material::twoVzDegrees() const {
     return 2 * std::acos(std::sqrt(cos2)) * 180 / std::numbers::pi;
 }
 
+const char* opticName(Optic optic) {
+    switch (optic) {
+        case Optic::Isotropic: return "isotropic";
+        case Optic::Uniaxial: return "uniaxial";
+        case Optic::Biaxial: return "biaxial";
+    }
+    return "isotropic";
+}
+
 std::vector<std::string> materialNames() {
     std::vector<std::string> names;
     for (const Fit& fit : fits()) names.emplace_back(fit.name);

@@ -78,6 +78,8 @@ class Material {
 };
 
 std::vector<std::string> materialNames();
+// "isotropic", "uniaxial" or "biaxial" (stats.json's material.optic).
+const char* opticName(Optic optic);
 
 template <class D>
 inline D Dispersion::at(D wavelengthNm) const {
