@@ -932,6 +932,20 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.ok((await page.textContent('#sweep-chart svg')).includes('tier:P1 (deg)'));
   });
 
+  test('a doubly refracting material is named on the result page with its birefringence', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    await fillSmallJob({ material: 'calcite' });
+    await page.setChecked('#f-render', false);
+    const id = await submitAndGetId();
+    await waitForFinished(id);
+    await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
+    await page.waitForSelector('[data-section="design"]');
+    const text = await page.textContent('[data-section="design"]');
+    assert.match(text, /calcite, n 1\.6583/i);
+    assert.match(text, /Double refraction\s*uniaxial, birefringence 0\.172; traced at the ordinary ray's index/);
+  });
+
   test('the home page fits a phone', async () => {
     await page.setViewportSize(PHONE);
     await page.goto(`${baseUrl}/#/`);
