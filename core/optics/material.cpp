@@ -29,7 +29,7 @@ constexpr Dispersion ghosh(double a, double b, double c, double d, double e) {
     return {.form = Dispersion::Form::Sellmeier, .a = a, .b = {b, d, 0}, .c2 = {c, e, 0}, .terms = 2};
 }
 
-// Wang et al. (2013): n^2 = A + B / (L^2 - C) - D L^2 (D given with its sign).
+// Wang et al. (2013): n^2 = A + B / (L^2 - C) + D L^2 (their D is negative).
 constexpr Dispersion wang(double a, double b, double c, double d) {
     return {.form = Dispersion::Form::Sellmeier, .a = a, .b = {b, 0, 0}, .c2 = {c, 0, 0}, .terms = 1,
             .poleOnly = true, .d = d};
