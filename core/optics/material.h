@@ -1,6 +1,7 @@
 #pragma once
-// Refractive index as a function of wavelength (Sellmeier), for the materials in docs/optics.md, or a
-// constant index for an `n` override.
+// Refractive index as a function of wavelength, for the materials in docs/optics.md ("Materials"), or a
+// constant index for an `n` override. A doubly refracting material has three principal indices, each with its
+// own dispersion: n_o, n_o, n_e for a uniaxial crystal, alpha, beta, gamma for a biaxial one.
 #include <array>
 #include <cmath>
 #include <optional>
@@ -10,6 +11,25 @@
 
 namespace facetlight {
 
+// The optic class: one index (cubic crystals, glasses), one optic axis (n_o, n_e) or two (alpha, beta, gamma).
+enum class Optic { Isotropic, Uniaxial, Biaxial };
+
+// One principal index against wavelength L (micrometres), in one of the published forms (docs/optics.md):
+// Sellmeier n^2 = A + sum B_i L^2 / (L^2 - C_i) + D L^2 (or B_i / (L^2 - C_i) where `poleOnly`), with C_i
+// the squared resonance wavelengths; Cauchy n = A + B_0 / L^2; or the constant A.
+struct Dispersion {
+    enum class Form { Constant, Sellmeier, Cauchy };
+    Form form = Form::Constant;
+    double a = 1;
+    std::array<double, 3> b{}, c2{};
+    int terms = 0;
+    bool poleOnly = false;  // terms B / (L^2 - C) rather than B L^2 / (L^2 - C)
+    double d = 0;           // the infrared term's D L^2
+
+    template <class D>
+    [[gnu::always_inline]] D at(D wavelengthNm) const;
+};
+
 class Material {
   public:
     // One of materialNames(); throws Error listing the known names otherwise.
@@ -18,44 +38,61 @@ class Material {
     static Material constant(double n, std::string name = "custom");
 
     const std::string& name() const { return name_; }
-    // Refractive index at a vacuum wavelength in nanometres.
-    double index(double wavelengthNm) const { return sellmeier(wavelengthNm); }
-    // n at the sodium D line (589.3 nm) and the gemmological dispersion n(430.8 nm) - n(686.7 nm).
+    // The index single-index code traces: n_o for a uniaxial crystal (the ordinary ray sees it in every
+    // direction), beta for a biaxial one (between alpha and gamma; the index along an optic axis).
+    double index(double wavelengthNm) const { return indexOf(wavelengthNm); }
+    // n at the sodium D line (589.3 nm) and the gemmological dispersion n(430.8 nm) - n(686.7 nm), of index().
     double indexD() const { return index(kSodiumD); }
     double dispersionBG() const { return index(430.8) - index(686.7); }
-    bool dispersive() const { return terms_ > 0; }
+    bool dispersive() const { return axes_[1].form != Dispersion::Form::Constant; }
     // g/cm^3, for weights; none for a constant index (an `n` or a design file's index names no material).
     std::optional<double> densityGcm3() const { return density_ > 0 ? std::optional(density_) : std::nullopt; }
+
+    Optic optic() const { return optic_; }
+    // n_o, n_o, n_e (uniaxial); alpha, beta, gamma (biaxial, alpha < beta < gamma); n, n, n (isotropic).
+    std::array<double, 3> principalIndices(double wavelengthNm) const;
+    // At 589.3 nm, as gemmologists quote them: the largest less the smallest principal index (0 for
+    // isotropic), and the optic sign: +1 when n_e > n_o, or for biaxial when gamma is the acute bisectrix
+    // (twoVzDegrees() < 90); -1 otherwise; 0 for isotropic and for a biaxial crystal at 2V = 90 deg exactly.
+    double birefringence() const;
+    int opticSign() const;
+    // The angle between a biaxial crystal's optic axes about gamma at 589.3 nm, in degrees (0 to 180; the
+    // acute 2V is min(2Vz, 180 - 2Vz)), from the principal indices: cos^2 Vz = alpha^2 (gamma^2 - beta^2) /
+    // (beta^2 (gamma^2 - alpha^2)). 0 for uniaxial and isotropic.
+    double twoVzDegrees() const;
 
     static constexpr double kSodiumD = 589.3;
     // index() for any number type with the operators of double (lanes of a packet): the same bits per lane.
     // Always inlined, so that lanes are computed with their SIMD target's instructions.
     template <class D>
     [[gnu::always_inline]] D indexOf(D wavelengthNm) const {
-        return sellmeier(wavelengthNm);
+        return axes_[1].at(wavelengthNm);
     }
 
   private:
-    template <class D>
-    [[gnu::always_inline]] D sellmeier(D wavelengthNm) const;
-
     std::string name_;
-    int terms_ = 0;  // Sellmeier terms; 0 means the constant index n0_
-    std::array<double, 3> b_{}, c2_{};
-    double n0_ = 1;
+    Optic optic_ = Optic::Isotropic;
+    // Principal indices in the order of principalIndices(); axes_[1] is index()'s.
+    std::array<Dispersion, 3> axes_{};
     double density_ = 0;
 };
 
 std::vector<std::string> materialNames();
+// "isotropic", "uniaxial" or "biaxial" (stats.json's material.optic).
+const char* opticName(Optic optic);
 
-// n^2 - 1 = sum B L^2 / (L^2 - C^2), L in micrometres (docs/optics.md).
 template <class D>
-inline D Material::sellmeier(D wavelengthNm) const {
-    if (terms_ == 0) return D(n0_);
+inline D Dispersion::at(D wavelengthNm) const {
+    if (form == Form::Constant) return D(a);
     using std::sqrt;
     const D l = wavelengthNm * D(1e-3), l2 = l * l;
-    D n2(1.0);
-    for (int i = 0; i < terms_; ++i) n2 = n2 + D(b_[i]) * l2 / (l2 - D(c2_[i]));
+    if (form == Form::Cauchy) return D(a) + D(b[0]) / l2;
+    D n2(a);
+    if (poleOnly)
+        for (int i = 0; i < terms; ++i) n2 = n2 + D(b[i]) / (l2 - D(c2[i]));
+    else
+        for (int i = 0; i < terms; ++i) n2 = n2 + D(b[i]) * l2 / (l2 - D(c2[i]));
+    if (d != 0) n2 = n2 + D(d) * l2;
     return sqrt(n2);
 }
 

@@ -61,6 +61,8 @@ void addDesignFacts(nlohmann::json& stats, const DesignFacts& facts) {
     stats["material"] = {{"name", m.name()},
                          {"n_d", m.indexD()},
                          {"dispersion_bg", m.dispersionBG()},
+                         {"optic", opticName(m.optic())},
+                         {"birefringence", m.birefringence()},
                          {"source", facts.material.source}};
     if (facts.sheet) stats["cutting_sheet"] = toJson(*facts.sheet);
     if (const std::optional<StoneSize>& size = facts.size) {

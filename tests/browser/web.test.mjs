@@ -555,6 +555,11 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
       return { widest, room: sel.clientWidth - 40 };
     });
     assert.ok(cut.widest <= cut.room, `the material menu cuts its options off: ${JSON.stringify(cut)}`);
+    // It tells singly from doubly refracting materials, the latter with their birefringence.
+    const groups = await page.$$eval('#f-material optgroup', (gs) => Object.fromEntries(
+      gs.map((g) => [g.label.split(' ')[0], [...g.children].map((o) => [o.value, o.text])])));
+    assert.deepEqual(groups.Singly.map(([v]) => v), ['diamond', 'cubic_zirconia', 'fused_silica', 'bk7']);
+    assert.ok(groups.Doubly.some(([v, t]) => v === 'calcite' && /biref\. 0\.172/.test(t)), JSON.stringify(groups));
     // An upload has no parameters; a shape of the cut library shows the ones GET /api/meshes lists.
     await page.selectOption('#f-mesh', jobIds.brilliantMesh);
     assert.equal(await page.isHidden('#cut-fields'), true);
@@ -925,6 +930,20 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
       { timeout: JOB_TIMEOUT_MS, polling: 100 });
     assert.match(await page.textContent('#sweep-view-title'), /^brilliant\.asc, sweep of tier:P1/);
     assert.ok((await page.textContent('#sweep-chart svg')).includes('tier:P1 (deg)'));
+  });
+
+  test('a doubly refracting material is named on the result page with its birefringence', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    await fillSmallJob({ material: 'calcite' });
+    await page.setChecked('#f-render', false);
+    const id = await submitAndGetId();
+    await waitForFinished(id);
+    await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
+    await page.waitForSelector('[data-section="design"]');
+    const text = await page.textContent('[data-section="design"]');
+    assert.match(text, /calcite, n 1\.6583/i);
+    assert.match(text, /Double refraction\s*uniaxial, birefringence 0\.172; traced at the ordinary ray's index/);
   });
 
   test('the home page fits a phone', async () => {

@@ -36,11 +36,19 @@ import json, sys
 stats = json.load(open(sys.argv[1]))
 # trace --json writes what a job's stats.json holds of the stone (docs/stats-schema.md).
 assert stats["material"]["source"] == "default" and stats["material"]["name"] == "diamond", stats["material"]
+assert stats["material"]["optic"] == "isotropic" and stats["material"]["birefringence"] == 0, stats["material"]
 assert stats["cutting_sheet"]["source"] == "measured from the mesh", stats["cutting_sheet"]["source"]
 assert stats["size"]["carats"] > 0, stats["size"]
 turned, kept = (json.load(open(p))["mesh"]["frame"] for p in sys.argv[1:3])
 assert turned["file_orientation"] is False and turned["turned_deg"] > 1, turned
 assert kept["file_orientation"] is True and "table_facet" not in kept, kept
+PY
+# A doubly refracting material says so: calcite, traced at n_o (docs/optics.md).
+"$tool" trace --mesh "$dir/tetra.obj" --photons 2000 --no-view --material calcite --json "$dir/calcite.json" >/dev/null
+python3 - "$dir/calcite.json" <<'PY'
+import json, sys
+m = json.load(open(sys.argv[1]))["material"]
+assert m["optic"] == "uniaxial" and abs(m["birefringence"] - 0.1722) < 1e-4 and abs(m["n_d"] - 1.6583) < 1e-4, m
 PY
 
 "$tool" trace "${small[@]}" --json >"$dir/stdout.json"

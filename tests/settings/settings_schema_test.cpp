@@ -3,12 +3,15 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <regex>
 #include <set>
+#include <sstream>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "cli/trace_options.h"
+#include "optics/material.h"
 #include "render/render_settings.h"
 #include "render/view_settings.h"
 #include "study/job_request.h"
@@ -378,6 +381,22 @@ TEST(SettingsSchema, OpenApiSweepAgreesWithItsTable) {
     EXPECT_EQ(documented, read);
     EXPECT_EQ(sweep["properties"]["figure"]["enum"], json(sweepFigureNames()));
     EXPECT_EQ(sweep["properties"]["maximize"]["enum"], json(sweepFigureNames()));
+}
+
+// Every material the settings accept is offered where a job is written by hand: the API's description of
+// `material` and the page's material menu.
+TEST(SettingsSchema, ApiAndPageOfferEveryMaterial) {
+    std::ifstream in(FACETLIGHT_SOURCE_DIR "/server/openapi.json");
+    const json api = json::parse(in);
+    const std::string description =
+        api["components"]["schemas"]["JobRequest"]["properties"]["material"]["description"].get<std::string>();
+    std::ifstream page(FACETLIGHT_SOURCE_DIR "/web/index.html");
+    std::stringstream html;
+    html << page.rdbuf();
+    for (const std::string& name : materialNames()) {
+        EXPECT_TRUE(std::regex_search(description, std::regex("\\b" + name + "\\b"))) << name;
+        EXPECT_NE(html.str().find("<option value=\"" + name + "\">"), std::string::npos) << name;
+    }
 }
 
 }  // namespace

@@ -42,6 +42,10 @@ function sizeList(size, material) {
   if (material) {
     const what = material.source === 'design file' ? '' : `${humanize(material.name)}, `;
     rows.push(['Traced as', `${what}n ${fmtNumber(material.n_d, 4)}: ${SOURCE_TEXT[material.source] || material.source}`]);
+    // A doubly refracting material is traced at one of its indices: n_o (uniaxial) or beta (biaxial).
+    if (material.optic && material.optic !== 'isotropic') {
+      rows.push(['Double refraction', `${material.optic}, birefringence ${fmtNumber(material.birefringence, 3)}; traced at ${material.optic === 'uniaxial' ? 'the ordinary ray\'s index' : 'β'}`]);
+    }
   }
   return h('dl', { class: 'kv' }, rows.map(([k, v]) => [h('dt', {}, k), h('dd', {}, v)]));
 }
