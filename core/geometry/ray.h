@@ -22,6 +22,9 @@ struct Vec3f {
 constexpr float dot(const Vec3f& a, const Vec3f& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
+constexpr Vec3 toVec3(const Vec3f& v) {
+    return {v.x, v.y, v.z};
+}
 constexpr Vec3f cross(const Vec3f& a, const Vec3f& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }

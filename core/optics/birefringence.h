@@ -20,7 +20,8 @@
 // Fresnel's s/p amplitudes to rounding. Everything is fixed-size: no heap allocation per call.
 #include <complex>
 
-#include "geometry/geometry.h"
+#include "geometry/ray.h"
+#include "optics/polarization.h"
 
 namespace facetlight {
 
@@ -113,5 +114,19 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
 // The energy share of `wave` for an incident state of coherency J over the incident basis:
 // fluxRatio * sum_mn t_m J_mn conj(t_n), t the wave's amplitudes.
 double shareOf(const OutgoingWave& wave, const Coherency& incident);
+
+// A photon's state (optics/polarization.h) along d as the coherency matrix over the basis whose s is `s`
+// (across d, p = d x s): J_ss = (S0 + S1) / 2, J_pp = (S0 - S1) / 2, J_sp = (S2 - i S3) / 2, S0 = 1.
+inline Coherency coherencyOf(const Polarization& pol, const Vec3f& d, const Vec3f& s) {
+    const Stokes st = rotateFrame(pol.stokes, pol.x, s, d);
+    return {0.5 * (st.s0 + st.s1), 0.5 * (st.s0 - st.s1), Complex(0.5 * st.s2, -0.5 * st.s3)};
+}
+// The Stokes vector (S0 = 1) of the light of amplitudes a_s and a_p over an s-p basis (the inverse of the
+// above): S1 = |a_s|^2 - |a_p|^2, S2 = 2 Re(a_s conj(a_p)), S3 = -2 Im(a_s conj(a_p)), over |a_s|^2 + |a_p|^2.
+inline Stokes stokesOf(Complex as, Complex ap) {
+    const double s0 = std::norm(as) + std::norm(ap);
+    const Complex c = as * std::conj(ap);
+    return {1, float((std::norm(as) - std::norm(ap)) / s0), float(2 * c.real() / s0), float(-2 * c.imag() / s0)};
+}
 
 }  // namespace facetlight

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "optics/light_settings.h"
+#include "optics/optic_axis.h"
 #include "optics/viewer_settings.h"
 #include "util/name_table.h"
 
@@ -24,6 +25,7 @@ struct SceneSettings {
     bool dispersion = true;               // refraction by wavelength in 380-780 nm; false: all at 589.3 nm
     IntersectorKind intersector = IntersectorKind::Auto;
     LightSettings light;
+    OpticAxisSettings opticAxis;  // a uniaxial material's, traced with polarisation on
     // The stone's size: its girdle diameter (the width of a fancy shape), which the mesh's units are scaled to.
     // A round brilliant of 1 carat is about 6.5 mm across (docs/physics.md, "Viewer figures").
     double sizeMm = 6.5;

@@ -50,7 +50,19 @@ nlohmann::json traceReport(const TraceResult& result, const Stone& stone, const 
 }
 
 DesignFacts designFacts(const Stone& stone, const TraceSettings& settings) {
-    DesignFacts facts{chooseMaterial(settings, stone), cuttingSheet(stone), std::nullopt};
+    DesignFacts facts{chooseMaterial(settings, stone), {}, cuttingSheet(stone), std::nullopt};
+    const bool polarized = settings.polarization == PolarizationMode::On;
+    switch (facts.material.material.optic()) {
+    case Optic::Isotropic:
+        break;
+    case Optic::Uniaxial:
+        facts.doubleRefraction = polarized ? "traced: each ray splits into its ordinary and extraordinary waves"
+                                           : "not traced: with polarization off every ray sees n_o";
+        break;
+    case Optic::Biaxial:
+        facts.doubleRefraction = "not traced: a biaxial stone is traced at beta alone";
+        break;
+    }
     if (stone.proportions.diameter > 0)  // else there is no girdle width to scale by
         facts.size = stoneSize(stone, settings.sizeMm, facts.material.material.densityGcm3());
     return facts;
@@ -64,6 +76,7 @@ void addDesignFacts(nlohmann::json& stats, const DesignFacts& facts) {
                          {"optic", opticName(m.optic())},
                          {"birefringence", m.birefringence()},
                          {"source", facts.material.source}};
+    if (!facts.doubleRefraction.empty()) stats["material"]["double_refraction"] = facts.doubleRefraction;
     if (facts.sheet) stats["cutting_sheet"] = toJson(*facts.sheet);
     if (const std::optional<StoneSize>& size = facts.size) {
         const std::optional<double> density = m.densityGcm3();

@@ -65,6 +65,7 @@ nlohmann::json traceReport(const TraceResult& result, const Stone& stone, const 
 // without a girdle width to scale by). Worked out once by those that write stats.json, not for sweep points.
 struct DesignFacts {
     MaterialChoice material;
+    std::string doubleRefraction;  // how a doubly refracting material was traced; empty for one index
     std::optional<CuttingSheet> sheet;
     std::optional<StoneSize> size;
 };

@@ -9,6 +9,7 @@
 
 #include "intersect/convex_intersector.h"
 #include "intersect/embree_intersector.h"
+#include "optics/birefringence.h"
 #include "optics/fresnel.h"
 #include "trace/photon_tracer.h"
 #include "trace/trace_base.h"
@@ -29,6 +30,8 @@ class PhotonWalker {
         float n = 0;
         uint32_t bounces = 0;
         Polarization pol;  // when the trace is polarised
+        float nE = 0;      // a birefringent stone's extraordinary index (n is the ordinary one)
+        PlaneWave wave;    // inside a birefringent stone: the ordinary or extraordinary wave it travels as
     };
 
     // Draws photon `index` and takes it to the stone; true when it is inside and has to be stepped on.
@@ -45,6 +48,7 @@ class PhotonWalker {
             ph.n = float(s.scene().material().index(wavelength));
         }
         visit.wavelength(wavelength);
+        if (s.birefringent()) ph.nE = s.extraordinaryIndex(wavelength);
         return enter(s, isect, ray, visit, ph);
     }
 
@@ -69,7 +73,9 @@ class PhotonWalker {
             d = e.refracted;
         } else if (s.polarized()) {
             ph.pol = s.sourcePolarization(d);
-            if (!enterPolarized(s.scene().normal(hit.facet), 1.0f / ph.n, hit.facet, p, d, visit, ph))
+            const Vec3f& normal = s.scene().normal(hit.facet);
+            if (!(s.birefringent() ? enterCrystalWave(s, normal, hit.facet, p, d, visit, ph)
+                                   : enterPolarized(normal, 1.0f / ph.n, hit.facet, p, d, visit, ph)))
                 return false;
         } else {
             const Vec3f normal = s.scene().normal(hit.facet);
@@ -96,6 +102,7 @@ class PhotonWalker {
             visit.lost(ph.bounces);
             return false;
         }
+        if (s.birefringent()) return stepCrystalWave(s, hit, visit, ph);
         const Vec3f p = ph.p + ph.d * hit.t, d = ph.d;
         const Vec3f normal = s.scene().normal(hit.facet);
         const float cosI = std::clamp(dot(d, normal), 0.0f, 1.0f), n = ph.n;
@@ -148,8 +155,11 @@ class PhotonWalker {
         if (s.polarized()) {
             // An unpolarised eye: by reciprocity the share it sees is what unpolarised light would bring it.
             ph.pol = {Stokes{}, frameAcross(dir, Vec3f(1, 0, 0))};
+            ph.nE = n + s.birefringenceD();
             Vec3f d = dir;
-            if (!enterPolarized(normal, eta, hit.facet, p, d, visit, ph)) return true;
+            if (!(s.birefringent() ? enterCrystalWave(s, normal, hit.facet, p, d, visit, ph)
+                                   : enterPolarized(normal, eta, hit.facet, p, d, visit, ph)))
+                return true;
             ph.d = d;
         } else {
             const float cosI = std::clamp(-dot(dir, normal), 0.0f, 1.0f);
@@ -184,6 +194,60 @@ class PhotonWalker {
         }
         d = refractIn(d, normal, eta, cosI, w.cosT);
         ph.pol = {w.refracted.apply(st), sDir};
+        return true;
+    }
+
+    // A birefringent stone (docs/optics.md, "Birefringent stones"): where a ray along d from outside meets
+    // facet `facet` at p, it reflects or enters as the ordinary or the extraordinary wave, chosen by their
+    // energy shares for the photon's state (optics/birefringence.h). False after visit.reflectedAtEntry; else
+    // d is the wave's ray (energy) direction and ph.wave the wave.
+    template <class Visitor>
+    static bool enterCrystalWave(const TraceBase& s, const Vec3f& normal, uint32_t facet, const Vec3f& p,
+                                 Vec3f& d, Visitor& visit, Photon& ph) {
+        const InterfaceWaves w = enterCrystal(s.crystal(ph.n, ph.nE), toVec3(d), toVec3(normal));
+        const Coherency j = coherencyOf(ph.pol, d, Vec3f(w.incident[0].field));
+        const double reflected = shareOf(w.reflected[0], j) + shareOf(w.reflected[1], j);
+        const double ordinary = shareOf(w.transmitted[0], j);
+        const double u = ph.rng.uniform() * (reflected + ordinary + shareOf(w.transmitted[1], j));
+        if (u < reflected) {
+            visit.reflectedAtEntry(facet, p, reflectOff(d, normal, std::clamp(-dot(d, normal), 0.0f, 1.0f)));
+            return false;
+        }
+        ph.wave = w.transmitted[u < reflected + ordinary ? 0 : 1].wave;
+        d = Vec3f(ph.wave.ray);
+        return true;
+    }
+
+    // step() in a birefringent stone, the exit search done: the wave leaves into the air (its state from the
+    // s and p amplitudes) or reflects as the ordinary or the extraordinary wave, by their energy shares.
+    template <class Visitor>
+    static bool stepCrystalWave(const TraceBase& s, const SurfaceHit& hit, Visitor& visit, Photon& ph) {
+        const Vec3f p = ph.p + ph.d * hit.t;
+        const Vec3 normal = toVec3(s.scene().normal(hit.facet));
+        if (!(dot(ph.wave.ray, normal) > 1e-9)) {  // grazing, where float rounding put the exit
+            visit.lost(ph.bounces);
+            return false;
+        }
+        const InterfaceWaves w = leaveCrystal(s.crystal(ph.n, ph.nE), ph.wave, normal);
+        const double out = w.transmitted[0].share[0] + w.transmitted[1].share[0];
+        const double ordinary = w.reflected[0].share[0];
+        const double u = ph.rng.uniform() * (out + ordinary + w.reflected[1].share[0]);
+        if (u < out) {
+            const Vec3f dir(w.transmitted[0].wave.ray);
+            ph.pol = {stokesOf(w.transmitted[0].amplitude[0], w.transmitted[1].amplitude[0]),
+                      Vec3f(w.transmitted[0].wave.field)};
+            if constexpr (requires { visit.exitPolarization(ph.pol, dir); }) visit.exitPolarization(ph.pol, dir);
+            visit.exited(hit.facet, p, dir, ph.bounces);
+            return false;
+        }
+        ph.wave = w.reflected[u < out + ordinary ? 0 : 1].wave;
+        ph.p = p;
+        ph.d = Vec3f(ph.wave.ray);
+        visit.internalReflection(hit.facet);
+        if (++ph.bounces >= uint32_t(s.settings().maxBounces)) {
+            visit.trapped(ph.bounces);
+            return false;
+        }
         return true;
     }
 
@@ -237,6 +301,7 @@ class PhotonWalker {
         const LightRay ray = s.scene().light().sample(ph.rng);
         if (s.scene().dispersive()) ph.rng.uniform();  // start()'s wavelength
         ph.n = n;
+        ph.nE = n + s.birefringenceD();
         return enter(s, isect, ray, visit, ph);
     }
 

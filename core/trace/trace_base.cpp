@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "optics/fresnel.h"
+#include "optics/material.h"
 
 namespace facetlight {
 
@@ -20,6 +21,13 @@ TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
         const double a = radians(*deg);
         polarizer_ = x * float(std::cos(a)) + y * float(std::sin(a));
     }
+    const Material& material = scene.material();
+    birefringent_ = polarized() && material.optic() == Optic::Uniaxial;
+    if (birefringent_) {
+        opticAxis_ = settings.opticAxis.direction();
+        const std::array<double, 3> d = material.principalIndices(Material::kSodiumD);
+        birefringenceD_ = float(d[2] - d[0]);
+    }
     if (scene.light().collimated() && !scene.dispersive() && !polarized()) {
         // The same float operations as PhotonWalker::enter, so a photon's fate is bit for bit the same.
         const Vec3f d(scene.light().direction());
@@ -31,6 +39,10 @@ TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
                 {fr.reflectance, reflectOff(d, normal, cosI), refractIn(d, normal, eta, cosI, fr.cosT)});
         }
     }
+}
+
+float TraceBase::extraordinaryIndex(double wavelengthNm) const {
+    return float(scene_.material().principalIndices(scene_.dispersive() ? wavelengthNm : Material::kSodiumD)[2]);
 }
 
 }  // namespace facetlight

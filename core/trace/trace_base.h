@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/ray.h"
+#include "optics/birefringence.h"
 #include "optics/polarization.h"
 #include "scene/scene.h"
 #include "stats/facet_stats.h"
@@ -40,6 +41,15 @@ class TraceBase {
                           : Polarization{Stokes{}, frameAcross(d, Vec3f(1, 0, 0))};
     }
 
+    // Whether photons split into ordinary and extraordinary waves: a uniaxial material traced with
+    // polarisation on (docs/optics.md, "Birefringent stones"). The crystal at indices n_o, n_e with the job's
+    // optic axis; n_e at a wavelength; and n_e - n_o at 589.3 nm, which the fire trace's bands and the view
+    // rays add to their n_o (the birefringence's own dispersion left out there).
+    bool birefringent() const { return birefringent_; }
+    UniaxialMedium crystal(float nO, float nE) const { return {nO, nE, opticAxis_}; }
+    float extraordinaryIndex(double wavelengthNm) const;
+    float birefringenceD() const { return birefringenceD_; }
+
     // What the tallies need: whether a facet is on the crown side (table or crown), the world's vertical in
     // the stone's frame, the exit-angle bins, cos of the head-shadow half-angle (2 without a head cone) and
     // of each return cone.
@@ -54,6 +64,9 @@ class TraceBase {
     TraceSettings settings_;
     std::vector<FixedEntry> fixedEntry_;
     std::optional<Vec3f> polarizer_;  // the light's polariser axis, stone frame
+    bool birefringent_ = false;
+    Vec3 opticAxis_;
+    float birefringenceD_ = 0;
     std::vector<uint8_t> crownSide_;  // 1 for table and crown facets
     Vec3f up_;
     ExitAngleBins exitBin_;

@@ -65,6 +65,7 @@ const Schema<TraceSettings>& traceSettingsSchema() {
             choice("intersector", inherited<TraceSettings>(&TraceSettings::intersector), kIntersectorNames,
                    {"--intersector", "Ray-stone intersection"}),
             object("light", inherited<TraceSettings>(&TraceSettings::light), lightSettingsSchema()),
+            object("optic_axis", inherited<TraceSettings>(&TraceSettings::opticAxis), opticAxisSchema()),
             number("size_mm", inherited<TraceSettings>(&TraceSettings::sizeMm), {.lo = 0.1, .hi = 1000},
                    {"--size-mm", "The stone's girdle diameter (the width of a fancy shape)", "mm"}),
             object("viewer", inherited<TraceSettings>(&TraceSettings::viewer), viewerSettingsSchema()),

@@ -187,6 +187,7 @@ TEST(SettingsSchema, JsonRoundTrip) {
     t.maxBounces = 7;
     t.intersector = IntersectorKind::Embree;
     t.polarization = PolarizationMode::On;
+    t.opticAxis = {60, 120};
     t.light = {LightModelKind::Point, {1, 2, -3}, 12.5, 30, SkyKind::Cosine, {4, 5, 60}, 45};
     t.fire = {true, 3, 400};
     t.sizeMm = 8;

@@ -1,7 +1,9 @@
 // The tracer with polarised photons (docs/optics.md, "Polarisation"): analytic averages of whole traces.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "optics/material.h"
 #include "support/expect_error.h"
@@ -165,4 +167,147 @@ TEST(PolarizedTrace, PolariserNeedsPolarisedTracing) {
     EXPECT_EQ(s.polarization, PolarizationMode::On);
     EXPECT_EQ(*s.light.polarizerDeg, 30);
     EXPECT_EQ(toJson(s)["light"]["polarizer_deg"], 30);
+}
+
+namespace {
+
+// Photons of a collimated beam along -z through the point (x, y) above the stone (centred on the origin), walked one at a time by the
+// tracer's own steps (PhotonWalker::enter and step).
+template <class Visitor>
+void shootThrough(const TraceBase& trace, const Scene& scene, float x, float y, uint64_t photons, Visitor& v) {
+    for (uint64_t i = 0; i < photons; ++i) {
+        PhotonWalker::Photon ph;
+        ph.rng = Rng(5, i);
+        ph.n = scene.fixedIndex();
+        ph.nE = trace.extraordinaryIndex(Material::kSodiumD);
+        const LightRay ray{{x, y, 3}, {0, 0, -1}};
+        if (PhotonWalker::enter(trace, *scene.convex(), ray, v, ph)) {
+            while (PhotonWalker::step(trace, *scene.convex(), v, ph)) {
+            }
+        }
+    }
+}
+
+// Where light that goes straight through leaves the bottom.
+struct ExitSpots : AnalyserTally {
+    std::vector<Vec3f> spots;
+    void exited(uint32_t facet, const Vec3f& p, const Vec3f& d, uint32_t bounces) {
+        AnalyserTally::exited(facet, p, d, bounces);
+        if (facet == bottom && bounces == 0) spots.push_back(p);
+    }
+};
+
+TraceSettings calcite(double axisTiltDeg) {
+    TraceSettings s = polarized(1);
+    s.material = "calcite";
+    s.opticAxis.tiltDeg = axisTiltDeg;
+    return s;
+}
+
+}  // namespace
+
+TEST(BirefringentTrace, CalciteRhombShowsTwoImagesAsFarApartAsTheWalkOff) {
+    // A calcite block with its optic axis 44.6 deg from the top's normal (a cleavage rhomb's; Born & Wolf,
+    // sec. 15.3.3), lit straight down through one point: the ordinary ray goes straight through, the
+    // extraordinary one walks off by rho, tan rho = (n_o^2 - n_e^2) sin t cos t / (n_e^2 cos^2 t + n_o^2 sin^2 t)
+    // (Born & Wolf eq. 15.3.(29) with the wave normal at t to the axis), so the two spots on the bottom (1 below the top)
+    // lie tan(rho) apart along the axis's azimuth.
+    const Stone stone = cube();
+    const TraceSettings settings = calcite(44.6);
+    const Scene scene(stone, settings);
+    const TraceBase trace(scene, settings);
+    ASSERT_TRUE(trace.birefringent());
+    const std::array<double, 3> n = Material::byName("calcite").principalIndices(Material::kSodiumD);
+    const double t = radians(44.6), no = n[0], ne = n[2];
+    const double tanRho =
+        (no * no - ne * ne) * std::sin(t) * std::cos(t) / (ne * ne * std::cos(t) * std::cos(t) + no * no * std::sin(t) * std::sin(t));
+    ASSERT_NEAR(degrees(std::atan(tanRho)), 6.2, 0.1);
+    ExitSpots v;
+    v.crossed = {0, 1, 0}, v.parallel = {1, 0, 0}, v.bottom = facetFacing(stone, {0, 0, -1});
+    shootThrough(trace, scene, -0.2f, 0.1f, 4000, v);
+    uint64_t ordinary = 0, extraordinary = 0;
+    for (const Vec3f& p : v.spots) {
+        EXPECT_NEAR(p.y, 0.1, 1e-5);
+        if (std::abs(p.x + 0.2f) < 1e-5f) {
+            ++ordinary;
+        } else {
+            EXPECT_NEAR(p.x + 0.2, tanRho, 1e-5) << "the e ray walks off toward the axis";
+            ++extraordinary;
+        }
+    }
+    // Unpolarised light splits about evenly (each wave's entry loss is a few per cent).
+    const double total = double(ordinary + extraordinary);
+    ASSERT_GT(total, 3000);
+    EXPECT_NEAR(double(ordinary) / total, 0.5, 0.04);
+    // Light polarised across the principal plane (along y) enters as the ordinary wave only, along x as the
+    // extraordinary wave only.
+    for (double polarizer : {90.0, 0.0}) {
+        TraceSettings polarised = settings;
+        polarised.light.polarizerDeg = polarizer;
+        const Scene polarisedScene(stone, polarised);
+        const TraceBase withPolariser(polarisedScene, polarised);
+        ExitSpots w;
+        w.crossed = {0, 1, 0}, w.parallel = {1, 0, 0}, w.bottom = v.bottom;
+        shootThrough(withPolariser, polarisedScene, -0.2f, 0.1f, 1000, w);
+        ASSERT_GT(w.spots.size(), 700u);
+        for (const Vec3f& p : w.spots)
+            EXPECT_NEAR(p.x + 0.2, polarizer == 90 ? 0 : tanRho, 1e-5) << polarizer;
+    }
+}
+
+TEST(BirefringentTrace, SlabCutAlongItsAxisBlinksFourTimesATurnBetweenCrossedPolarisers) {
+    // A uniaxial slab with its axis in the plane of its faces (along x) between crossed polarisers, light
+    // straight through: light polarised at alpha to the axis enters as e (share cos^2 alpha, polarised along
+    // the axis) and o (sin^2 alpha, across it); the analyser at alpha + 90 passes sin^2 alpha of the first and
+    // cos^2 alpha of the second: sin^2(2 alpha) / 2 in all, dark at 0, 90, 180 and 270 deg (Hecht, Optics,
+    // sec. 8.10; the two waves' Fresnel losses differ by under 2 % for calcite).
+    const Stone stone = cube();
+    for (double alpha : {0.0, 22.5, 45.0, 90.0, 135.0}) {
+        TraceSettings settings = calcite(90);
+        settings.light.polarizerDeg = alpha;
+        const Scene scene(stone, settings);
+        const TraceBase trace(scene, settings);
+        const double a = radians(alpha);
+        const Vec3f along(float(std::cos(a)), float(std::sin(a)), 0);
+        AnalyserTally v{{-along.y, along.x, 0}, along, facetFacing(stone, {0, 0, -1}), 0, 0, 0, {}, {}};
+        shootThrough(trace, scene, 0.1f, -0.1f, 20000, v);
+        ASSERT_GT(v.through, 15000u);
+        const double expected = 0.5 * std::pow(std::sin(2 * a), 2);
+        EXPECT_NEAR(v.crossedSum / double(v.through), expected, 0.02) << alpha;
+        if (expected == 0) {
+            EXPECT_LT(v.crossedSum, 1e-6 * double(v.through)) << alpha << " deg: dark";
+        }
+    }
+}
+
+TEST(BirefringentTrace, SapphireBrilliantIsTheSameAtAnyThreadCountAndConservesPhotons) {
+    TraceSettings settings = polarized(2 * kPhotonBlock + 99);
+    settings.material = "sapphire";
+    settings.dispersion = true;
+    settings.opticAxis = {30, 45};
+    settings.light.model = LightModelKind::Hemisphere;
+    settings.fire.enabled = true;
+    json first;
+    for (int threads : {1, 2}) {
+        settings.threads = threads;
+        const TraceResult r = test::traceStone(test::roundBrilliant(), settings);
+        EXPECT_EQ(r.stats.entered, r.stats.exited + r.stats.trapped);
+        EXPECT_EQ(r.stats.hit, r.stats.entered + r.stats.reflectedAtEntry);
+        json j = traceReport(r, test::roundBrilliant(), settings);
+        j.erase("timing");
+        j["settings"].erase("threads");
+        if (threads == 1) {
+            first = j;
+        } else {
+            EXPECT_EQ(j.dump(), first.dump());
+        }
+    }
+    EXPECT_GT(first["totals"]["crown_return"].get<double>(), 0.2);
+    // The same stone traced with polarisation off sees n_o alone.
+    settings.polarization = PolarizationMode::Off;
+    const DesignFacts off = designFacts(test::roundBrilliant(), settings);
+    EXPECT_NE(off.doubleRefraction.find("not traced"), std::string::npos);
+    settings.polarization = PolarizationMode::On;
+    EXPECT_NE(designFacts(test::roundBrilliant(), settings).doubleRefraction.find("traced: each ray splits"),
+              std::string::npos);
 }
