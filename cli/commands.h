@@ -10,5 +10,6 @@ void addTraceCommand(CLI::App& app);
 void addStudyCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addSweepCommand(CLI::App& app);
+void addPolariscopeCommand(CLI::App& app);
 
 }  // namespace facetlight::cli

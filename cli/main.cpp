@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
     facetlight::cli::addStudyCommand(app);
     facetlight::cli::addRenderCommand(app);
     facetlight::cli::addSweepCommand(app);
+    facetlight::cli::addPolariscopeCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

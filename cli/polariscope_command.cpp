@@ -1,0 +1,66 @@
+// facetlight polariscope: the stone turned between crossed polarisers, as a gemmologist's first test of an
+// unknown stone: does it stay dark (singly refracting) or blink four times a turn (doubly refracting)?
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+#include "cuts/mesh_resolver.h"
+#include "terminal_output.h"
+#include "trace_options.h"
+#include "viewer/polariscope.h"
+
+namespace facetlight::cli {
+
+namespace {
+
+struct PolariscopeOptions {
+    TraceOptions trace;
+    int angles = PolariscopeSettings{}.angles;
+    std::string jsonPath;
+};
+
+void run(const PolariscopeOptions& o) {
+    const TraceSettings settings = toTraceSettings(o.trace);
+    const Stone stone = resolveStone(o.trace.mesh, stoneOptions(o.trace));
+    RunControl control;
+    Polariscope p;
+    {
+        ProgressLine bar(true, control);
+        p = polariscope(stone, settings, {o.angles, settings.photons}, &control);
+    }
+    nlohmann::json j = toJson(p);
+    j["settings"] = toJson(settings);
+    if (!o.jsonPath.empty()) writeFile(o.jsonPath, j.dump(2) + "\n");
+    std::cout << "turned (deg)  through the analyser (share of the light leaving upward)\n";
+    for (const PolariscopeReading& r : p.readings) {
+        char line[96];
+        std::snprintf(line, sizeof line, "%10.1f    %5.1f +- %.1f %%\n", r.angleDeg, 100 * r.share(),
+                      100 * r.shareStderr());
+        std::cout << line;
+    }
+    if (p.blinks) {
+        std::cout << "blinks: dark at";
+        for (double a : p.darkAnglesDeg) std::cout << " " << a;
+        std::cout << " deg of a turn: doubly refracting\n";
+    } else {
+        std::cout << "stays as it is as it turns: singly refracting, or seen along an optic axis\n";
+    }
+}
+
+}  // namespace
+
+void addPolariscopeCommand(CLI::App& app) {
+    auto o = std::make_shared<PolariscopeOptions>();
+    o->trace.defaults.photons = PolariscopeSettings{}.photons;
+    o->trace.defaults.dispersion = false;
+    CLI::App* cmd = app.add_subcommand(
+        "polariscope",
+        "Turn the stone between crossed polarisers, lit from below (--photons per position): does it blink?");
+    addTraceOptions(cmd, o->trace);
+    cmd->add_option("--angles", o->angles, "Turntable positions over half a turn")->capture_default_str();
+    cmd->add_option("--json", o->jsonPath, "Also write the readings as JSON to this file");
+    cmd->callback([o] { run(*o); });
+}
+
+}  // namespace facetlight::cli

@@ -1,0 +1,112 @@
+#include "viewer/polariscope.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/scene.h"
+#include "trace/photon_walker.h"
+#include "util/error.h"
+#include "util/parallel.h"
+
+namespace facetlight {
+namespace {
+
+// The analyser's random draws: a stream apart from the photons' (seed and index mixed with a constant).
+constexpr uint64_t kAnalyserStream = 0x9e3779b97f4a7c15ULL;
+
+// Counts what leaves the stone upward and what the analyser (axis across the vertical) passes of it.
+struct AnalyserCount {
+    Vec3f axis;
+    uint64_t seed = 0, index = 0;
+    uint64_t upward = 0, passed = 0;
+    Polarization state;
+
+    void wavelength(float) {}
+    void missed() {}
+    void reflectedAtEntry(uint32_t, const Vec3f&, const Vec3f&) {}
+    void entered(uint32_t) {}
+    void internalReflection(uint32_t) {}
+    void exitPolarization(const Polarization& p, const Vec3f&) { state = p; }
+    void exited(uint32_t, const Vec3f&, const Vec3f& d, uint32_t) {
+        if (d.z <= 0) return;
+        ++upward;
+        Rng draw(seed ^ kAnalyserStream, index);
+        passed += draw.uniform() < analyserShare(state, d, frameAcross(d, axis));
+    }
+    void trapped(uint32_t) {}
+    void lost(uint32_t) {}
+};
+
+}  // namespace
+
+double PolariscopeReading::shareStderr() const {
+    const double p = share();
+    return upward ? std::sqrt(p * (1 - p) / double(upward)) : 0;
+}
+
+Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const PolariscopeSettings& p,
+                        RunControl* control) {
+    if (p.angles < 4 || p.angles > 360) throw Error("angles", "angles must be 4 to 360");
+    if (p.photons < 100 || p.photons > 10'000'000)
+        throw Error("photons", "photons per position must be 100 to 1e7");
+    Polariscope out;
+    out.readings.resize(size_t(p.angles));
+    if (control) control->startPhase(RunPhase::Tracing, uint64_t(p.angles) * p.photons);
+    const BlockLoop loop{0, uint64_t(p.angles), 1, settings.threads};
+    parallelForBlocks(loop, control, [&](int, uint64_t first, uint64_t last) {
+        for (uint64_t k = first; k < last; ++k) {
+            const double angle = 180.0 * double(k) / p.angles;
+            // Turning the stone by `angle` is turning both filters by -angle.
+            const double polarizer = std::fmod(360.0 - angle, 180.0);
+            TraceSettings s = settings;
+            s.polarization = PolarizationMode::On;
+            s.light = LightSettings{};
+            s.light.direction = {0, 0, 1};
+            s.light.polarizerDeg = polarizer;
+            s.fire.enabled = false;
+            const Scene scene(stone, s);
+            const TraceBase trace(scene, s);
+            const double a = radians(polarizer + 90);
+            AnalyserCount count{Vec3f(float(std::cos(a)), float(std::sin(a)), 0), s.seed, 0, 0, 0, {}};
+            for (uint64_t i = 0; i < p.photons; ++i) {
+                count.index = i;
+                if (scene.convex()) {
+                    PhotonWalker::walk(trace, *scene.convex(), i, count);
+                } else {
+                    PhotonWalker::walk(trace, *scene.embree(), i, count);
+                }
+            }
+            out.readings[k] = {angle, count.upward, count.passed};
+        }
+        return (last - first) * p.photons;
+    });
+    // Dark positions over a whole turn: the half turn's minima and the same 180 deg on.
+    const auto brightest = std::max_element(out.readings.begin(), out.readings.end(),
+                                            [](const auto& a, const auto& b) { return a.share() < b.share(); });
+    const size_t n = out.readings.size();
+    for (size_t k = 0; k < n; ++k) {
+        const PolariscopeReading& r = out.readings[k];
+        const double before = out.readings[(k + n - 1) % n].share(), after = out.readings[(k + 1) % n].share();
+        if (r.share() <= before && r.share() < after && r.share() < 0.25 * brightest->share() &&
+            brightest->share() - r.share() > 5 * std::hypot(brightest->shareStderr(), r.shareStderr())) {
+            out.darkAnglesDeg.push_back(r.angleDeg);
+            out.blinks = true;
+        }
+    }
+    for (size_t k = 0, dark = out.darkAnglesDeg.size(); k < dark; ++k)
+        out.darkAnglesDeg.push_back(out.darkAnglesDeg[k] + 180);
+    return out;
+}
+
+nlohmann::json toJson(const Polariscope& p) {
+    nlohmann::json readings = nlohmann::json::array();
+    for (const PolariscopeReading& r : p.readings)
+        readings.push_back({{"angle_deg", r.angleDeg},
+                            {"share", r.share()},
+                            {"share_stderr", r.shareStderr()},
+                            {"upward", r.upward},
+                            {"passed", r.passed}});
+    return {{"readings", readings}, {"dark_angles_deg", p.darkAnglesDeg}, {"blinks", p.blinks}};
+}
+
+}  // namespace facetlight

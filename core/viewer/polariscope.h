@@ -1,0 +1,48 @@
+#pragma once
+// The polariscope, a gemmologist's first test of an unknown stone (docs/optics.md, "The polariscope"): the stone
+// on a turntable between crossed polarisers, lit from below. A singly refracting stone stays dark as it turns;
+// a doubly refracting one blinks, dark four times a turn, where the lower polariser lies along the field of one
+// of its two waves.
+#include <cstdint>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "stone/stone.h"
+#include "trace/trace_settings.h"
+#include "util/run_control.h"
+
+namespace facetlight {
+
+struct PolariscopeSettings {
+    int angles = 36;           // turntable positions over half a turn (the view repeats every 180 deg)
+    uint64_t photons = 20000;  // per position
+};
+
+// One turntable position: the share of the light leaving the stone upward that the analyser passes.
+struct PolariscopeReading {
+    double angleDeg = 0;  // the stone turned this far (counter-clockwise seen from above)
+    uint64_t upward = 0;  // photons that left the stone upward
+    uint64_t passed = 0;  // of those, passed by the analyser (each with its Malus share, drawn)
+    double share() const { return upward ? double(passed) / double(upward) : 0; }
+    double shareStderr() const;
+};
+
+struct Polariscope {
+    std::vector<PolariscopeReading> readings;
+    // The turntable angles where the stone goes dark (local minima under a quarter of the brightest reading),
+    // over a whole turn; blinks when it does so clearly (the brightest reading 5 standard errors above them).
+    std::vector<double> darkAnglesDeg;
+    bool blinks = false;
+};
+
+// `settings` gives the stone's material, optic axis, seed and threads; the instrument sets the rest: collimated
+// light travelling up, a polariser at -angle (the stone turned by angle), the analyser crossed above it, and
+// polarisation on. Photon i of each position draws from Rng(seed, i) and the analyser from a stream of its own,
+// so the readings are the same at any thread count.
+Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const PolariscopeSettings& p,
+                        RunControl* control = nullptr);
+
+nlohmann::json toJson(const Polariscope& p);
+
+}  // namespace facetlight

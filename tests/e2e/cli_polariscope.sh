@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# `facetlight polariscope`: a doubly refracting stone blinks between crossed polarisers, a singly refracting one
+# does not; the readings come out as JSON; bad input is refused naming its flag.
+# cli_polariscope.sh FACETLIGHT
+set -euo pipefail
+exe="$1"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+"$exe" polariscope --mesh round_brilliant --material sapphire --optic-axis-tilt 90 --angles 12 --photons 3000 \
+    --json "$work/p.json" > "$work/sapphire.txt"
+grep -q "blinks: dark at 0 90 180 270 deg of a turn: doubly refracting" "$work/sapphire.txt" ||
+    { echo "sapphire across its axis did not blink"; cat "$work/sapphire.txt"; exit 1; }
+python3 - "$work/p.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert len(j["readings"]) == 12 and j["blinks"] is True, j
+assert j["settings"]["material"] == "sapphire" and j["settings"]["optic_axis"]["tilt_deg"] == 90
+r = {x["angle_deg"]: x["share"] for x in j["readings"]}
+assert r[45.0] > 5 * r[0.0] and r[45.0] > 5 * r[90.0], r
+PY
+"$exe" polariscope --mesh round_brilliant --material cubic_zirconia --angles 12 --photons 3000 > "$work/cz.txt"
+grep -q "singly refracting" "$work/cz.txt" || { echo "cubic zirconia blinked"; cat "$work/cz.txt"; exit 1; }
+refused() {  # refused EXPECTED-MESSAGE FLAGS...
+    local expected="$1"
+    shift
+    if "$exe" polariscope --mesh round_brilliant "$@" 2> "$work/err.txt" > /dev/null; then
+        echo "accepted: $*"; exit 1
+    fi
+    grep -q -- "$expected" "$work/err.txt" || { echo "expected '$expected' for $*:"; cat "$work/err.txt"; exit 1; }
+}
+refused "angles must be 4 to 360" --angles 2
+refused "--optic-axis-tilt must be" --optic-axis-tilt 200
+refused "--material must be one of" --material glassy
+echo "polariscope: blinks for sapphire, not for cubic zirconia"

@@ -1,0 +1,75 @@
+#include "viewer/polariscope.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "stone/stone.h"
+#include "support/expect_error.h"
+#include "support/fixtures.h"
+
+using namespace facetlight;
+
+namespace {
+
+Stone cube() {
+    PolygonMesh m;
+    for (int i = 0; i < 8; ++i)
+        m.vertices.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+    m.polygons = {{{0, 2, 3, 1}, "bottom"}, {{4, 5, 7, 6}, "top"},  {{0, 1, 5, 4}, "front"},
+                  {{2, 6, 7, 3}, "back"},   {{0, 4, 6, 2}, "left"}, {{1, 3, 7, 5}, "right"}};
+    return Stone::build(m, "cube");
+}
+
+TraceSettings block(const std::string& material, double axisTiltDeg) {
+    TraceSettings s;
+    s.material = material;
+    s.dispersion = false;
+    s.opticAxis.tiltDeg = axisTiltDeg;
+    s.threads = 2;
+    return s;
+}
+
+}  // namespace
+
+TEST(Polariscope, IsotropicCubeStaysDarkAtEveryTurn) {
+    const Polariscope p = polariscope(cube(), block("diamond", 0), {12, 4000});
+    ASSERT_EQ(p.readings.size(), 12u);
+    for (const PolariscopeReading& r : p.readings) {
+        EXPECT_GT(r.upward, 1500u);
+        EXPECT_EQ(r.passed, 0u) << r.angleDeg << " deg";
+    }
+    EXPECT_FALSE(p.blinks);
+    EXPECT_TRUE(p.darkAnglesDeg.empty());
+}
+
+TEST(Polariscope, SlabCutAlongItsAxisBlinksFourTimesATurn) {
+    // Calcite with its optic axis along x, in the plane of the faces: dark where the polariser lies along the
+    // axis or across it (the stone turned 0, 90, 180 and 270 deg), brightest between, where the analyser
+    // passes sin^2(2 angle) / 2 of the light (Hecht, Optics, sec. 8.10).
+    const Polariscope p = polariscope(cube(), block("calcite", 90), {16, 4000});
+    EXPECT_TRUE(p.blinks);
+    ASSERT_EQ(p.darkAnglesDeg.size(), 4u);
+    EXPECT_EQ(p.darkAnglesDeg[0], 0);
+    EXPECT_EQ(p.darkAnglesDeg[1], 90);
+    EXPECT_EQ(p.darkAnglesDeg[2], 180);
+    EXPECT_EQ(p.darkAnglesDeg[3], 270);
+    for (const PolariscopeReading& r : p.readings) {
+        const double expected = 0.5 * std::pow(std::sin(2 * radians(r.angleDeg)), 2);
+        EXPECT_NEAR(r.share(), expected, 4 * r.shareStderr() + 0.02) << r.angleDeg << " deg";
+    }
+}
+
+TEST(Polariscope, SameReadingsAtAnyThreadCount) {
+    TraceSettings s = block("sapphire", 40);
+    const Stone& stone = test::roundBrilliant();
+    s.threads = 1;
+    const nlohmann::json one = toJson(polariscope(stone, s, {6, 1000}));
+    s.threads = 3;
+    EXPECT_EQ(toJson(polariscope(stone, s, {6, 1000})).dump(), one.dump());
+}
+
+TEST(Polariscope, RefusesSettingsOutOfRange) {
+    test::expectError([] { polariscope(cube(), block("diamond", 0), {2, 1000}); }, "angles");
+    test::expectError([] { polariscope(cube(), block("diamond", 0), {8, 10}); }, "photons");
+}
