@@ -87,7 +87,7 @@ Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const
     for (size_t k = 0; k < n; ++k) {
         const PolariscopeReading& r = out.readings[k];
         const double before = out.readings[(k + n - 1) % n].share(), after = out.readings[(k + 1) % n].share();
-        if (r.share() <= before && r.share() < after && r.share() < 0.25 * brightest->share() &&
+        if (r.share() <= before && r.share() < after && r.share() < 0.5 * brightest->share() &&
             brightest->share() - r.share() > 5 * std::hypot(brightest->shareStderr(), r.shareStderr())) {
             out.darkAnglesDeg.push_back(r.angleDeg);
             out.blinks = true;

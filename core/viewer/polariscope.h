@@ -30,7 +30,7 @@ struct PolariscopeReading {
 
 struct Polariscope {
     std::vector<PolariscopeReading> readings;
-    // The turntable angles where the stone goes dark (local minima under a quarter of the brightest reading),
+    // The turntable angles where the stone goes dark (local minima under half the brightest reading),
     // over a whole turn; blinks when it does so clearly (the brightest reading 5 standard errors above them).
     std::vector<double> darkAnglesDeg;
     bool blinks = false;
