@@ -32,6 +32,14 @@ class PhotonWalker {
         Polarization pol;  // when the trace is polarised
         float nE = 0;      // a birefringent stone's extraordinary index (n is the ordinary one)
         PlaneWave wave;    // inside a birefringent stone: the ordinary or extraordinary wave it travels as
+        bool coherent = false;  // near the optic axis instead: both waves in phase, one state at n_o (pol)
+
+        // Index n (n_o in a birefringent stone) for a ray that carries one index: n_e is n plus the
+        // birefringence at 589.3 nm, its own dispersion left out (docs/optics.md, "Birefringent stones").
+        void setIndex(const TraceBase& s, float index) {
+            n = index;
+            nE = index + s.birefringenceD();
+        }
     };
 
     // Draws photon `index` and takes it to the stone; true when it is inside and has to be stepped on.
@@ -102,7 +110,7 @@ class PhotonWalker {
             visit.lost(ph.bounces);
             return false;
         }
-        if (s.birefringent()) return stepCrystalWave(s, hit, visit, ph);
+        if (s.birefringent() && !ph.coherent) return stepCrystalWave(s, hit, visit, ph);
         const Vec3f p = ph.p + ph.d * hit.t, d = ph.d;
         const Vec3f normal = s.scene().normal(hit.facet);
         const float cosI = std::clamp(dot(d, normal), 0.0f, 1.0f), n = ph.n;
@@ -129,6 +137,7 @@ class PhotonWalker {
         }
         ph.p = p;
         ph.d = d - normal * (2 * cosI);
+        if (ph.coherent) leaveAxisCone(s, ph);
         visit.internalReflection(hit.facet);
         if (++ph.bounces >= uint32_t(s.settings().maxBounces)) {
             visit.trapped(ph.bounces);
@@ -151,11 +160,10 @@ class PhotonWalker {
         const Vec3f p = eye + dir * hit.t;
         const Vec3f& normal = scene.normal(hit.facet);
         const float eta = 1.0f / n;
-        ph.n = n;
+        ph.setIndex(s, n);
         if (s.polarized()) {
             // An unpolarised eye: by reciprocity the share it sees is what unpolarised light would bring it.
             ph.pol = {Stokes{}, frameAcross(dir, Vec3f(1, 0, 0))};
-            ph.nE = n + s.birefringenceD();
             Vec3f d = dir;
             if (!(s.birefringent() ? enterCrystalWave(s, normal, hit.facet, p, d, visit, ph)
                                    : enterPolarized(normal, eta, hit.facet, p, d, visit, ph)))
@@ -199,12 +207,15 @@ class PhotonWalker {
 
     // A birefringent stone (docs/optics.md, "Birefringent stones"): where a ray along d from outside meets
     // facet `facet` at p, it reflects or enters as the ordinary or the extraordinary wave, chosen by their
-    // energy shares for the photon's state (optics/birefringence.h). False after visit.reflectedAtEntry; else
-    // d is the wave's ray (energy) direction and ph.wave the wave.
+    // energy shares for the photon's state (optics/birefringence.h); near the optic axis it goes on as one
+    // polarised state at n_o instead (TraceBase::nearOpticAxis). False after visit.reflectedAtEntry; else d is
+    // the wave's ray (energy) direction and ph.wave the wave.
     template <class Visitor>
     static bool enterCrystalWave(const TraceBase& s, const Vec3f& normal, uint32_t facet, const Vec3f& p,
                                  Vec3f& d, Visitor& visit, Photon& ph) {
         const InterfaceWaves w = enterCrystal(s.crystal(ph.n, ph.nE), toVec3(d), toVec3(normal));
+        ph.coherent = s.nearOpticAxis(w.transmitted[0].wave.waveNormal);
+        if (ph.coherent) return enterPolarized(normal, 1.0f / ph.n, facet, p, d, visit, ph);
         const Coherency j = coherencyOf(ph.pol, d, Vec3f(w.incident[0].field));
         const double reflected = shareOf(w.reflected[0], j) + shareOf(w.reflected[1], j);
         const double ordinary = shareOf(w.transmitted[0], j);
@@ -216,6 +227,19 @@ class PhotonWalker {
         ph.wave = w.transmitted[u < reflected + ordinary ? 0 : 1].wave;
         d = Vec3f(ph.wave.ray);
         return true;
+    }
+
+    // A photon that kept its state near the optic axis becomes the ordinary or the extraordinary wave once its
+    // direction leaves the cone where the two stay in phase, drawn by the share of its state along each field.
+    static void leaveAxisCone(const TraceBase& s, Photon& ph) {
+        const Vec3 k = toVec3(ph.d);
+        if (s.nearOpticAxis(k)) return;
+        const UniaxialMedium crystal = s.crystal(ph.n, ph.nE);
+        const PlaneWave ordinary = ordinaryWave(crystal, k);
+        const float toOrdinary = analyserShare(ph.pol, ph.d, Vec3f(ordinary.field));
+        ph.wave = ph.rng.uniform() < toOrdinary ? ordinary : extraordinaryWave(crystal, k);
+        ph.d = Vec3f(ph.wave.ray);
+        ph.coherent = false;
     }
 
     // step() in a birefringent stone, the exit search done: the wave leaves into the air (its state from the
@@ -243,6 +267,10 @@ class PhotonWalker {
         ph.wave = w.reflected[u < out + ordinary ? 0 : 1].wave;
         ph.p = p;
         ph.d = Vec3f(ph.wave.ray);
+        if (s.nearOpticAxis(ph.wave.waveNormal)) {  // the wave, linear along its field, goes on as one state
+            ph.coherent = true;
+            ph.pol = {Stokes{1, 1, 0, 0}, frameAcross(ph.d, Vec3f(ph.wave.field))};
+        }
         visit.internalReflection(hit.facet);
         if (++ph.bounces >= uint32_t(s.settings().maxBounces)) {
             visit.trapped(ph.bounces);
@@ -300,8 +328,7 @@ class PhotonWalker {
         ph.bounces = 0;
         const LightRay ray = s.scene().light().sample(ph.rng);
         if (s.scene().dispersive()) ph.rng.uniform();  // start()'s wavelength
-        ph.n = n;
-        ph.nE = n + s.birefringenceD();
+        ph.setIndex(s, n);
         return enter(s, isect, ray, visit, ph);
     }
 

@@ -27,6 +27,9 @@ TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
         opticAxis_ = settings.opticAxis.direction();
         const std::array<double, 3> d = material.principalIndices(Material::kSodiumD);
         birefringenceD_ = float(d[2] - d[0]);
+        // n_e(theta) - n_o ~ (n_e - n_o) sin^2 theta near the axis (Born & Wolf eq. 15.3.(21)): half a wave of
+        // 550 nm over the girdle diameter.
+        coherentSin2_ = 275.0 / (std::abs(d[2] - d[0]) * settings.sizeMm * 1e6);
     }
     if (scene.light().collimated() && !scene.dispersive() && !polarized()) {
         // The same float operations as PhotonWalker::enter, so a photon's fate is bit for bit the same.

@@ -49,6 +49,13 @@ class TraceBase {
     UniaxialMedium crystal(float nO, float nE) const { return {nO, nE, opticAxis_}; }
     float extraordinaryIndex(double wavelengthNm) const;
     float birefringenceD() const { return birefringenceD_; }
+    // Whether a wave normal k is so near the optic axis that the ordinary and extraordinary waves stay within
+    // half a wave of each other over the stone's size, (n_e(theta) - n_o) L < lambda / 2 at 550 nm: there light
+    // keeps its polarisation as in an isotropic stone at n_o (docs/optics.md, "Birefringent stones").
+    bool nearOpticAxis(const Vec3& k) const {
+        const double c = dot(k, opticAxis_);
+        return birefringent_ && 1 - c * c < coherentSin2_;
+    }
 
     // What the tallies need: whether a facet is on the crown side (table or crown), the world's vertical in
     // the stone's frame, the exit-angle bins, cos of the head-shadow half-angle (2 without a head cone) and
@@ -67,6 +74,7 @@ class TraceBase {
     bool birefringent_ = false;
     Vec3 opticAxis_;
     float birefringenceD_ = 0;
+    double coherentSin2_ = 0;  // sin^2 of the half-angle of the cone around the axis where the waves stay in phase
     std::vector<uint8_t> crownSide_;  // 1 for table and crown facets
     Vec3f up_;
     ExitAngleBins exitBin_;

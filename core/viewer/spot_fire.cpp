@@ -91,7 +91,7 @@ SpotTally spotFire(const TraceBase& trace, const ViewerSettings& settings, RunCo
                 for (int b = 0; b < kFireBands; ++b) {
                     PhotonWalker::Photon ph;
                     ph.rng = rng;
-                    ph.n = bands[b];
+                    ph.setIndex(trace, bands[b]);
                     if (PhotonWalker::enter(trace, scene, ray, exit[b], ph))
                         while (PhotonWalker::step(trace, scene, exit[b], ph)) {
                         }

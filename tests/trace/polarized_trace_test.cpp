@@ -9,6 +9,7 @@
 #include "support/expect_error.h"
 #include "support/fixtures.h"
 #include "trace/photon_walker.h"
+#include "viewer/verdict.h"
 
 using namespace facetlight;
 using nlohmann::json;
@@ -310,4 +311,39 @@ TEST(BirefringentTrace, SapphireBrilliantIsTheSameAtAnyThreadCountAndConservesPh
     settings.polarization = PolarizationMode::On;
     EXPECT_NE(designFacts(test::roundBrilliant(), settings).doubleRefraction.find("traced: each ray splits"),
               std::string::npos);
+}
+
+TEST(BirefringentTrace, ViewerFiguresOfADoublyRefractingStone) {
+    // The viewer's rays and the spot lamps' photons carry one index each: n_e follows from it (setIndex).
+    TraceSettings settings = polarized(1000);
+    settings.material = "sapphire";
+    settings.dispersion = true;
+    settings.viewer.office.points = 200;
+    settings.viewer.spot.photons = 2000;
+    const nlohmann::json v = viewerReport(test::roundBrilliant(), settings);
+    EXPECT_GT(v["figures"]["brightness"]["value"].get<double>(), 0.05);
+    EXPECT_GT(v["figures"]["fire"]["value"].get<double>(), 0.0);
+}
+
+TEST(BirefringentTrace, AlongTheOpticAxisTheWavesStayInPhase) {
+    // A calcite block with its axis along the light: both waves see n_o and keep in step, so the block between
+    // crossed polarisers stays dark at every polariser angle, as an isotropic one does.
+    const Stone stone = cube();
+    for (double polarizer : {0.0, 30.0, 45.0}) {
+        TraceSettings settings = calcite(0);
+        settings.light.polarizerDeg = polarizer;
+        const Scene scene(stone, settings);
+        const TraceBase trace(scene, settings);
+        const double a = radians(polarizer);
+        const Vec3f along(float(std::cos(a)), float(std::sin(a)), 0);
+        AnalyserTally v{{-along.y, along.x, 0}, along, facetFacing(stone, {0, 0, -1}), 0, 0, 0, {}, {}};
+        shootThrough(trace, scene, 0.1f, -0.1f, 5000, v);
+        ASSERT_GT(v.through, 4000u);
+        EXPECT_LT(v.crossedSum, 1e-6 * double(v.through)) << polarizer;
+    }
+    // Tilted well off the light it splits again (the slab test above).
+    const TraceSettings tilted = calcite(20);
+    const Scene scene(stone, tilted);
+    EXPECT_FALSE(TraceBase(scene, tilted).nearOpticAxis({0, 0, -1}));
+    EXPECT_TRUE(TraceBase(scene, tilted).nearOpticAxis(calcite(20).opticAxis.direction()));
 }

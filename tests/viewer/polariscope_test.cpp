@@ -58,6 +58,10 @@ TEST(Polariscope, SlabCutAlongItsAxisBlinksFourTimesATurn) {
         const double expected = 0.5 * std::pow(std::sin(2 * radians(r.angleDeg)), 2);
         EXPECT_NEAR(r.share(), expected, 4 * r.shareStderr() + 0.02) << r.angleDeg << " deg";
     }
+    // Cut across its axis (seen along it) the block stays dark as it turns: the two waves keep in step.
+    const Polariscope along = polariscope(cube(), block("calcite", 0), {8, 2000});
+    EXPECT_FALSE(along.blinks);
+    for (const PolariscopeReading& r : along.readings) EXPECT_EQ(r.passed, 0u) << r.angleDeg;
 }
 
 TEST(Polariscope, SameReadingsAtAnyThreadCount) {
