@@ -22,15 +22,17 @@ void JobBudget::check(const StudySettings& settings, int threads) const {
     if (cost.seconds <= maxSeconds_) return;
     const CostPart& part = cost.largest();
     throw Error(part.field, part.name + ": about " + formatSeconds(part.seconds) + " s of the " +
-                                formatSeconds(maxSeconds_) + " s a job may take on this server (" + part.size +
-                                "); the whole job about " + formatSeconds(cost.seconds) + " s with " +
-                                std::to_string(threads) + (threads == 1 ? " thread" : " threads") +
+                                formatSeconds(maxSeconds_) + " s a job may take on this server (" +
+                                part.size + "); the whole job about " + formatSeconds(cost.seconds) +
+                                " s with " + std::to_string(threads) +
+                                (threads == 1 ? " thread" : " threads") +
                                 (part.field.empty() ? "" : ": lower " + part.field));
 }
 
 std::string JobBudget::overrun(double ranSeconds) const {
-    return "stopped: ran " + formatSeconds(ranSeconds) + " s, over its budget of " + formatSeconds(runSeconds()) +
-           " s (twice the " + formatSeconds(maxSeconds_) + " s a job may take on this server)";
+    return "stopped: ran " + formatSeconds(ranSeconds) + " s, over its budget of " +
+           formatSeconds(runSeconds()) + " s (twice the " + formatSeconds(maxSeconds_) +
+           " s a job may take on this server)";
 }
 
 const CostRates& machineCostRates() {

@@ -60,8 +60,7 @@ json jobStatusJson(const JobRecord& job, const JobQueue& queue) {
     // This server's estimate of the whole job with the threads it gets (job_budget.h); none for a stored job
     // that no longer reads.
     if (job.spec)
-        doc["estimate_s"] =
-            std::round(queue.budget().estimate(spec.settings, used).seconds * 100) / 100;
+        doc["estimate_s"] = std::round(queue.budget().estimate(spec.settings, used).seconds * 100) / 100;
     json links = {{"self", self}};
     switch (job.state) {
         case JobState::Queued:

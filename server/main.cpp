@@ -44,8 +44,8 @@ int main(int argc, char** argv) {
                    "Most bytes the uploaded meshes may take together; an upload beyond gets 507")
         ->capture_default_str();
     app.add_option("--max-job-seconds", l.maxJobSeconds,
-                   "Longest a job may be estimated to take on this machine, in seconds: longer gets 422, and a "
-                   "running job is stopped after twice this (0: no limit)")
+                   "Seconds a job may be estimated to take here: longer gets 422, and a job running twice "
+                   "as long is stopped (0: no limit)")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1e7));
     app.add_option("--max-queue", l.maxQueued, "Most jobs waiting in the queue")

@@ -17,12 +17,11 @@ Service::Service(ServiceConfig config) : config_(std::move(config)), http_(confi
     results_ = std::make_unique<ResultStore>(config_.dataDir / "jobs");
     catalog_ = std::make_unique<MeshCatalog>(*meshes_, config_.meshesDir);
     runner_ = makeStudyRunner(*catalog_, config_.launch);
-    const JobBudget budget(config_.limits.maxJobSeconds,
-                           config_.costRates ? *config_.costRates : machineCostRates());
+    const CostRates& rates = config_.costRates ? *config_.costRates : machineCostRates();
+    const JobBudget budget(config_.limits.maxJobSeconds, rates);
     queue_ = std::make_unique<JobQueue>(*store_, *results_, *runner_, config_.limits.maxQueued,
                                         config_.limits.minFreeBytes, cores, budget);
     if (budget.maxSeconds() > 0) {
-        const CostRates& rates = config_.costRates ? *config_.costRates : machineCostRates();
         std::cerr << "facetlight-server: jobs estimated over " << formatSeconds(budget.maxSeconds())
                   << " s are refused and stopped after " << formatSeconds(budget.runSeconds())
                   << " s (--max-job-seconds); a thread here traces "

@@ -75,10 +75,9 @@ CostRates calibrateCostRates() {
 
     const uint64_t mapPhotons = 20'000;
     PhotonMap caustics;
-    rates.mapPhoton = seconds([&] {
-                          caustics = PhotonMap(traceFloorPhotons(base, mapPhotons, 1).caustic, 1);
-                      }) /
-                      double(mapPhotons);
+    rates.mapPhoton =
+        seconds([&] { caustics = PhotonMap(traceFloorPhotons(base, mapPhotons, 1).caustic, 1); }) /
+        double(mapPhotons);
 
     RenderSettings r;
     r.width = r.height = 32;
@@ -88,8 +87,8 @@ CostRates calibrateCostRates() {
 
     FirePictureSettings firePicture;
     firePicture.wavelengths = 4;
-    rates.fireRay =
-        seconds([&] { facetlight::firePicture(scene, r, firePicture, 1, t.seed); }) / (rays * firePicture.wavelengths);
+    rates.fireRay = seconds([&] { facetlight::firePicture(scene, r, firePicture, 1, t.seed); }) /
+                    (rays * firePicture.wavelengths);
 
     AsetSettings aset;
     aset.samples = 2;
@@ -99,7 +98,8 @@ CostRates calibrateCostRates() {
     const int frames = 3;
     rates.framePixel = seconds([&] {
                            std::vector<Image> pictures;
-                           for (int k = 0; k < frames; ++k) pictures.push_back(asetPicture(view, aset, "calibration"));
+                           for (int k = 0; k < frames; ++k)
+                               pictures.push_back(asetPicture(view, aset, "calibration"));
                            encodeAnimatedWebp(pictures, 120);
                        }) /
                        (double(frames) * r.width * r.height);

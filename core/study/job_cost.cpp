@@ -62,11 +62,11 @@ void addSweepParts(const TraceSettings& t, const SweepRequest& sweep, const Cost
     }
     const double point = traceSeconds(t, t.photons, rates) + viewerSeconds(t, rates);
     // The reference stone the viewer figures are scored against is traced once.
-    parts.push_back({"sweep",
-                     costliest({{"photons", double(t.photons), double(usual.photons)},
-                                {"sweep.axes", points, 1}}),
-                     count(points) + " points x " + count(double(t.photons)) + " photons",
-                     points * point + viewerSeconds(t, rates)});
+    parts.push_back(
+        {"sweep",
+         costliest({{"photons", double(t.photons), double(usual.photons)}, {"sweep.axes", points, 1}}),
+         count(points) + " points x " + count(double(t.photons)) + " photons",
+         points * point + viewerSeconds(t, rates)});
     if (sweep.maximize.empty() || sweep.refineRounds == 0) return;
     double seconds = 0, growth = 1;
     uint64_t photons = t.photons;
@@ -98,9 +98,10 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
     if (s.sweep) {
         addSweepParts(t, *s.sweep, rates, parts);
     } else {
-        parts.push_back({"trace", "photons",
-                         count(double(t.photons)) + " photons" + (t.fire.enabled ? " with the fire trace" : ""),
-                         traceSeconds(t, t.photons, rates)});
+        parts.push_back(
+            {"trace", "photons",
+             count(double(t.photons)) + " photons" + (t.fire.enabled ? " with the fire trace" : ""),
+             traceSeconds(t, t.photons, rates)});
         // The stone's and the reference's (study.cpp's studyUnits): the reference is kept once traced, but
         // counting it keeps the estimate on the safe side.
         if (t.viewer.enabled)
@@ -117,18 +118,20 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
         const Factor depth{"render.max_depth", double(r.maxDepth), double(usual.maxDepth)};
         parts.push_back({"photon map", "render.map_photons", count(double(r.mapPhotons)) + " map photons",
                          double(r.mapPhotons) * rates.mapPhoton});
-        parts.push_back({"render",
-                         costliest({{"render.samples", double(r.samples), double(usual.samples)}, width, height,
-                                    depth}),
-                         pixels(r) + " x " + std::to_string(r.samples) + " samples x depth " +
-                             std::to_string(r.maxDepth),
-                         px * r.samples * r.maxDepth * rates.renderRay});
+        parts.push_back(
+            {"render",
+             costliest({{"render.samples", double(r.samples), double(usual.samples)}, width, height, depth}),
+             pixels(r) + " x " + std::to_string(r.samples) + " samples x depth " + std::to_string(r.maxDepth),
+             px * r.samples * r.maxDepth * rates.renderRay});
         if (s.firePicture) {
             const int n = s.firePicture->wavelengths;
             parts.push_back(
                 {"fire picture",
-                 costliest({{"fire_picture.wavelengths", double(n), double(FirePictureSettings{}.wavelengths)},
-                            width, height, depth}),
+                 costliest(
+                     {{"fire_picture.wavelengths", double(n), double(FirePictureSettings{}.wavelengths)},
+                      width,
+                      height,
+                      depth}),
                  pixels(r) + " x " + std::to_string(n) + " wavelengths x depth " + std::to_string(r.maxDepth),
                  px * n * r.maxDepth * rates.fireRay});
         }
@@ -136,17 +139,16 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
         const Factor samples{"aset.samples", double(aset.samples), double(AsetSettings{}.samples)};
         const std::string rays = pixels(r) + " x " + std::to_string(aset.samples) + " view rays";
         if (s.aset)
-            parts.push_back({"ASET view", costliest({samples, width, height}), rays,
-                             px * aset.samples * rates.asetRay});
+            parts.push_back(
+                {"ASET view", costliest({samples, width, height}), rays, px * aset.samples * rates.asetRay});
         if (s.tiltSeries) {
             const TiltSeriesSettings& tilt = *s.tiltSeries;
             const TiltSeriesSettings usualTilt;
             const double frames = tilt.frameCount();
             // More frames come from a wider tilt or a finer step: the one further from its default.
-            const Factor framesFactor =
-                tilt.maxDeg / usualTilt.maxDeg > usualTilt.stepDeg / tilt.stepDeg
-                    ? Factor{"tilt_series.max_deg", frames, usualTilt.frameCount()}
-                    : Factor{"tilt_series.step_deg", frames, usualTilt.frameCount()};
+            const Factor framesFactor = tilt.maxDeg / usualTilt.maxDeg > usualTilt.stepDeg / tilt.stepDeg
+                                            ? Factor{"tilt_series.max_deg", frames, usualTilt.frameCount()}
+                                            : Factor{"tilt_series.step_deg", frames, usualTilt.frameCount()};
             // Each frame's picture is drawn and encoded on one thread: not divided below.
             parts.push_back({"tilt series", costliest({framesFactor, samples, width, height}),
                              count(frames) + " frames x " + rays,

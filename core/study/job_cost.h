@@ -1,7 +1,7 @@
 #pragma once
 // What a job will cost before it runs (docs/reliability.md, "How long a job may take"): its parts (the trace,
-// the viewer, the photon map, the render, the fire picture, the ASET view, the tilt series; a sweep's grid and
-// its search's finer rounds) in seconds on this machine, from the rates cost_calibration.h measures once.
+// the viewer, the photon map, the render, the fire picture, the ASET view, the tilt series; a sweep's grid
+// and its search's finer rounds) in seconds on this machine, from the rates cost_calibration.h measures once.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -47,8 +47,8 @@ struct JobCost {
 
 // The job's parts with `threads` workers (what it will get: its threads capped at the machine's cores), each
 // rate's time divided among them and multiplied by kCostSafetyFactor. A sweep's points are the product of
-// its axes' sizes; with `maximize`, each finer round has at most 2 x refineSteps + 1 values along each axis of
-// more than one value (sweep/optimizer.h) and photonGrowth times the photons of the round before.
+// its axes' sizes; with `maximize`, each finer round has at most 2 x refineSteps + 1 values along each axis
+// of more than one value (sweep/optimizer.h) and photonGrowth times the photons of the round before.
 JobCost estimateJobCost(const StudySettings& settings, const CostRates& rates, int threads);
 
 }  // namespace facetlight

@@ -826,8 +826,8 @@ void expectDocumentedStatus(const json& status) {
     for (const auto& [key, value] : status.items()) EXPECT_TRUE(properties.contains(key)) << key;
 }
 
-// Issue 31, item 4: a job estimated over --max-job-seconds gets 422 naming its costliest part, both numbers and
-// the field to lower, and nothing is stored; a job within them is accepted and shows its estimate.
+// Issue 31, item 4: a job estimated over --max-job-seconds gets 422 naming its costliest part, both numbers
+// and the field to lower, and nothing is stored; a job within them is accepted and shows its estimate.
 TEST_F(ServiceTest, JobsEstimatedOverMaxJobSecondsAreRefusedNamingTheLargestPart) {
     json render = smallJob();
     render["render"] = {{"width", 2048}, {"height", 2048}, {"samples", 256}, {"max_depth", 64}};
@@ -872,8 +872,8 @@ TEST_F(ServiceTest, JobsEstimatedOverMaxJobSecondsAreRefusedNamingTheLargestPart
     client_->Post("/api/jobs/" + big["id"].get<std::string>() + "/cancel");
 }
 
-// A job that outlives twice --max-job-seconds is stopped through its cancel and fails with the reason, which a
-// restart keeps. The test's rates make a minute's job look like nothing, as a slower stone than the
+// A job that outlives twice --max-job-seconds is stopped through its cancel and fails with the reason, which
+// a restart keeps. The test's rates make a minute's job look like nothing, as a slower stone than the
 // calibration's could.
 TEST_F(ServiceTest, AJobThatOutlivesItsBudgetIsStoppedAndFailsForGood) {
     stopService();

@@ -79,7 +79,8 @@ TEST(JobCost, EveryPartGrowsWithTheSettingsThatMultiplyIt) {
     // More threads share the work (the tilt frames' encoding excepted), fewer take longer.
     EXPECT_LT(estimateJobCost(base, rates, 4).seconds, before.seconds);
     EXPECT_GT(estimateJobCost(base, rates, 1).seconds, before.seconds);
-    EXPECT_DOUBLE_EQ(partSeconds(estimateJobCost(base, rates, 4), "render"), partSeconds(before, "render") / 2);
+    EXPECT_DOUBLE_EQ(partSeconds(estimateJobCost(base, rates, 4), "render"),
+                     partSeconds(before, "render") / 2);
 }
 
 TEST(JobCost, AJobWithoutPicturesIsItsTraceAndItsFiles) {
@@ -117,8 +118,8 @@ TEST(JobCost, TheLargestPartIsNamedWithItsSizeAndField) {
          "render", "render.width", "2048x1600 pixels x 4 samples x depth 12"},
         {[](StudySettings& s) { s.render->mapPhotons = 100'000'000; }, "photon map", "render.map_photons",
          "1e+08 map photons"},
-        {[](StudySettings& s) { s.firePicture->wavelengths = 256; }, "fire picture", "fire_picture.wavelengths",
-         "400x400 pixels x 256 wavelengths x depth 12"},
+        {[](StudySettings& s) { s.firePicture->wavelengths = 256; }, "fire picture",
+         "fire_picture.wavelengths", "400x400 pixels x 256 wavelengths x depth 12"},
         {[](StudySettings& s) {
              s.tiltSeries->maxDeg = 20;
              s.tiltSeries->stepDeg = 0.25;
@@ -131,10 +132,9 @@ TEST(JobCost, TheLargestPartIsNamedWithItsSizeAndField) {
              s.tiltSeries.reset();
              s.firePicture.reset();
          },
-         "ASET view", "aset.samples",
-         "400x400 pixels x 64 view rays"},
-        {[](StudySettings& s) { s.trace.viewer.office.points = 10'000'000; }, "viewer", "viewer.office.points",
-         "1.12e+09 view rays and lamp photons"},
+         "ASET view", "aset.samples", "400x400 pixels x 64 view rays"},
+        {[](StudySettings& s) { s.trace.viewer.office.points = 10'000'000; }, "viewer",
+         "viewer.office.points", "1.12e+09 view rays and lamp photons"},
     };
     for (const Case& c : cases) {
         StudySettings s = everyPart();
@@ -215,7 +215,8 @@ TEST(CostCalibration, IsQuickAndEstimatesARealJob) {
     const double real = std::chrono::duration<double>(std::chrono::steady_clock::now() - ran).count();
     const double estimate = estimateJobCost(s, rates, 1).seconds;
     std::printf("a real job took %.3f s, estimated %.3f s:", real, estimate);
-    for (const CostPart& p : estimateJobCost(s, rates, 1).parts) std::printf(" %s %.3f s", p.name.c_str(), p.seconds);
+    for (const CostPart& p : estimateJobCost(s, rates, 1).parts)
+        std::printf(" %s %.3f s", p.name.c_str(), p.seconds);
     std::printf("\n");
     EXPECT_LT(real, estimate);
     EXPECT_GT(real, estimate / 20);
