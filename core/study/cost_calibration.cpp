@@ -73,7 +73,7 @@ CostRates calibrateCostRates() {
     viewer.viewer.spot.photons = 10'000;
     rates.viewerUnit = seconds([&] { viewStone(stone, viewer); }) / double(viewerUnits(viewer.viewer));
 
-    const uint64_t mapPhotons = 20'000;
+    const uint64_t mapPhotons = kCalibrationMapPhotons;
     PhotonMap caustics;
     rates.mapPhoton =
         seconds([&] { caustics = PhotonMap(traceFloorPhotons(base, mapPhotons, 1).caustic, 1); }) /

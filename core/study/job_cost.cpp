@@ -29,6 +29,11 @@ std::string count(double n) {
     return n < 1e6 ? formatNumber("%.0f", n) : formatNumber("%.3g", n);
 }
 
+// How much more a map photon costs in a map of `n` than in the calibration's (job_cost.h).
+double mapGrowth(uint64_t n) {
+    return std::log2(double(std::max(n, kCalibrationMapPhotons))) / std::log2(double(kCalibrationMapPhotons));
+}
+
 std::string pixels(const RenderSettings& r) {
     return std::to_string(r.width) + "x" + std::to_string(r.height) + " pixels";
 }
@@ -73,7 +78,10 @@ void addSweepParts(const TraceSettings& t, const SweepRequest& sweep, const Cost
     for (int round = 0; round < sweep.refineRounds; ++round) {
         photons = std::min<uint64_t>(photons * search.photonGrowth, kMaxPhotons);
         growth *= double(search.photonGrowth);
-        seconds += refined * (traceSeconds(t, photons, rates) + viewerSeconds(t, rates));
+        // The viewer's samples grow with the photons; each round scores against its own reference.
+        const TraceSettings r = searchRoundTrace(t, photons);
+        seconds +=
+            refined * (traceSeconds(r, photons, rates) + viewerSeconds(r, rates)) + viewerSeconds(r, rates);
     }
     const double usualGrowth = std::pow(double(search.photonGrowth), SweepRequest{}.refineRounds);
     parts.push_back({"search",
@@ -117,7 +125,7 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
         const Factor height{"render.height", double(r.height), double(usual.height)};
         const Factor depth{"render.max_depth", double(r.maxDepth), double(usual.maxDepth)};
         parts.push_back({"photon map", "render.map_photons", count(double(r.mapPhotons)) + " map photons",
-                         double(r.mapPhotons) * rates.mapPhoton});
+                         double(r.mapPhotons) * rates.mapPhoton * mapGrowth(r.mapPhotons)});
         parts.push_back(
             {"render",
              costliest({{"render.samples", double(r.samples), double(usual.samples)}, width, height, depth}),

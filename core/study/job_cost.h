@@ -15,15 +15,19 @@ struct CostRates {
     double tracePhoton = 0;      // a photon of the statistics' trace (and of a sweep's point)
     double fireTracePhoton = 0;  // the same with the fire trace (fire.enabled: C, D and F as well)
     double viewerUnit = 0;       // a view ray or lamp photon of the viewer (viewerUnits)
-    double mapPhoton = 0;        // a photon of the photon map, its share of the map's build included
-    double renderRay = 0;        // a render's pixel x sample x bounce of its depth (max_depth)
-    double fireRay = 0;          // a fire picture's pixel x wavelength x bounce of the render's depth
-    double asetRay = 0;          // a view ray of the ASET view and of each tilt frame (pixel x aset sample)
-    double framePixel = 0;       // a tilt frame's pixel drawn and encoded into tilt.webp (one thread)
+    double mapPhoton = 0;   // a photon of a map of kCalibrationMapPhotons, its share of the build included
+    double renderRay = 0;   // a render's pixel x sample x bounce of its depth (max_depth)
+    double fireRay = 0;     // a fire picture's pixel x wavelength x bounce of the render's depth
+    double asetRay = 0;     // a view ray of the ASET view and of each tilt frame (pixel x aset sample)
+    double framePixel = 0;  // a tilt frame's pixel drawn and encoded into tilt.webp (one thread)
     // A job's fixed work, whatever its size (one thread): the statistics, heatmaps, cutting sheet, diagram
     // and plots of a study with a small render; a sweep's pictures and best design alike.
     double jobFiles = 0;
 };
+
+// The map photons the calibration traces and builds a map of. A larger map costs more a photon: its tree's
+// build grows as n log n, so the estimate scales the rate by log n / log kCalibrationMapPhotons.
+constexpr uint64_t kCalibrationMapPhotons = 20'000;
 
 // The estimate is the rates' time times this. The rates are one thread's on the reference stone in its
 // default light; a job's threads seldom scale perfectly (1.7-1.96 x on 2 threads, docs/performance.md),

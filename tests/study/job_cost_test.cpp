@@ -9,6 +9,7 @@
 #include "cuts/cut_library.h"
 #include "study/cost_calibration.h"
 #include "study/job_cost.h"
+#include "viewer/viewer_figures.h"
 
 namespace facetlight {
 namespace {
@@ -76,6 +77,22 @@ TEST(JobCost, EveryPartGrowsWithTheSettingsThatMultiplyIt) {
         EXPECT_GT(partSeconds(after, part), partSeconds(before, part)) << part;
         EXPECT_GT(after.seconds, before.seconds) << part;
     }
+    // A map photon costs more in a larger map (its tree's build, n log n), never less in a smaller one.
+    StudySettings map = base;
+    map.render->mapPhotons = 100 * kCalibrationMapPhotons;
+    const double larger = partSeconds(estimateJobCost(map, rates, 2), "photon map");
+    EXPECT_GT(larger, 100 * partSeconds(estimateJobCost(
+                                            [&] {
+                                                StudySettings at = base;
+                                                at.render->mapPhotons = kCalibrationMapPhotons;
+                                                return at;
+                                            }(),
+                                            rates, 2),
+                                        "photon map"));
+    map.render->mapPhotons = 1000;
+    EXPECT_DOUBLE_EQ(partSeconds(estimateJobCost(map, rates, 2), "photon map"),
+                     1000 * 1e-6 * kCostSafetyFactor / 2);
+
     // More threads share the work (the tilt frames' encoding excepted), fewer take longer.
     EXPECT_LT(estimateJobCost(base, rates, 4).seconds, before.seconds);
     EXPECT_GT(estimateJobCost(base, rates, 1).seconds, before.seconds);
@@ -182,6 +199,17 @@ TEST(JobCost, ASweepCostsItsPointsAndItsSearchItsFinerRounds) {
     EXPECT_GT(estimateJobCost(s, rates, 1).seconds, cost.seconds);
     s.trace.photons = 10'000'000;
     EXPECT_EQ(estimateJobCost(s, rates, 1).largest().field, "photons");
+
+    // With the viewer, its samples grow with the photons round by round (searchRoundTrace), and each round
+    // traces its reference once.
+    s.trace.viewer.enabled = true;
+    s.trace.photons = 10'000;
+    s.sweep->refineRounds = 3;
+    const double units = double(viewerUnits(s.trace.viewer));
+    cost = estimateJobCost(s, rates, 1);
+    ASSERT_EQ(cost.parts[1].name, "search");
+    EXPECT_DOUBLE_EQ(cost.parts[1].seconds, (5 * (4 + 16 + 64) * (10'000 + units) + (4 + 16 + 64) * units) *
+                                                1e-6 * kCostSafetyFactor);
 }
 
 // Measured once at the server's start: quick, every rate positive, and a real job's time within the estimate
