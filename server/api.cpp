@@ -140,6 +140,8 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     JobRequest spec;
     try {
         spec = parseJobSpec(j, queue_.cores(), &limits_);
+        // Before anything is built or stored: a job that would hold the worker too long (issue 31).
+        queue_.budget().check(spec.settings, queue_.threadsFor(spec));
     } catch (const Error& e) {
         return problem(res, 422, e.what(), e.field());
     }

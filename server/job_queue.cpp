@@ -29,13 +29,14 @@ constexpr const char* kStartNotRecorded =
 }  // namespace
 
 JobQueue::JobQueue(JobStore& store, ResultStore& results, StudyRunner& runner, size_t maxQueued,
-                   uint64_t minFreeBytes, int cores)
+                   uint64_t minFreeBytes, int cores, JobBudget budget)
     : store_(store),
       results_(results),
       runner_(runner),
       maxQueued_(maxQueued),
       minFreeBytes_(minFreeBytes),
-      cores_(std::max(1, cores)) {}
+      cores_(std::max(1, cores)),
+      budget_(budget) {}
 
 JobQueue::~JobQueue() {
     stop();
@@ -260,6 +261,12 @@ void JobQueue::workerLoop() {
 
 void JobQueue::runJob(JobRecord job, RunControl& control) {
     const std::string& id = job.id;
+    // The watchdog lets go of `control` however the job ends.
+    struct Release {
+        JobWatchdog& watchdog;
+        ~Release() { watchdog.release(); }
+    } release{watchdog_};
+    std::chrono::steady_clock::time_point started;
     const auto finish = [&](JobState state, const std::string& error = {}) {
         job.state = state;
         job.finishedAt = nowIso8601();
@@ -277,7 +284,7 @@ void JobQueue::runJob(JobRecord job, RunControl& control) {
         }
         // Parsed when the job was accepted (or read back from the store); a copy runs with its threads.
         JobRequest spec = *job.spec;
-        const int threads = std::min(spec.settings.trace.threads, cores_);
+        const int threads = threadsFor(spec);
         spec.settings.trace.threads = threads;
         job.state = JobState::Running;
         job.startedAt = nowIso8601();
@@ -291,6 +298,8 @@ void JobQueue::runJob(JobRecord job, RunControl& control) {
         // A study re-run after a crash starts from nothing; a sweep resumes from the points it kept.
         const bool sweep = spec.settings.sweep.has_value();
         if (!sweep) results_.clear(id);
+        started = std::chrono::steady_clock::now();
+        if (budget_.runSeconds() > 0) watchdog_.watch(control, budget_.runSeconds());
         const StudyResult result =
             runner_.run(spec, control, sweep ? sweepCheckpoint(results_, id) : SweepCheckpoint{});
         try {
@@ -306,6 +315,12 @@ void JobQueue::runJob(JobRecord job, RunControl& control) {
         }
         finish(JobState::Succeeded);
     } catch (const Canceled&) {
+        // Stopped over its budget: failed for good, also when the service was stopping at the same moment.
+        if (watchdog_.release()) {
+            const std::chrono::duration<double> ran = std::chrono::steady_clock::now() - started;
+            results_.clear(id);  // a sweep's kept points
+            return finish(JobState::Failed, budget_.overrun(ran.count()));
+        }
         bool shuttingDown;
         {
             std::lock_guard lock(mutex_);

@@ -2,12 +2,14 @@
 // The bounded queue and its one worker thread: it queues jobs and moves their states in the store; its
 // StudyRunner runs them, one at a time, off the HTTP threads, each with the threads it asked for capped at
 // the machine's cores. Cancelling a running job cancels its RunControl; stopping the service hands the
-// running job back to the queue, so it runs again after a restart.
+// running job back to the queue, so it runs again after a restart. A job that outlives its budget
+// (job_budget.h) is cancelled the same way and fails with the reason.
 //
 // The queue keeps the record of every job it holds (queued or running) in memory, and status reads of those
 // are answered from there: polls of a running job read no database and wait on no lock the job holds. A
 // state the store could not record (a full or failing disk) stays in memory too, so clients still see every
 // job reach its end, and the worker writes it once the store takes writes again (issue 18).
+#include <algorithm>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -20,7 +22,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include "job_budget.h"
 #include "job_store.h"
+#include "job_watchdog.h"
 #include "result_store.h"
 #include "study/study.h"
 #include "study_runner.h"
@@ -29,9 +33,10 @@ namespace facetlight::server {
 
 class JobQueue {
   public:
-    // Jobs fail without running when the disk has less than `minFreeBytes` free: their results would not fit.
+    // Jobs fail without running when the disk has less than `minFreeBytes` free: their results would not fit;
+    // they are stopped when they run longer than budget.runSeconds().
     JobQueue(JobStore& store, ResultStore& results, StudyRunner& runner, size_t maxQueued,
-             uint64_t minFreeBytes, int cores);
+             uint64_t minFreeBytes, int cores, JobBudget budget);
     ~JobQueue();  // stop()
 
     // Re-queues what the store holds (jobs a crash left running first in their turn) and, when `runJobs`
@@ -65,6 +70,9 @@ class JobQueue {
     // Whether a queued or running job names `mesh` (an uploaded mesh may not be deleted under it).
     bool usesMesh(const std::string& mesh) const;
     int cores() const { return cores_; }
+    const JobBudget& budget() const { return budget_; }
+    // The threads a job of `spec` runs with: those it asks for, at most the machine's cores.
+    int threadsFor(const JobRequest& spec) const { return std::min(spec.settings.trace.threads, cores_); }
 
   private:
     void workerLoop();
@@ -80,6 +88,8 @@ class JobQueue {
     const size_t maxQueued_;
     const uint64_t minFreeBytes_;
     const int cores_;
+    const JobBudget budget_;
+    JobWatchdog watchdog_;
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;

@@ -23,6 +23,9 @@ struct ServiceLimits {
     size_t maxListBytes = 4 << 20;  // a page of GET /api/jobs stops at the job that passes this (issue 31)
     uint64_t maxMeshStoreBytes = uint64_t(1)
                                  << 30;  // uploaded meshes' files together; beyond, uploads get 507
+    // A job estimated to take longer is refused (422); one that runs twice as long is stopped (job_budget.h).
+    // 0: no limit.
+    double maxJobSeconds = 600;
 };
 
 // Throws Error naming the field, also when it exceeds a limit of this service (with `limits`: new jobs;

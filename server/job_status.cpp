@@ -1,6 +1,7 @@
 #include "job_status.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "study/job_progress.h"
 #include "study/result_files.h"
@@ -56,6 +57,10 @@ json jobStatusJson(const JobRecord& job, const JobQueue& queue) {
                 {"started_at", nullIfEmpty(job.startedAt)},
                 {"finished_at", nullIfEmpty(job.finishedAt)},
                 {"threads", threads}};
+    // This server's estimate of the whole job with the threads it gets (job_budget.h); none for a stored job
+    // that no longer reads.
+    if (job.spec)
+        doc["estimate_s"] = std::round(queue.budget().estimate(spec.settings, used).seconds * 100) / 100;
     json links = {{"self", self}};
     switch (job.state) {
         case JobState::Queued:

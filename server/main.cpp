@@ -43,6 +43,11 @@ int main(int argc, char** argv) {
     app.add_option("--max-mesh-store", l.maxMeshStoreBytes,
                    "Most bytes the uploaded meshes may take together; an upload beyond gets 507")
         ->capture_default_str();
+    app.add_option("--max-job-seconds", l.maxJobSeconds,
+                   "Seconds a job may be estimated to take here: longer gets 422, and a job running twice "
+                   "as long is stopped (0: no limit)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1e7));
     app.add_option("--max-queue", l.maxQueued, "Most jobs waiting in the queue")
         ->capture_default_str()
         ->check(CLI::Range(size_t(1), size_t(100000)));

@@ -4,6 +4,8 @@
 #include <iostream>
 #include <thread>
 
+#include "util/number_text.h"
+
 namespace facetlight::server {
 
 Service::Service(ServiceConfig config) : config_(std::move(config)), http_(config_.http) {
@@ -15,8 +17,18 @@ Service::Service(ServiceConfig config) : config_(std::move(config)), http_(confi
     results_ = std::make_unique<ResultStore>(config_.dataDir / "jobs");
     catalog_ = std::make_unique<MeshCatalog>(*meshes_, config_.meshesDir);
     runner_ = makeStudyRunner(*catalog_, config_.launch);
+    const CostRates& rates = config_.costRates ? *config_.costRates : machineCostRates();
+    const JobBudget budget(config_.limits.maxJobSeconds, rates);
     queue_ = std::make_unique<JobQueue>(*store_, *results_, *runner_, config_.limits.maxQueued,
-                                        config_.limits.minFreeBytes, cores);
+                                        config_.limits.minFreeBytes, cores, budget);
+    if (budget.maxSeconds() > 0) {
+        std::cerr << "facetlight-server: jobs estimated over " << formatSeconds(budget.maxSeconds())
+                  << " s are refused and stopped after " << formatSeconds(budget.runSeconds())
+                  << " s (--max-job-seconds); a thread here traces "
+                  << formatNumber("%.2g", 1 / rates.tracePhoton) << " photons/s and renders "
+                  << formatNumber("%.2g", 1 / (rates.renderRay * RenderSettings{}.maxDepth))
+                  << " samples/s\n";
+    }
     const std::string& readOnly = database_->readOnlyReason();
     api_ = std::make_unique<Api>(*results_, *queue_, *catalog_, config_.limits, readOnly,
                                  config_.allowedHosts, config_.token);

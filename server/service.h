@@ -36,6 +36,9 @@ struct ServiceConfig {
     // The bearer token every /api request must carry (--token-file); empty: none is asked for.
     std::string token;
     std::optional<LaunchSettings> launch;  // run jobs through a launcher such as mpirun (docs/distributed.md)
+    // For tests only: the rates jobs are estimated from, instead of this machine's measured ones (a test
+    // makes a long job look short, to see it stopped over its budget).
+    std::optional<CostRates> costRates;
 };
 
 class Service {

@@ -125,6 +125,17 @@ SweepConstraint parseSweepConstraint(const std::string& text) {
     return c;
 }
 
+TraceSettings searchRoundTrace(const TraceSettings& base, uint64_t photons) {
+    TraceSettings round = base;
+    round.photons = photons;
+    // The viewer's samples grow with the photons, round by round.
+    const double growth = double(photons) / double(base.photons);
+    ViewerSettings& viewer = round.viewer;
+    viewer.office.points = std::min(kMaxViewerPoints, uint64_t(double(viewer.office.points) * growth));
+    viewer.spot.photons = std::min(kMaxViewerPhotons, uint64_t(double(viewer.spot.photons) * growth));
+    return round;
+}
+
 GridObjective sweepObjective(const SweepPlan& base, const std::string& figure,
                              const std::vector<SweepConstraint>& constraints, RunControl& control,
                              std::vector<SweepResult>& rounds, Communicator& comm,
@@ -134,12 +145,7 @@ GridObjective sweepObjective(const SweepPlan& base, const std::string& figure,
                                                                         uint64_t photons) {
         SweepPlan plan = base;
         plan.axes = axes;
-        plan.trace.photons = photons;
-        // The viewer's samples grow with the photons, round by round.
-        const double growth = double(photons) / double(base.trace.photons);
-        ViewerSettings& viewer = plan.trace.viewer;
-        viewer.office.points = std::min(kMaxViewerPoints, uint64_t(double(viewer.office.points) * growth));
-        viewer.spot.photons = std::min(kMaxViewerPhotons, uint64_t(double(viewer.spot.photons) * growth));
+        plan.trace = searchRoundTrace(base.trace, photons);
         rounds.push_back(
             runSweep(plan, control, hooks ? hooks(rounds.size(), plan) : SweepPointHooks{}, comm));
         std::vector<DesignEstimate> out;

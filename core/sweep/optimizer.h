@@ -59,6 +59,10 @@ struct SweepConstraint {
 // "_pct" may be added) or a figure. Throws Error otherwise.
 SweepConstraint parseSweepConstraint(const std::string& text);
 
+// A search round's trace settings: `base`'s with `photons` photons a point, and the viewer's samples (office
+// points, lamp photons) grown in the same proportion as the photons, within their limits.
+TraceSettings searchRoundTrace(const TraceSettings& base, uint64_t photons);
+
 // The objective of a sweep: `figure` at each point of `base` with the grid's axes and photons, infeasible
 // where the point could not be traced or breaks a constraint. Each round's result is appended to `rounds`;
 // each round runs on every rank of `comm` with the hooks `hooks` gives for it (its index from 0, its plan).

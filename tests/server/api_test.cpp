@@ -46,8 +46,9 @@ class ServiceTest : public ::testing::Test {
         stopService();
         fs::remove_all(dir_);
     }
-    void start(ServiceLimits limits = {}) {
+    void start(ServiceLimits limits = {}, std::optional<CostRates> costRates = {}) {
         ServiceConfig config;
+        config.costRates = costRates;
         config.dataDir = dir_ / "data";
         config.meshesDir = dir_ / "meshes";
         config.webDir = "";
@@ -816,6 +817,100 @@ TEST_F(ServiceTest, UploadedMeshesTakeAtMostMaxMeshStore) {
     ASSERT_EQ(client_->Delete("/api/meshes/" + json::parse(first->body)["mesh"].get<std::string>())->status,
               204);
     EXPECT_EQ(upload()->status, 201);  // deleting made room
+}
+
+// Every member of a job's status is one the OpenAPI document's JobStatus describes.
+void expectDocumentedStatus(const json& status) {
+    const json doc = json::parse(openApiDocument());
+    const json& properties = doc["components"]["schemas"]["JobStatus"]["properties"];
+    for (const auto& [key, value] : status.items()) EXPECT_TRUE(properties.contains(key)) << key;
+}
+
+// Issue 31, item 4: a job estimated over --max-job-seconds gets 422 naming its costliest part, both numbers
+// and the field to lower, and nothing is stored; a job within them is accepted and shows its estimate.
+TEST_F(ServiceTest, JobsEstimatedOverMaxJobSecondsAreRefusedNamingTheLargestPart) {
+    json render = smallJob();
+    render["render"] = {{"width", 2048}, {"height", 2048}, {"samples", 256}, {"max_depth", 64}};
+    auto r = submit(render);
+    expectProblem(r, 422, "render.samples");
+    std::string detail = json::parse(r->body)["detail"];
+    EXPECT_EQ(detail.rfind("render: about ", 0), 0u) << detail;
+    EXPECT_NE(detail.find(" s of the 600 s a job may take on this server (2048x2048 pixels x 256 samples x "
+                          "depth 64)"),
+              std::string::npos)
+        << detail;
+    EXPECT_NE(detail.find("with 2 threads: lower render.samples"), std::string::npos) << detail;
+
+    // A search for the best design whose finer rounds (each 4 x the photons) pass it.
+    json search = sweepJob(11, 1'000'000);
+    search["sweep"]["maximize"] = "brightness";
+    search["sweep"]["refine_rounds"] = 6;
+    r = submit(search);
+    expectProblem(r, 422, "sweep.refine_rounds");
+    detail = json::parse(r->body)["detail"];
+    EXPECT_EQ(detail.rfind("search: about ", 0), 0u) << detail;
+    EXPECT_EQ(getJson("/api/jobs")["total"], 0);  // nothing stored
+
+    const json accepted = json::parse(submit(smallJob())->body);
+    ASSERT_TRUE(accepted.contains("estimate_s")) << accepted;
+    EXPECT_GT(accepted["estimate_s"].get<double>(), 0);
+    EXPECT_LT(accepted["estimate_s"].get<double>(), 600);
+    expectDocumentedStatus(accepted);
+    const json done = waitFinished(accepted["id"]);
+    EXPECT_EQ(done["state"], "succeeded");
+    EXPECT_EQ(done["estimate_s"], accepted["estimate_s"]);
+    expectDocumentedStatus(done);
+
+    // Without a limit (0) the same render is accepted.
+    stopService();
+    ServiceLimits unlimited;
+    unlimited.maxJobSeconds = 0;
+    start(unlimited);
+    const json big = json::parse(submit(render)->body);
+    EXPECT_EQ(big["state"], "queued");
+    EXPECT_GT(big["estimate_s"].get<double>(), 600);
+    client_->Post("/api/jobs/" + big["id"].get<std::string>() + "/cancel");
+}
+
+// A job that outlives twice --max-job-seconds is stopped through its cancel and fails with the reason, which
+// a restart keeps. The test's rates make a minute's job look like nothing, as a slower stone than the
+// calibration's could.
+TEST_F(ServiceTest, AJobThatOutlivesItsBudgetIsStoppedAndFailsForGood) {
+    stopService();
+    ServiceLimits limits;
+    limits.maxJobSeconds = 1;
+    CostRates instant;
+    instant.tracePhoton = instant.viewerUnit = 1e-15;
+    start(limits, instant);
+    const auto began = std::chrono::steady_clock::now();
+    const std::string id = submitOk(longJob());
+    json s;
+    for (int k = 0; k < 600; ++k) {  // the job alone takes a minute or more
+        s = status(id);
+        if (s["state"] != "queued" && s["state"] != "running") break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    EXPECT_LT(s["estimate_s"].get<double>(), 1);
+    ASSERT_EQ(s["state"], "failed") << s;
+    const std::string error = s["error"];
+    EXPECT_EQ(error.rfind("stopped: ran 2.", 0), 0u) << error;
+    EXPECT_NE(error.find(" s, over its budget of 2.0 s (twice the 1.0 s a job may take on this server)"),
+              std::string::npos)
+        << error;
+    EXPECT_GE(took, 2);
+    EXPECT_LT(took, 15);
+    expectDocumentedStatus(s);
+
+    stopService();
+    start(limits, instant);
+    const json again = status(id);
+    EXPECT_EQ(again["state"], "failed");
+    EXPECT_EQ(again["error"], error);
+    // The next job runs as usual.
+    json quick = smallJob();
+    quick["viewer"] = {{"enabled", false}};
+    EXPECT_EQ(waitFinished(submitOk(quick))["state"], "succeeded");
 }
 
 // A job that gives no name is named by its design and the proportions it changes, in its status and its

@@ -684,6 +684,28 @@ def run_mesh_store(binary, work):
     return 8
 
 
+def run_job_budget(binary, work):
+    """Issue 31, item 4: a job estimated over --max-job-seconds gets 422 naming its costliest part and the field to
+    lower, and nothing is stored; one within it is accepted with its estimate."""
+    server = Server(binary, os.path.join(work, "budget"), "--max-job-seconds", "60")
+    try:
+        render = {"width": 2048, "height": 2048, "samples": 256, "max_depth": 64}
+        status, body = expect(server, "job over --max-job-seconds", post_job(job(render=render)), 422)
+        if status == 422:
+            problem = json.loads(body)
+            if problem.get("field") != "render.samples" or not problem["detail"].startswith("render: about ") \
+                    or "of the 60 s a job may take" not in problem["detail"]:
+                fail("job over --max-job-seconds", "the problem does not name the part and both numbers: %.300r" % body)
+        if job_total(server) != 0:
+            fail("job over --max-job-seconds", "a refused job was stored")
+        status, body = expect(server, "job within --max-job-seconds", post_job(job()), 202)
+        if status == 202 and not 0 < json.loads(body).get("estimate_s", 0) < 60:
+            fail("job within --max-job-seconds", "no estimate_s within the limit: %.300r" % body)
+    finally:
+        server.stop()
+    return 2
+
+
 def run_durable_cancel(binary, work):
     """Issue 31, item 7: an acknowledged cancel survives kill -9, for a queued job (200) and a running one (202)."""
     folder = os.path.join(work, "cancel")
@@ -887,6 +909,7 @@ def main():
         total += run_allowed_host(binary, work)
         total += run_bearer_token(binary, work)
         total += run_mesh_store(binary, work)
+        total += run_job_budget(binary, work)
         total += run_durable_cancel(binary, work)
         total += run_storage_guard(binary, work)
         total += run_real_full_disk(binary, work)

@@ -1,0 +1,178 @@
+#include "study/job_cost.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+
+#include "sweep/optimizer.h"
+#include "util/number_text.h"
+#include "viewer/viewer_figures.h"
+
+namespace facetlight {
+namespace {
+
+// A setting that multiplies a part's work, against its default: the part names the one furthest above its
+// default, the first to lower.
+struct Factor {
+    const char* field;
+    double value, usual;
+};
+
+std::string costliest(std::initializer_list<Factor> factors) {
+    const Factor* top = factors.begin();
+    for (const Factor& f : factors)
+        if (f.value / f.usual > top->value / top->usual) top = &f;
+    return top->field;
+}
+
+std::string count(double n) {
+    return n < 1e6 ? formatNumber("%.0f", n) : formatNumber("%.3g", n);
+}
+
+// How much more a map photon costs in a map of `n` than in the calibration's (job_cost.h).
+double mapGrowth(uint64_t n) {
+    return std::log2(double(std::max(n, kCalibrationMapPhotons))) / std::log2(double(kCalibrationMapPhotons));
+}
+
+std::string pixels(const RenderSettings& r) {
+    return std::to_string(r.width) + "x" + std::to_string(r.height) + " pixels";
+}
+
+// A trace of `photons` photons (with the fire trace when enabled): every job's, and each sweep point's.
+double traceSeconds(const TraceSettings& t, uint64_t photons, const CostRates& rates) {
+    return double(photons) * (t.fire.enabled ? rates.fireTracePhoton : rates.tracePhoton);
+}
+
+double viewerSeconds(const TraceSettings& t, const CostRates& rates) {
+    return t.viewer.enabled ? double(viewerUnits(t.viewer)) * rates.viewerUnit : 0;
+}
+
+std::string viewerField(const ViewerSettings& v) {
+    const ViewerSettings usual;
+    return costliest({{"viewer.office.points", double(v.office.points), double(usual.office.points)},
+                      {"viewer.spot.photons", double(v.spot.photons), double(usual.spot.photons)},
+                      {"viewer.tilts", double(v.tilts), double(usual.tilts)},
+                      {"viewer.azimuths", double(v.azimuths), double(usual.azimuths)}});
+}
+
+// A sweep's grid, and with `maximize` its search's finer rounds (sweep/optimizer.h's maximize()).
+void addSweepParts(const TraceSettings& t, const SweepRequest& sweep, const CostRates& rates,
+                   std::vector<CostPart>& parts) {
+    const TraceSettings usual;
+    double points = 1, refined = 1;
+    const OptimizeSettings search;
+    for (const SweepAxis& axis : sweep.axes) {
+        points *= double(axis.size());
+        refined *= axis.size() > 1 ? 2 * search.refineSteps + 1 : 1;
+    }
+    const double point = traceSeconds(t, t.photons, rates) + viewerSeconds(t, rates);
+    // The reference stone the viewer figures are scored against is traced once.
+    parts.push_back(
+        {"sweep",
+         costliest({{"photons", double(t.photons), double(usual.photons)}, {"sweep.axes", points, 1}}),
+         count(points) + " points x " + count(double(t.photons)) + " photons",
+         points * point + viewerSeconds(t, rates)});
+    if (sweep.maximize.empty() || sweep.refineRounds == 0) return;
+    double seconds = 0, growth = 1;
+    uint64_t photons = t.photons;
+    for (int round = 0; round < sweep.refineRounds; ++round) {
+        photons = std::min<uint64_t>(photons * search.photonGrowth, kMaxPhotons);
+        growth *= double(search.photonGrowth);
+        // The viewer's samples grow with the photons; each round scores against its own reference.
+        const TraceSettings r = searchRoundTrace(t, photons);
+        seconds +=
+            refined * (traceSeconds(r, photons, rates) + viewerSeconds(r, rates)) + viewerSeconds(r, rates);
+    }
+    const double usualGrowth = std::pow(double(search.photonGrowth), SweepRequest{}.refineRounds);
+    parts.push_back({"search",
+                     costliest({{"photons", double(t.photons), double(usual.photons)},
+                                {"sweep.refine_rounds", growth, usualGrowth}}),
+                     std::to_string(sweep.refineRounds) + " finer rounds of up to " + count(refined) +
+                         " points, the last at " + count(double(photons)) + " photons",
+                     seconds});
+}
+
+}  // namespace
+
+const CostPart& JobCost::largest() const {
+    return *std::max_element(parts.begin(), parts.end(),
+                             [](const CostPart& a, const CostPart& b) { return a.seconds < b.seconds; });
+}
+
+JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int workers) {
+    const int threads = std::max(1, workers);
+    const TraceSettings& t = s.trace;
+    std::vector<CostPart> parts;
+    if (s.sweep) {
+        addSweepParts(t, *s.sweep, rates, parts);
+    } else {
+        parts.push_back(
+            {"trace", "photons",
+             count(double(t.photons)) + " photons" + (t.fire.enabled ? " with the fire trace" : ""),
+             traceSeconds(t, t.photons, rates)});
+        // The stone's and the reference's (study.cpp's studyUnits): the reference is kept once traced, but
+        // counting it keeps the estimate on the safe side.
+        if (t.viewer.enabled)
+            parts.push_back({"viewer", viewerField(t.viewer),
+                             count(2 * double(viewerUnits(t.viewer))) + " view rays and lamp photons",
+                             2 * viewerSeconds(t, rates)});
+    }
+    if (s.render) {
+        const RenderSettings& r = *s.render;
+        const RenderSettings usual;
+        const double px = double(r.width) * double(r.height);
+        const Factor width{"render.width", double(r.width), double(usual.width)};
+        const Factor height{"render.height", double(r.height), double(usual.height)};
+        const Factor depth{"render.max_depth", double(r.maxDepth), double(usual.maxDepth)};
+        parts.push_back({"photon map", "render.map_photons", count(double(r.mapPhotons)) + " map photons",
+                         double(r.mapPhotons) * rates.mapPhoton * mapGrowth(r.mapPhotons)});
+        parts.push_back(
+            {"render",
+             costliest({{"render.samples", double(r.samples), double(usual.samples)}, width, height, depth}),
+             pixels(r) + " x " + std::to_string(r.samples) + " samples x depth " + std::to_string(r.maxDepth),
+             px * r.samples * r.maxDepth * rates.renderRay});
+        if (s.firePicture) {
+            const int n = s.firePicture->wavelengths;
+            parts.push_back(
+                {"fire picture",
+                 costliest(
+                     {{"fire_picture.wavelengths", double(n), double(FirePictureSettings{}.wavelengths)},
+                      width,
+                      height,
+                      depth}),
+                 pixels(r) + " x " + std::to_string(n) + " wavelengths x depth " + std::to_string(r.maxDepth),
+                 px * n * r.maxDepth * rates.fireRay});
+        }
+        const AsetSettings aset = s.aset.value_or(AsetSettings{});
+        const Factor samples{"aset.samples", double(aset.samples), double(AsetSettings{}.samples)};
+        const std::string rays = pixels(r) + " x " + std::to_string(aset.samples) + " view rays";
+        if (s.aset)
+            parts.push_back(
+                {"ASET view", costliest({samples, width, height}), rays, px * aset.samples * rates.asetRay});
+        if (s.tiltSeries) {
+            const TiltSeriesSettings& tilt = *s.tiltSeries;
+            const TiltSeriesSettings usualTilt;
+            const double frames = tilt.frameCount();
+            // More frames come from a wider tilt or a finer step: the one further from its default.
+            const Factor framesFactor = tilt.maxDeg / usualTilt.maxDeg > usualTilt.stepDeg / tilt.stepDeg
+                                            ? Factor{"tilt_series.max_deg", frames, usualTilt.frameCount()}
+                                            : Factor{"tilt_series.step_deg", frames, usualTilt.frameCount()};
+            // Each frame's picture is drawn and encoded on one thread: not divided below.
+            parts.push_back({"tilt series", costliest({framesFactor, samples, width, height}),
+                             count(frames) + " frames x " + rays,
+                             frames * px * (aset.samples * rates.asetRay + threads * rates.framePixel)});
+        }
+    }
+    JobCost cost;
+    for (CostPart& p : parts) {
+        p.seconds *= kCostSafetyFactor / threads;
+        cost.seconds += p.seconds;
+    }
+    // Drawn and written on one thread, after the parts above.
+    parts.push_back({"files", "", "statistics, pictures and plots", rates.jobFiles * kCostSafetyFactor});
+    cost.seconds += parts.back().seconds;
+    cost.parts = std::move(parts);
+    return cost;
+}
+
+}  // namespace facetlight
