@@ -953,6 +953,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(await page.isHidden('#hint-material-split'), true);
     await page.fill('#f-axis-tilt', '30');
     await page.fill('#f-axis-azimuth', '45');
+    await shot('15a-form-polarised');
     const posted = page.waitForRequest((r) => r.method() === 'POST' && r.url().endsWith('/api/jobs'));
     const formId = await submitAndGetId({ stay: true });
     const sent = JSON.parse((await posted).postData());
