@@ -56,6 +56,8 @@ async function start() {
   form.elements['light.model'].addEventListener('change', syncFormControls);
   form.elements.render.addEventListener('change', syncFormControls);
   form.elements.tilt_series.addEventListener('change', syncFormControls);
+  form.elements.material.addEventListener('change', syncFormControls);
+  form.elements.polarization.addEventListener('change', syncFormControls);
   $('#f-mesh').addEventListener('change', describeMesh);
   $('#upload-button').addEventListener('click', uploadMesh);
   $('#compare-selected').addEventListener('click', () => {

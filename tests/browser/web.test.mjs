@@ -932,6 +932,57 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.ok((await page.textContent('#sweep-chart svg')).includes('tier:P1 (deg)'));
   });
 
+  test('polarisation: a uniaxial stone\'s optic axis is asked for and sent with it on, and the result says how it was traced', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#f-mesh option:not([value=""])', { state: 'attached' });
+    await page.selectOption('#f-mesh', 'round_brilliant');
+    await fillSmallJob({ photons: '2000', material: 'diamond' });
+    await page.setChecked('#f-render', false);
+    // The group label says how doubly refracting stones are traced now.
+    assert.match(await page.getAttribute('#f-material optgroup:nth-of-type(2)', 'label'), /polarisation/);
+    await page.selectOption('#f-polarization', 'on');
+    assert.equal(await page.isHidden('#optic-axis-fields'), true, 'a diamond has no optic axis');
+    await page.selectOption('#f-material', 'sapphire');
+    assert.equal(await page.isVisible('#optic-axis-fields'), true, 'a uniaxial stone traced polarised has one');
+    assert.deepEqual(await page.$$eval('#optic-axis-fields input', (ins) => ins.map((i) => [i.name, i.min, i.max])),
+      [['optic_axis.tilt_deg', '0', '180'], ['optic_axis.azimuth_deg', '0', '360']]);
+    await page.selectOption('#f-polarization', 'off');
+    assert.equal(await page.isHidden('#optic-axis-fields'), true, 'unpolarised, the axis does not matter');
+    assert.equal(await page.isVisible('#hint-material-split'), true, 'a uniaxial stone suggests polarisation');
+    await page.selectOption('#f-polarization', 'on');
+    assert.equal(await page.isHidden('#hint-material-split'), true);
+    await page.fill('#f-axis-tilt', '30');
+    await page.fill('#f-axis-azimuth', '45');
+    await shot('15a-form-polarised');
+    const posted = page.waitForRequest((r) => r.method() === 'POST' && r.url().endsWith('/api/jobs'));
+    const formId = await submitAndGetId({ stay: true });
+    const sent = JSON.parse((await posted).postData());
+    assert.equal(sent.polarization, 'on');
+    assert.deepEqual(sent.optic_axis, { tilt_deg: 30, azimuth_deg: 45 });
+    const formJob = await (await fetch(`${baseUrl}/api/jobs/${formId}`)).json();
+    assert.equal(formJob.settings.polarization, 'on');
+    assert.deepEqual(formJob.settings.optic_axis, { tilt_deg: 30, azimuth_deg: 45 });
+    await fetch(`${baseUrl}/api/jobs/${formId}/cancel`, { method: 'POST' });
+    await page.evaluate(() => { location.hash = '#/'; });
+    await page.selectOption('#f-polarization', 'off');
+    await page.selectOption('#f-material', 'auto');
+    // The same stone without the viewer's figures (quick), its result page read.
+    const res = await fetch(`${baseUrl}/api/jobs`, {
+      method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ ...sent, viewer: { enabled: false } }),
+    });
+    const created = await res.json();
+    assert.equal(res.status, 202, JSON.stringify(created));
+    const { id } = created;
+    await page.evaluate((jobId) => { location.hash = `#/jobs/${jobId}`; }, id);
+    await page.waitForSelector('[data-section="design"]', { timeout: JOB_TIMEOUT_MS });
+    const text = await page.textContent('[data-section="design"]');
+    assert.match(text, /Double refraction\s*uniaxial, birefringence 0\.008; traced: each ray splits into its ordinary and extraordinary waves \(optic axis 30° from the table's normal, toward 45° from x\)/);
+    assert.match(text, /Polarisation\s*on: each photon carries its polarisation through every facet/);
+    assert.match(await page.textContent('#view-result .lede'), /· polarised/);
+    await shot('15b-result-polarised');
+  });
+
   test('a doubly refracting material is named on the result page with its birefringence', async () => {
     await page.goto(`${baseUrl}/#/`);
     await page.waitForSelector('#job-list li');
@@ -943,7 +994,8 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.waitForSelector('[data-section="design"]');
     const text = await page.textContent('[data-section="design"]');
     assert.match(text, /calcite, n 1\.6583/i);
-    assert.match(text, /Double refraction\s*uniaxial, birefringence 0\.172; traced at the ordinary ray's index/);
+    assert.match(text, /Double refraction\s*uniaxial, birefringence 0\.172; not traced: with polarization off every ray sees n_o/);
+    assert.match(text, /Polarisation\s*off: each facet reflects the unpolarised Fresnel average/);
   });
 
   test('the home page fits a phone', async () => {

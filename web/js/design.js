@@ -31,7 +31,23 @@ function sheetTable(sheet) {
       h('td', {}, t.meets.join(', ')))))));
 }
 
-function sizeList(size, material) {
+// How light was traced (stats.settings.polarization, docs/optics.md "Polarisation"), where the job says.
+const POLARIZATION_TEXT = {
+  off: 'off: each facet reflects the unpolarised Fresnel average',
+  on: 'on: each photon carries its polarisation through every facet',
+};
+
+// How a doubly refracting stone was traced: the statistics' own sentence (material.double_refraction) and, when
+// its rays were split, where its optic axis lay. Statistics from before polarised tracing traced n_o or beta.
+function doubleRefractionText(material, settings) {
+  const head = `${material.optic}, birefringence ${fmtNumber(material.birefringence, 3)}; `;
+  if (!material.double_refraction) return `${head}traced at ${material.optic === 'uniaxial' ? 'the ordinary ray\'s index' : 'β'}`;
+  const axis = settings.optic_axis;
+  const split = material.optic === 'uniaxial' && settings.polarization === 'on' && axis;
+  return `${head}${material.double_refraction}${split ? ` (optic axis ${fmtNumber(axis.tilt_deg, 4)}° from the table's normal, toward ${fmtNumber(axis.azimuth_deg, 4)}° from x)` : ''}`;
+}
+
+function sizeList(size, material, settings = {}) {
   const rows = [];
   if (size) {
     rows.push(['Size', `${fmtNumber(size.length_mm, 2)} × ${fmtNumber(size.width_mm, 2)} × ${fmtNumber(size.depth_mm, 2)} mm`],
@@ -42,11 +58,9 @@ function sizeList(size, material) {
   if (material) {
     const what = material.source === 'design file' ? '' : `${humanize(material.name)}, `;
     rows.push(['Traced as', `${what}n ${fmtNumber(material.n_d, 4)}: ${SOURCE_TEXT[material.source] || material.source}`]);
-    // A doubly refracting material is traced at one of its indices: n_o (uniaxial) or beta (biaxial).
-    if (material.optic && material.optic !== 'isotropic') {
-      rows.push(['Double refraction', `${material.optic}, birefringence ${fmtNumber(material.birefringence, 3)}; traced at ${material.optic === 'uniaxial' ? 'the ordinary ray\'s index' : 'β'}`]);
-    }
+    if (material.optic && material.optic !== 'isotropic') rows.push(['Double refraction', doubleRefractionText(material, settings)]);
   }
+  if (POLARIZATION_TEXT[settings.polarization]) rows.push(['Polarisation', POLARIZATION_TEXT[settings.polarization]]);
   return h('dl', { class: 'kv' }, rows.map(([k, v]) => [h('dt', {}, k), h('dd', {}, v)]));
 }
 
@@ -70,6 +84,6 @@ export function designSection(job, stats) {
       h('a', { href: links.diagram, target: '_blank', rel: 'noopener' },
         h('img', { src: links.diagram, alt: `Faceting diagram of ${name}: crown, profile and pavilion with each facet's tier`, loading: 'lazy' }))) : null,
     frameNote(stats.mesh && stats.mesh.frame),
-    sizeList(stats.size, stats.material),
+    sizeList(stats.size, stats.material, stats.settings),
     sheet ? sheetTable(sheet) : null);
 }

@@ -76,6 +76,13 @@ function buildJob(form) {
   }
   job.material = form.elements.material.value;
   job.dispersion = form.elements.dispersion.checked;
+  job.polarization = form.elements.polarization.value;
+  if (!$('#optic-axis-fields').hidden) {
+    job.optic_axis = {
+      tilt_deg: readNumber(form, 'optic_axis.tilt_deg', errors),
+      azimuth_deg: readNumber(form, 'optic_axis.azimuth_deg', errors),
+    };
+  }
   if (form.elements['fire.enabled'].checked) job.fire = { enabled: true };
   job.max_bounces = readNumber(form, 'max_bounces', errors);
   if (form.elements.render.checked) {
@@ -155,4 +162,12 @@ export function syncFormControls() {
   const tilt = render && form.elements.tilt_series.checked;
   form.elements['tilt_series.max_deg'].disabled = !tilt;
   form.elements['tilt_series.axis_deg'].disabled = !tilt;
+  // A uniaxial stone splits each ray in two only with polarisation on: its optic axis matters then, and the
+  // menu suggests turning it on otherwise (docs/optics.md, Birefringent stones).
+  const material = form.elements.material;
+  const uniaxial = material.selectedOptions[0]?.dataset.optic === 'uniaxial';
+  const polarized = form.elements.polarization.value === 'on';
+  $('#optic-axis-fields').hidden = !(uniaxial && polarized);
+  for (const input of $('#optic-axis-fields').querySelectorAll('input')) input.disabled = !(uniaxial && polarized);
+  $('#hint-material-split').hidden = !(uniaxial && !polarized);
 }
