@@ -111,6 +111,18 @@ TEST(JobCost, AJobWithoutPicturesIsItsTraceAndItsFiles) {
     EXPECT_DOUBLE_EQ(cost.seconds, (10'000 * 1e-6 + 1e-3) * kCostSafetyFactor);
 }
 
+TEST(JobCost, PolarisedAndDoublyRefractingTracesCostTheirMeasuredFactors) {
+    StudySettings s;
+    s.trace.photons = 10'000;
+    const double plain = partSeconds(estimateJobCost(s, unitRates(), 1), "trace");
+    s.trace.polarization = PolarizationMode::On;
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / plain, 4.1, 1e-9);
+    s.trace.material = "sapphire";
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / plain, 13, 1e-9);
+    s.trace.constantIndex = 1.77;  // one index: no double refraction
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / plain, 4.1, 1e-9);
+}
+
 // The detail of a refused job names its largest part, its size and the field that makes it large.
 TEST(JobCost, TheLargestPartIsNamedWithItsSizeAndField) {
     const CostRates rates = unitRates();
