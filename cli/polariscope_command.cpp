@@ -1,12 +1,15 @@
 // facetlight polariscope: the stone turned between crossed polarisers, as a gemmologist's first test of an
 // unknown stone: does it stay dark (singly refracting) or blink four times a turn (doubly refracting)?
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "commands.h"
 #include "cuts/mesh_resolver.h"
 #include "terminal_output.h"
+#include "image/image.h"
+#include "pictures/polariscope_chart.h"
 #include "trace_options.h"
 #include "viewer/polariscope.h"
 
@@ -18,6 +21,7 @@ struct PolariscopeOptions {
     TraceOptions trace;
     int angles = PolariscopeSettings{}.angles;
     std::string jsonPath;
+    std::string outDir;
 };
 
 void run(const PolariscopeOptions& o) {
@@ -39,12 +43,13 @@ void run(const PolariscopeOptions& o) {
                       100 * r.shareStderr());
         std::cout << line;
     }
-    if (p.blinks) {
-        std::cout << "blinks: dark at";
-        for (double a : p.darkAnglesDeg) std::cout << " " << a;
-        std::cout << " deg of a turn: doubly refracting\n";
-    } else {
-        std::cout << "stays as it is as it turns: singly refracting, or seen along an optic axis\n";
+    std::cout << polariscopeVerdict(p) << "\n";
+    if (!o.outDir.empty()) {
+        const std::filesystem::path out(o.outDir);
+        std::filesystem::create_directories(out);
+        writeFile(out / "polariscope.json", j.dump(2) + "\n");
+        writeFile(out / "polariscope.png",
+                  encodePng(polariscopeChart(p, "Polariscope: " + stone.name + ", " + settings.material)));
     }
 }
 
@@ -60,6 +65,7 @@ void addPolariscopeCommand(CLI::App& app) {
     addTraceOptions(cmd, o->trace);
     cmd->add_option("--angles", o->angles, "Turntable positions over half a turn")->capture_default_str();
     cmd->add_option("--json", o->jsonPath, "Also write the readings as JSON to this file");
+    cmd->add_option("--out", o->outDir, "Write polariscope.json and the chart polariscope.png to this folder");
     cmd->callback([o] { run(*o); });
 }
 

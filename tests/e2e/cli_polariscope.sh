@@ -7,9 +7,11 @@ exe="$1"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 "$exe" polariscope --mesh round_brilliant --material sapphire --optic-axis-tilt 90 --angles 12 --photons 3000 \
-    --json "$work/p.json" > "$work/sapphire.txt"
-grep -q "blinks: dark at 0 90 180 270 deg of a turn: doubly refracting" "$work/sapphire.txt" ||
+    --json "$work/p.json" --out "$work/out" > "$work/sapphire.txt"
+grep -q "dark at 0, 90, 180 and 270 deg of a turn: doubly refracting" "$work/sapphire.txt" ||
     { echo "sapphire across its axis did not blink"; cat "$work/sapphire.txt"; exit 1; }
+cmp "$work/p.json" "$work/out/polariscope.json" || { echo "--json and --out disagree"; exit 1; }
+head -c 8 "$work/out/polariscope.png" | od -An -tx1 | grep -q "89 50 4e 47 0d 0a 1a 0a" || { echo "no PNG"; exit 1; }
 python3 - "$work/p.json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))

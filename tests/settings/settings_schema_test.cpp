@@ -396,7 +396,7 @@ TEST(SettingsSchema, ApiAndPageOfferEveryMaterial) {
     html << page.rdbuf();
     for (const std::string& name : materialNames()) {
         EXPECT_TRUE(std::regex_search(description, std::regex("\\b" + name + "\\b"))) << name;
-        EXPECT_NE(html.str().find("<option value=\"" + name + "\">"), std::string::npos) << name;
+        EXPECT_NE(html.str().find("<option value=\"" + name + "\""), std::string::npos) << name;
     }
 }
 
