@@ -213,6 +213,10 @@ class PhotonWalker {
     template <class Visitor>
     static bool enterCrystalWave(const TraceBase& s, const Vec3f& normal, uint32_t facet, const Vec3f& p,
                                  Vec3f& d, Visitor& visit, Photon& ph) {
+        if (!(dot(d, normal) < 0)) {  // grazing, where float rounding put the entry: all is reflected
+            visit.reflectedAtEntry(facet, p, d);
+            return false;
+        }
         const InterfaceWaves w = enterCrystal(s.crystal(ph.n, ph.nE), toVec3(d), toVec3(normal));
         ph.coherent = s.nearOpticAxis(w.transmitted[0].wave.waveNormal);
         if (ph.coherent) return enterPolarized(normal, 1.0f / ph.n, facet, p, d, visit, ph);

@@ -28,15 +28,6 @@ using test::forEachSimdTarget;
 
 namespace {
 
-Stone cube() {
-    PolygonMesh m;
-    for (int i = 0; i < 8; ++i)
-        m.vertices.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
-    m.polygons = {{{0, 2, 3, 1}, "bottom"}, {{4, 5, 7, 6}, "top"},  {{0, 1, 5, 4}, "front"},
-                  {{2, 6, 7, 3}, "back"},   {{0, 4, 6, 2}, "left"}, {{1, 3, 7, 5}, "right"}};
-    return Stone::build(m, "cube");
-}
-
 // A single cut: octagonal table, 8 bezels, 8 girdle flats and 8 pavilion mains, as half-spaces.
 Stone singleCut() {
     std::vector<NamedPlane> planes{{{{0, 0, 1}, 0.17}, "table"}};
@@ -129,7 +120,7 @@ TEST(Fresnel, TotalInternalReflectionBeyondTheCriticalAngle) {
 }
 
 TEST(PhotonTracer, DiamondSlabAtNormalIncidence) {
-    const Stone stone = cube();
+    const Stone stone = test::unitCube();
     TraceSettings settings = baseSettings(400'000);
     settings.threads = 2;
     const TraceResult r = test::traceStone(stone, settings);
@@ -640,7 +631,7 @@ TEST(ConvexBeamEntry, AgreesWithTheGeneralEntrySearch) {
 }
 
 TEST(PhotonTracer, CancelStopsBeforeTheEnd) {
-    const Stone stone = cube();
+    const Stone stone = test::unitCube();
     RunControl control;
     control.cancel();
     const TraceResult r = test::traceStone(stone, baseSettings(100'000), &control);
@@ -655,7 +646,7 @@ TEST(PhotonTracer, CancelStopsBeforeTheEnd) {
 }
 
 TEST(PhotonTracer, ConvexIntersectorRefusesNonConvexRequest) {
-    Stone stone = cube();
+    Stone stone = test::unitCube();
     stone.convex = false;
     TraceSettings settings = baseSettings(10);
     settings.intersector = IntersectorKind::Convex;
@@ -706,7 +697,7 @@ TEST(TraceSettings, StrictJsonNamesTheField) {
 }
 
 TEST(FacetStats, JsonAndCsvReport) {
-    const Stone stone = cube();
+    const Stone stone = test::unitCube();
     TraceSettings settings = baseSettings(10'000);
     const TraceResult r = test::traceStone(stone, settings);
     json j = traceReport(r, stone, settings);

@@ -16,15 +16,6 @@ using nlohmann::json;
 
 namespace {
 
-Stone cube() {
-    PolygonMesh m;
-    for (int i = 0; i < 8; ++i)
-        m.vertices.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
-    m.polygons = {{{0, 2, 3, 1}, "bottom"}, {{4, 5, 7, 6}, "top"},  {{0, 1, 5, 4}, "front"},
-                  {{2, 6, 7, 3}, "back"},   {{0, 4, 6, 2}, "left"}, {{1, 3, 7, 5}, "right"}};
-    return Stone::build(m, "cube");
-}
-
 uint32_t facetFacing(const Stone& stone, const Vec3& n) {
     for (const Facet& f : stone.facets)
         if (dot(f.normal, n) > 0.999) return f.id;
@@ -65,10 +56,31 @@ struct AnalyserTally {
     void lost(uint32_t) {}
 };
 
+// The brilliant's report with `settings` at 1, 2 and 3 threads, which must agree bit for bit (timing and the
+// thread count apart), photons conserved in each: the first.
+json sameAtAnyThreadCount(TraceSettings settings) {
+    json first;
+    for (int threads : {1, 2, 3}) {
+        settings.threads = threads;
+        const TraceResult r = test::traceStone(test::roundBrilliant(), settings);
+        EXPECT_EQ(r.stats.entered, r.stats.exited + r.stats.trapped);
+        EXPECT_EQ(r.stats.hit, r.stats.entered + r.stats.reflectedAtEntry);
+        json j = traceReport(r, test::roundBrilliant(), settings);
+        j.erase("timing");
+        j["settings"].erase("threads");
+        if (threads == 1) {
+            first = j;
+        } else {
+            EXPECT_EQ(j.dump(), first.dump()) << threads << " threads";
+        }
+    }
+    return first;
+}
+
 }  // namespace
 
 TEST(PolarizedTrace, IsotropicSlabBetweenCrossedPolarisersIsDark) {
-    const Stone stone = cube();
+    const Stone stone = test::unitCube();
     for (double polarizer : {0.0, 30.0, 90.0}) {
         TraceSettings settings = polarized(20'000);
         settings.light.polarizerDeg = polarizer;
@@ -88,7 +100,7 @@ TEST(PolarizedTrace, IsotropicSlabBetweenCrossedPolarisersIsDark) {
 TEST(PolarizedTrace, AtBrewstersAngleOnlySLightReflects) {
     // Collimated light at Brewster's angle on a diamond cube's top, in the x-z plane: a polariser along x
     // lets through p light (in the plane of incidence), one along y s light (Born & Wolf, sec. 1.5.3).
-    const Stone stone = cube();
+    const Stone stone = test::unitCube();
     const double n = Material::byName("diamond").indexD();
     const double brewster = std::atan(n);
     const double thetaT = std::asin(std::sin(brewster) / n);
@@ -120,21 +132,7 @@ TEST(PolarizedTrace, IdenticalForAnyThreadCount) {
     settings.dispersion = true;
     settings.light.model = LightModelKind::Hemisphere;
     settings.fire.enabled = true;
-    json first;
-    for (int threads : {1, 2, 3}) {
-        settings.threads = threads;
-        const TraceResult r = test::traceStone(test::roundBrilliant(), settings);
-        EXPECT_EQ(r.stats.entered, r.stats.exited + r.stats.trapped);
-        EXPECT_EQ(r.stats.hit, r.stats.entered + r.stats.reflectedAtEntry);
-        json j = traceReport(r, test::roundBrilliant(), settings);
-        j.erase("timing");
-        j["settings"].erase("threads");
-        if (threads == 1) {
-            first = j;
-        } else {
-            EXPECT_EQ(j.dump(), first.dump()) << threads << " threads";
-        }
-    }
+    const json first = sameAtAnyThreadCount(settings);
     EXPECT_EQ(first["settings"]["polarization"], "on");
 }
 
@@ -213,7 +211,7 @@ TEST(BirefringentTrace, CalciteRhombShowsTwoImagesAsFarApartAsTheWalkOff) {
     // extraordinary one walks off by rho, tan rho = (n_o^2 - n_e^2) sin t cos t / (n_e^2 cos^2 t + n_o^2 sin^2 t)
     // (Born & Wolf eq. 15.3.(29) with the wave normal at t to the axis), so the two spots on the bottom (1 below the top)
     // lie tan(rho) apart along the axis's azimuth.
-    const Stone stone = cube();
+    const Stone stone = test::unitCube();
     const TraceSettings settings = calcite(44.6);
     const Scene scene(stone, settings);
     const TraceBase trace(scene, settings);
@@ -262,7 +260,7 @@ TEST(BirefringentTrace, SlabCutAlongItsAxisBlinksFourTimesATurnBetweenCrossedPol
     // the axis) and o (sin^2 alpha, across it); the analyser at alpha + 90 passes sin^2 alpha of the first and
     // cos^2 alpha of the second: sin^2(2 alpha) / 2 in all, dark at 0, 90, 180 and 270 deg (Hecht, Optics,
     // sec. 8.10; the two waves' Fresnel losses differ by under 2 % for calcite).
-    const Stone stone = cube();
+    const Stone stone = test::unitCube();
     for (double alpha : {0.0, 22.5, 45.0, 90.0, 135.0}) {
         TraceSettings settings = calcite(90);
         settings.light.polarizerDeg = alpha;
@@ -288,21 +286,7 @@ TEST(BirefringentTrace, SapphireBrilliantIsTheSameAtAnyThreadCountAndConservesPh
     settings.opticAxis = {30, 45};
     settings.light.model = LightModelKind::Hemisphere;
     settings.fire.enabled = true;
-    json first;
-    for (int threads : {1, 2}) {
-        settings.threads = threads;
-        const TraceResult r = test::traceStone(test::roundBrilliant(), settings);
-        EXPECT_EQ(r.stats.entered, r.stats.exited + r.stats.trapped);
-        EXPECT_EQ(r.stats.hit, r.stats.entered + r.stats.reflectedAtEntry);
-        json j = traceReport(r, test::roundBrilliant(), settings);
-        j.erase("timing");
-        j["settings"].erase("threads");
-        if (threads == 1) {
-            first = j;
-        } else {
-            EXPECT_EQ(j.dump(), first.dump());
-        }
-    }
+    const json first = sameAtAnyThreadCount(settings);
     EXPECT_GT(first["totals"]["crown_return"].get<double>(), 0.2);
     // The same stone traced with polarisation off sees n_o alone.
     settings.polarization = PolarizationMode::Off;
@@ -328,7 +312,7 @@ TEST(BirefringentTrace, ViewerFiguresOfADoublyRefractingStone) {
 TEST(BirefringentTrace, AlongTheOpticAxisTheWavesStayInPhase) {
     // A calcite block with its axis along the light: both waves see n_o and keep in step, so the block between
     // crossed polarisers stays dark at every polariser angle, as an isotropic one does.
-    const Stone stone = cube();
+    const Stone stone = test::unitCube();
     for (double polarizer : {0.0, 30.0, 45.0}) {
         TraceSettings settings = calcite(0);
         settings.light.polarizerDeg = polarizer;

@@ -12,15 +12,6 @@ using namespace facetlight;
 
 namespace {
 
-Stone cube() {
-    PolygonMesh m;
-    for (int i = 0; i < 8; ++i)
-        m.vertices.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
-    m.polygons = {{{0, 2, 3, 1}, "bottom"}, {{4, 5, 7, 6}, "top"},  {{0, 1, 5, 4}, "front"},
-                  {{2, 6, 7, 3}, "back"},   {{0, 4, 6, 2}, "left"}, {{1, 3, 7, 5}, "right"}};
-    return Stone::build(m, "cube");
-}
-
 TraceSettings block(const std::string& material, double axisTiltDeg) {
     TraceSettings s;
     s.material = material;
@@ -33,7 +24,7 @@ TraceSettings block(const std::string& material, double axisTiltDeg) {
 }  // namespace
 
 TEST(Polariscope, IsotropicCubeStaysDarkAtEveryTurn) {
-    const Polariscope p = polariscope(cube(), block("diamond", 0), {12, 4000});
+    const Polariscope p = polariscope(test::unitCube(), block("diamond", 0), {12, 4000});
     ASSERT_EQ(p.readings.size(), 12u);
     for (const PolariscopeReading& r : p.readings) {
         EXPECT_GT(r.upward, 1500u);
@@ -47,7 +38,7 @@ TEST(Polariscope, SlabCutAlongItsAxisBlinksFourTimesATurn) {
     // Calcite with its optic axis along x, in the plane of the faces: dark where the polariser lies along the
     // axis or across it (the stone turned 0, 90, 180 and 270 deg), brightest between, where the analyser
     // passes sin^2(2 angle) / 2 of the light (Hecht, Optics, sec. 8.10).
-    const Polariscope p = polariscope(cube(), block("calcite", 90), {16, 4000});
+    const Polariscope p = polariscope(test::unitCube(), block("calcite", 90), {16, 4000});
     EXPECT_TRUE(p.blinks);
     ASSERT_EQ(p.darkAnglesDeg.size(), 4u);
     EXPECT_EQ(p.darkAnglesDeg[0], 0);
@@ -59,7 +50,7 @@ TEST(Polariscope, SlabCutAlongItsAxisBlinksFourTimesATurn) {
         EXPECT_NEAR(r.share(), expected, 4 * r.shareStderr() + 0.02) << r.angleDeg << " deg";
     }
     // Cut across its axis (seen along it) the block stays dark as it turns: the two waves keep in step.
-    const Polariscope along = polariscope(cube(), block("calcite", 0), {8, 2000});
+    const Polariscope along = polariscope(test::unitCube(), block("calcite", 0), {8, 2000});
     EXPECT_FALSE(along.blinks);
     for (const PolariscopeReading& r : along.readings) EXPECT_EQ(r.passed, 0u) << r.angleDeg;
 }
@@ -74,6 +65,6 @@ TEST(Polariscope, SameReadingsAtAnyThreadCount) {
 }
 
 TEST(Polariscope, RefusesSettingsOutOfRange) {
-    test::expectError([] { polariscope(cube(), block("diamond", 0), {2, 1000}); }, "angles");
-    test::expectError([] { polariscope(cube(), block("diamond", 0), {8, 10}); }, "photons");
+    test::expectError([] { polariscope(test::unitCube(), block("diamond", 0), {2, 1000}); }, "angles");
+    test::expectError([] { polariscope(test::unitCube(), block("diamond", 0), {8, 10}); }, "photons");
 }
