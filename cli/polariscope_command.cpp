@@ -10,6 +10,7 @@
 #include "terminal_output.h"
 #include "image/image.h"
 #include "pictures/polariscope_chart.h"
+#include "pictures/webp_animation.h"
 #include "trace_options.h"
 #include "viewer/polariscope.h"
 
@@ -31,7 +32,8 @@ void run(const PolariscopeOptions& o) {
     Polariscope p;
     {
         ProgressLine bar(true, control);
-        p = polariscope(stone, settings, {o.angles, settings.photons}, &control);
+        // The view from above for the animation when files are written.
+        p = polariscope(stone, settings, {o.angles, settings.photons, o.outDir.empty() ? 0 : 160}, &control);
     }
     nlohmann::json j = toJson(p);
     j["settings"] = toJson(settings);
@@ -50,6 +52,8 @@ void run(const PolariscopeOptions& o) {
         writeFile(out / "polariscope.json", j.dump(2) + "\n");
         writeFile(out / "polariscope.png",
                   encodePng(polariscopeChart(p, "Polariscope: " + stone.name + ", " + settings.material)));
+        const std::vector<Image> frames = polariscopeFrames(p);
+        writeFile(out / "polariscope.webp", encodeAnimatedWebp(frames, 250));
     }
 }
 
@@ -65,7 +69,8 @@ void addPolariscopeCommand(CLI::App& app) {
     addTraceOptions(cmd, o->trace);
     cmd->add_option("--angles", o->angles, "Turntable positions over half a turn")->capture_default_str();
     cmd->add_option("--json", o->jsonPath, "Also write the readings as JSON to this file");
-    cmd->add_option("--out", o->outDir, "Write polariscope.json and the chart polariscope.png to this folder");
+    cmd->add_option("--out", o->outDir,
+                    "Write polariscope.json, the chart polariscope.png and the turning view polariscope.webp here");
     cmd->callback([o] { run(*o); });
 }
 

@@ -20,6 +20,10 @@ struct AnalyserCount {
     uint64_t seed = 0, index = 0;
     uint64_t upward = 0, passed = 0;
     Polarization state;
+    // The picture: the turn (cos, sin) that shows the stone as turned, the radius the cells span, the cells.
+    float turnCos = 1, turnSin = 0, radius = 1;
+    int size = 0;
+    std::vector<uint32_t>* seen = nullptr;
 
     void wavelength(float) {}
     void missed() {}
@@ -27,11 +31,16 @@ struct AnalyserCount {
     void entered(uint32_t) {}
     void internalReflection(uint32_t) {}
     void exitPolarization(const Polarization& p, const Vec3f&) { state = p; }
-    void exited(uint32_t, const Vec3f&, const Vec3f& d, uint32_t) {
+    void exited(uint32_t, const Vec3f& p, const Vec3f& d, uint32_t) {
         if (d.z <= 0) return;
         ++upward;
         Rng draw(seed ^ kAnalyserStream, index);
-        passed += draw.uniform() < analyserShare(state, d, frameAcross(d, axis));
+        if (!(draw.uniform() < analyserShare(state, d, frameAcross(d, axis)))) return;
+        ++passed;
+        if (size == 0) return;
+        const float x = turnCos * p.x - turnSin * p.y, y = turnSin * p.x + turnCos * p.y;
+        const int col = int((x / radius + 1) * 0.5f * float(size)), row = int((1 - y / radius) * 0.5f * float(size));
+        if (col >= 0 && col < size && row >= 0 && row < size) ++(*seen)[size_t(row) * size_t(size) + size_t(col)];
     }
     void trapped(uint32_t) {}
     void lost(uint32_t) {}
@@ -49,6 +58,9 @@ Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const
     if (p.angles < 4 || p.angles > 360) throw Error("angles", "angles must be 4 to 360");
     if (p.photons < 100 || p.photons > 10'000'000)
         throw Error("photons", "photons per position must be 100 to 1e7");
+    if (p.pictureSize < 0 || p.pictureSize > 1024) throw Error("picture_size", "picture_size must be 0 to 1024");
+    double radius = 0;  // the stone's largest horizontal distance from its axis, the picture's half-width
+    for (const Vec3& v : stone.vertices) radius = std::max(radius, std::hypot(v.x, v.y));
     Polariscope out;
     out.readings.resize(size_t(p.angles));
     if (control) control->startPhase(RunPhase::Tracing, uint64_t(p.angles) * p.photons);
@@ -67,7 +79,11 @@ Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const
             const Scene scene(stone, s);
             const TraceBase trace(scene, s);
             const double a = radians(polarizer + 90);
-            AnalyserCount count{Vec3f(float(std::cos(a)), float(std::sin(a)), 0), s.seed, 0, 0, 0, {}};
+            PolariscopeReading& reading = out.readings[k];
+            reading.seen.assign(size_t(p.pictureSize) * size_t(p.pictureSize), 0);
+            AnalyserCount count{Vec3f(float(std::cos(a)), float(std::sin(a)), 0), s.seed, 0, 0, 0, {},
+                                float(std::cos(radians(angle))), float(std::sin(radians(angle))),
+                                float(1.05 * radius), p.pictureSize, &reading.seen};
             for (uint64_t i = 0; i < p.photons; ++i) {
                 count.index = i;
                 if (scene.convex()) {
@@ -76,7 +92,9 @@ Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const
                     PhotonWalker::walk(trace, *scene.embree(), i, count);
                 }
             }
-            out.readings[k] = {angle, count.upward, count.passed};
+            reading.angleDeg = angle;
+            reading.upward = count.upward;
+            reading.passed = count.passed;
         }
         return (last - first) * p.photons;
     });

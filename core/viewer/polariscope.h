@@ -17,6 +17,7 @@ namespace facetlight {
 struct PolariscopeSettings {
     int angles = 36;           // turntable positions over half a turn (the view repeats every 180 deg)
     uint64_t photons = 20000;  // per position
+    int pictureSize = 0;       // pixels across each position's view from above (0: no pictures)
 };
 
 // One turntable position: the share of the light leaving the stone upward that the analyser passes.
@@ -24,6 +25,9 @@ struct PolariscopeReading {
     double angleDeg = 0;  // the stone turned this far (counter-clockwise seen from above)
     uint64_t upward = 0;  // photons that left the stone upward
     uint64_t passed = 0;  // of those, passed by the analyser (each with its Malus share, drawn)
+    // With a picture size n: the passed photons by where they left the stone, seen from above with the stone
+    // turned, n x n cells over a square of the stone's largest horizontal radius, row 0 at the top (+y).
+    std::vector<uint32_t> seen;
     double share() const { return upward ? double(passed) / double(upward) : 0; }
     double shareStderr() const;
 };

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `facetlight polariscope`: a doubly refracting stone blinks between crossed polarisers, a singly refracting one
-# does not; the readings come out as JSON; bad input is refused naming its flag.
+# does not; the readings come out as JSON, the chart as PNG and the turning view as WebP; bad input is refused
+# naming its flag.
 # cli_polariscope.sh FACETLIGHT
 set -euo pipefail
 exe="$1"
@@ -12,6 +13,7 @@ grep -q "dark at 0, 90, 180 and 270 deg of a turn: doubly refracting" "$work/sap
     { echo "sapphire across its axis did not blink"; cat "$work/sapphire.txt"; exit 1; }
 cmp "$work/p.json" "$work/out/polariscope.json" || { echo "--json and --out disagree"; exit 1; }
 head -c 8 "$work/out/polariscope.png" | od -An -tx1 | grep -q "89 50 4e 47 0d 0a 1a 0a" || { echo "no PNG"; exit 1; }
+head -c 16 "$work/out/polariscope.webp" | grep -q "WEBPVP8X" || { echo "no animated WebP"; exit 1; }
 python3 - "$work/p.json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))

@@ -1,5 +1,7 @@
 #include "viewer/polariscope.h"
 
+#include "pictures/polariscope_chart.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -53,6 +55,34 @@ TEST(Polariscope, SlabCutAlongItsAxisBlinksFourTimesATurn) {
     const Polariscope along = polariscope(test::unitCube(), block("calcite", 0), {8, 2000});
     EXPECT_FALSE(along.blinks);
     for (const PolariscopeReading& r : along.readings) EXPECT_EQ(r.passed, 0u) << r.angleDeg;
+}
+
+TEST(Polariscope, PicturesShowTheLightWhereItLeavesAndBlinkWithIt) {
+    // The calcite block from above: every passed photon is in its position's picture, on the block's top face
+    // turned with the stone, and the frames share one grey scale: dark at 0 deg, lit at 45.
+    const Polariscope p = polariscope(test::unitCube(), block("calcite", 90), {4, 4000, 40});
+    for (const PolariscopeReading& r : p.readings) {
+        ASSERT_EQ(r.seen.size(), 40u * 40u);
+        // A cell's centre in the stone's frame: the picture spans 1.05 times the half-diagonal either way, row 0
+        // at +y, and shows the stone turned by the reading's angle; the top face spans +-0.5.
+        const double half = 1.05 * std::sqrt(0.5), cell = 2 * half / 40, a = radians(r.angleDeg);
+        uint64_t seen = 0, outside = 0;
+        for (int y = 0; y < 40; ++y)
+            for (int x = 0; x < 40; ++x) {
+                const uint32_t c = r.seen[size_t(y) * 40 + size_t(x)];
+                seen += c;
+                const double u = (x + 0.5) * cell - half, v = half - (y + 0.5) * cell;
+                const double xs = std::cos(a) * u + std::sin(a) * v, ys = -std::sin(a) * u + std::cos(a) * v;
+                if (std::max(std::abs(xs), std::abs(ys)) > 0.5 + cell) outside += c;
+            }
+        EXPECT_EQ(seen, r.passed) << r.angleDeg;
+        EXPECT_EQ(outside, 0u) << r.angleDeg;
+    }
+    const std::vector<Image> frames = polariscopeFrames(p);
+    ASSERT_EQ(frames.size(), 4u);
+    auto centre = [&](const Image& f) { return f.at(20, 20 + 24).r; };
+    EXPECT_EQ(centre(frames[0]), 0.0f);
+    EXPECT_GT(centre(frames[1]), 0.5f);
 }
 
 TEST(Polariscope, SameReadingsAtAnyThreadCount) {
