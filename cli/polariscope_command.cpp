@@ -20,23 +20,27 @@ namespace {
 
 struct PolariscopeOptions {
     TraceOptions trace;
-    int angles = PolariscopeSettings{}.angles;
+    SettingsFlags polariscope;  // --angles, --polariscope-photons, --polariscope-picture
     std::string jsonPath;
     std::string outDir;
 };
 
 void run(const PolariscopeOptions& o) {
     const TraceSettings settings = toTraceSettings(o.trace);
+    PolariscopeSettings instrument;
+    o.polariscope.apply(polariscopeSettingsSchema(), instrument);
+    if (o.outDir.empty()) instrument.pictureSize = 0;  // the view from above is drawn only to be written
     const Stone stone = resolveStone(o.trace.mesh, stoneOptions(o.trace));
     RunControl control;
     Polariscope p;
     {
         ProgressLine bar(true, control);
-        // The view from above for the animation when files are written.
-        p = polariscope(stone, settings, {o.angles, settings.photons, o.outDir.empty() ? 0 : 160}, &control);
+        control.startPhase(RunPhase::Tracing, uint64_t(instrument.angles) * instrument.photons);
+        p = polariscope(stone, settings, instrument, &control);
     }
     nlohmann::json j = toJson(p);
     j["settings"] = toJson(settings);
+    j["polariscope"] = polariscopeSettingsSchema().write(instrument);
     if (!o.jsonPath.empty()) writeFile(o.jsonPath, j.dump(2) + "\n");
     std::cout << "turned (deg)  through the analyser (share of the light leaving upward)\n";
     for (const PolariscopeReading& r : p.readings) {
@@ -53,7 +57,7 @@ void run(const PolariscopeOptions& o) {
         writeFile(out / "polariscope.png",
                   encodePng(polariscopeChart(p, "Polariscope: " + stone.name + ", " + settings.material)));
         const std::vector<Image> frames = polariscopeFrames(p);
-        writeFile(out / "polariscope.webp", encodeAnimatedWebp(frames, 250));
+        writeFile(out / "polariscope.webp", encodeAnimatedWebp(frames, kPolariscopeFrameMs));
     }
 }
 
@@ -61,13 +65,14 @@ void run(const PolariscopeOptions& o) {
 
 void addPolariscopeCommand(CLI::App& app) {
     auto o = std::make_shared<PolariscopeOptions>();
-    o->trace.defaults.photons = PolariscopeSettings{}.photons;
     o->trace.defaults.dispersion = false;
     CLI::App* cmd = app.add_subcommand(
         "polariscope",
-        "Turn the stone between crossed polarisers, lit from below (--photons per position): does it blink?");
+        "Turn the stone between crossed polarisers, lit from below: does it blink? (--polariscope-photons per "
+        "position; --photons is the trace's and unused here)");
     addTraceOptions(cmd, o->trace);
-    cmd->add_option("--angles", o->angles, "Turntable positions over half a turn")->capture_default_str();
+    o->polariscope.add(cmd, polariscopeSettingsSchema().fields(),
+                       polariscopeSettingsSchema().write(PolariscopeSettings{}), "polariscope");
     cmd->add_option("--json", o->jsonPath, "Also write the readings as JSON to this file");
     cmd->add_option("--out", o->outDir,
                     "Write polariscope.json, the chart polariscope.png and the turning view polariscope.webp here");

@@ -17,5 +17,6 @@ std::string polariscopeVerdict(const Polariscope& p);
 // scale for all positions (so the blink shows), each frame captioned with its angle and share. Needs the
 // readings' pictures (PolariscopeSettings::pictureSize).
 std::vector<Image> polariscopeFrames(const Polariscope& p);
+constexpr int kPolariscopeFrameMs = 250;  // a frame a position: 36 positions turn half a turn in 9 s
 
 }  // namespace facetlight

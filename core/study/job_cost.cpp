@@ -128,6 +128,19 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                              count(2 * double(viewerUnits(t.viewer))) + " view rays and lamp photons",
                              2 * viewerSeconds(t, rates)});
     }
+    if (s.polariscope) {
+        // Every position a polarised trace of its photons from below, on the rates above.
+        const PolariscopeSettings& p = *s.polariscope;
+        const PolariscopeSettings usual;
+        TraceSettings polarised = t;
+        polarised.polarization = PolarizationMode::On;
+        polarised.fire.enabled = false;
+        parts.push_back({"polariscope",
+                         costliest({{"polariscope.photons", double(p.photons), double(usual.photons)},
+                                    {"polariscope.angles", double(p.angles), double(usual.angles)}}),
+                         count(p.angles) + " positions x " + count(double(p.photons)) + " photons",
+                         p.angles * traceSeconds(polarised, p.photons, rates)});
+    }
     if (s.render) {
         const RenderSettings& r = *s.render;
         const RenderSettings usual;

@@ -39,7 +39,8 @@ JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
     spec.mesh = settings::readText(j["mesh"], "mesh");
     if (j.contains("name")) spec.name = settings::readText(j["name"], "name");
     nlohmann::json trace = j;
-    for (const char* key : {"mesh", "name", "render", "aset", "tilt_series", "fire_picture", "sweep", "cut"})
+    for (const char* key :
+         {"mesh", "name", "render", "aset", "tilt_series", "fire_picture", "polariscope", "sweep", "cut"})
         trace.erase(key);
     if (const auto r = j.find("render"); r != j.end()) {
         if (r->is_object()) {
@@ -59,6 +60,8 @@ JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
         if (j.contains(view) && !spec.settings.render)
             throw Error(view, std::string(view) + " must come with render: set render to true or an object");
     }
+    if (j.contains("polariscope"))
+        spec.settings.polariscope = polariscopeSettingsSchema().read(j["polariscope"], "polariscope");
     traceSettingsSchema().read(spec.settings.trace, trace);
     if (const auto c = j.find("cut"); c != j.end() && !c->is_null()) {
         if (!c->is_object()) throw Error("cut", "cut must be an object of the shape's parameters");
@@ -115,6 +118,7 @@ nlohmann::json toJson(const JobRequest& spec) {
     if (spec.settings.aset) j["aset"] = toJson(*spec.settings.aset);
     if (spec.settings.tiltSeries) j["tilt_series"] = toJson(*spec.settings.tiltSeries);
     if (spec.settings.firePicture) j["fire_picture"] = toJson(*spec.settings.firePicture);
+    if (spec.settings.polariscope) j["polariscope"] = polariscopeSettingsSchema().write(*spec.settings.polariscope);
     if (spec.settings.sweep) j["sweep"] = toJson(*spec.settings.sweep);
     if (!spec.cut.empty()) j["cut"] = spec.cut;
     return j;

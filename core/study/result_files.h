@@ -22,7 +22,7 @@ struct ResultFile {
 };
 
 // In the order they are written: stats.json last, so that its presence says a folder is complete.
-inline constexpr std::array<ResultFile, 18> kResultFiles{{
+inline constexpr std::array<ResultFile, 20> kResultFiles{{
     {"best.obj", "text/plain", "best.obj", "best_obj", "sweep.maximize"},
     // The best design as GemCad .asc (docs/gemcad.md): a design's tiers as tweaked, a mesh's facet planes.
     {"best.asc", "text/plain", "best.asc", "best_asc", "sweep.maximize"},
@@ -42,6 +42,9 @@ inline constexpr std::array<ResultFile, 18> kResultFiles{{
     {"aset.png", "image/png", "aset.png", "aset", "aset"},
     {"tilt.webp", "image/webp", "tilt.webp", "tilt_animation", "tilt_series"},
     {"tilt.png", "image/png", "tilt.png", "tilt_chart", "tilt_series"},
+    // The stone turned between crossed polarisers (docs/optics.md, "The polariscope").
+    {"polariscope.png", "image/png", "polariscope.png", "polariscope_chart", "polariscope"},
+    {"polariscope.webp", "image/webp", "polariscope.webp", "polariscope_animation", "polariscope"},
     // The faceting diagram: crown, profile and pavilion with the cutting sheet's tiers (docs/gemcad.md).
     {"diagram.png", "image/png", "diagram.png", "diagram", ""},
     {"stats.json", "application/json", "stats", "stats", ""},

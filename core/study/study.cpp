@@ -10,6 +10,7 @@
 #include "pictures/aset_picture.h"
 #include "pictures/design_diagram.h"
 #include "pictures/heatmap.h"
+#include "pictures/polariscope_chart.h"
 #include "pictures/tilt_chart.h"
 #include "pictures/webp_animation.h"
 #include "render/aset.h"
@@ -46,8 +47,11 @@ uint64_t studyUnits(const StudySettings& settings, RunPhase phase) {
         case RunPhase::Tracing:
             return settings.trace.photons;
         case RunPhase::Viewing:
-            // The stone's view rays and lamp photons, and as many again for the reference it is judged against.
-            return settings.trace.viewer.enabled ? 2 * viewerUnits(settings.trace.viewer) : 0;
+            // The stone's view rays and lamp photons, and as many again for the reference it is judged against;
+            // the polariscope's photons.
+            return (settings.trace.viewer.enabled ? 2 * viewerUnits(settings.trace.viewer) : 0) +
+                   (settings.polariscope ? uint64_t(settings.polariscope->angles) * settings.polariscope->photons
+                                         : 0);
         case RunPhase::PhotonMap:
             return settings.render ? settings.render->mapPhotons : 0;
         case RunPhase::Rendering:
@@ -123,10 +127,19 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
             result.file("heatmap_fire.png") = encodePng(fireHeatmap(stone, *traced.fire));
         }
     }
-    if (settings.trace.viewer.enabled) {
-        // Rank 0 alone: the viewer's rays are a small fraction of a trace's photons.
+    if (settings.trace.viewer.enabled || settings.polariscope) {
+        // Rank 0 alone: the viewer's rays and the polariscope's photons are a small fraction of a trace's.
         enterPhase(control, RunPhase::Viewing, comm.isRoot() ? studyUnits(settings, RunPhase::Viewing) : 0);
-        if (comm.isRoot()) result.stats["viewer"] = viewerReport(stone, settings.trace, &control);
+        if (comm.isRoot() && settings.trace.viewer.enabled)
+            result.stats["viewer"] = viewerReport(stone, settings.trace, &control);
+        if (comm.isRoot() && settings.polariscope && !control.cancelled()) {
+            const Polariscope p = polariscope(stone, settings.trace, *settings.polariscope, &control);
+            result.stats["polariscope"] = toJson(p);
+            result.file("polariscope.png") =
+                encodePng(polariscopeChart(p, "Polariscope: " + stone.name + ", " + settings.trace.material));
+            if (settings.polariscope->pictureSize > 0)
+                result.file("polariscope.webp") = encodeAnimatedWebp(polariscopeFrames(p), kPolariscopeFrameMs);
+        }
         if (anyRank(comm, control.cancelled())) throw Canceled();
     }
 

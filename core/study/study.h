@@ -15,6 +15,7 @@
 #include "trace/trace_settings.h"
 #include "util/distributed.h"
 #include "util/run_control.h"
+#include "viewer/polariscope.h"
 
 namespace facetlight {
 
@@ -29,6 +30,9 @@ struct StudySettings {
     // The stone through the render's camera under a small bright light in true spectral colour (needs a
     // render): fire.png.
     std::optional<FirePictureSettings> firePicture;
+    // The stone turned between crossed polarisers (docs/optics.md, "The polariscope"): polariscope.png,
+    // polariscope.webp and stats "polariscope".
+    std::optional<PolariscopeSettings> polariscope;
     // A sweep of the job's shape (docs/sweeps.md) instead of one trace: runSweepJob, not runStudy.
     std::optional<SweepRequest> sweep;
 };

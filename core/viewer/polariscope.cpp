@@ -48,6 +48,19 @@ struct AnalyserCount {
 
 }  // namespace
 
+const settings::Schema<PolariscopeSettings>& polariscopeSettingsSchema() {
+    using namespace settings;
+    static const Schema<PolariscopeSettings> schema({
+        count("angles", &PolariscopeSettings::angles, 4, 360,
+              {"--angles", "Polariscope: turntable positions over half a turn"}),
+        count("photons", &PolariscopeSettings::photons, 100, 10'000'000,
+              {"--polariscope-photons", "Polariscope: photons per position"}),
+        count("picture_size", &PolariscopeSettings::pictureSize, 0, 1024,
+              {"--polariscope-picture", "Polariscope: pixels across the view from above (0: none)"}),
+    });
+    return schema;
+}
+
 double PolariscopeReading::shareStderr() const {
     const double p = share();
     return upward ? std::sqrt(p * (1 - p) / double(upward)) : 0;
@@ -55,15 +68,11 @@ double PolariscopeReading::shareStderr() const {
 
 Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const PolariscopeSettings& p,
                         RunControl* control) {
-    if (p.angles < 4 || p.angles > 360) throw Error("angles", "angles must be 4 to 360");
-    if (p.photons < 100 || p.photons > 10'000'000)
-        throw Error("photons", "photons per position must be 100 to 1e7");
-    if (p.pictureSize < 0 || p.pictureSize > 1024) throw Error("picture_size", "picture_size must be 0 to 1024");
+    polariscopeSettingsSchema().read(polariscopeSettingsSchema().write(p));  // the table's checks
     double radius = 0;  // the stone's largest horizontal distance from its axis, the picture's half-width
     for (const Vec3& v : stone.vertices) radius = std::max(radius, std::hypot(v.x, v.y));
     Polariscope out;
     out.readings.resize(size_t(p.angles));
-    if (control) control->startPhase(RunPhase::Tracing, uint64_t(p.angles) * p.photons);
     const BlockLoop loop{0, uint64_t(p.angles), 1, settings.threads};
     parallelForBlocks(loop, control, [&](int, uint64_t first, uint64_t last) {
         for (uint64_t k = first; k < last; ++k) {

@@ -8,17 +8,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include "settings/settings_schema.h"
 #include "stone/stone.h"
 #include "trace/trace_settings.h"
 #include "util/run_control.h"
 
 namespace facetlight {
 
+// A job's `polariscope` (JSON, described once in polariscopeSettingsSchema()).
 struct PolariscopeSettings {
     int angles = 36;           // turntable positions over half a turn (the view repeats every 180 deg)
     uint64_t photons = 20000;  // per position
-    int pictureSize = 0;       // pixels across each position's view from above (0: no pictures)
+    int pictureSize = 160;     // pixels across each position's view from above (0: no pictures)
 };
+
+const settings::Schema<PolariscopeSettings>& polariscopeSettingsSchema();
 
 // One turntable position: the share of the light leaving the stone upward that the analyser passes.
 struct PolariscopeReading {
@@ -43,7 +47,8 @@ struct Polariscope {
 // `settings` gives the stone's material, optic axis, seed and threads; the instrument sets the rest: collimated
 // light travelling up, a polariser at -angle (the stone turned by angle), the analyser crossed above it, and
 // polarisation on. Photon i of each position draws from Rng(seed, i) and the analyser from a stream of its own,
-// so the readings are the same at any thread count.
+// so the readings are the same at any thread count. Adds each position's photons to control->done() (the caller
+// starts the phase) and stops early when cancelled.
 Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const PolariscopeSettings& p,
                         RunControl* control = nullptr);
 

@@ -953,12 +953,14 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(await page.isHidden('#hint-material-split'), true);
     await page.fill('#f-axis-tilt', '30');
     await page.fill('#f-axis-azimuth', '45');
+    await page.setChecked('#f-polariscope', true);
     await shot('15a-form-polarised');
     const posted = page.waitForRequest((r) => r.method() === 'POST' && r.url().endsWith('/api/jobs'));
     const formId = await submitAndGetId({ stay: true });
     const sent = JSON.parse((await posted).postData());
     assert.equal(sent.polarization, 'on');
     assert.deepEqual(sent.optic_axis, { tilt_deg: 30, azimuth_deg: 45 });
+    assert.deepEqual(sent.polariscope, {}, 'the polariscope box asks for one with its defaults');
     const formJob = await (await fetch(`${baseUrl}/api/jobs/${formId}`)).json();
     assert.equal(formJob.settings.polarization, 'on');
     assert.deepEqual(formJob.settings.optic_axis, { tilt_deg: 30, azimuth_deg: 45 });
@@ -966,10 +968,11 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.evaluate(() => { location.hash = '#/'; });
     await page.selectOption('#f-polarization', 'off');
     await page.selectOption('#f-material', 'auto');
+    await page.setChecked('#f-polariscope', false);
     // The same stone without the viewer's figures (quick), its result page read.
     const res = await fetch(`${baseUrl}/api/jobs`, {
       method: 'POST', headers: { 'Content-Type': 'application/json' },
-      body: JSON.stringify({ ...sent, viewer: { enabled: false } }),
+      body: JSON.stringify({ ...sent, viewer: { enabled: false }, polariscope: { angles: 8, photons: 1000, picture_size: 48 } }),
     });
     const created = await res.json();
     assert.equal(res.status, 202, JSON.stringify(created));
@@ -980,6 +983,10 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.match(text, /Double refraction\s*uniaxial, birefringence 0\.008; traced: each ray splits into its ordinary and extraordinary waves \(optic axis 30° from the table's normal, toward 45° from x\)/);
     assert.match(text, /Polarisation\s*on: each photon carries its polarisation through every facet/);
     assert.match(await page.textContent('#view-result .lede'), /· polarised/);
+    // The polariscope's animation with its verdict, and its chart.
+    await page.waitForSelector('figure.viewer-polariscope img[src$="polariscope.webp"]');
+    assert.match(await page.textContent('figure.viewer-polariscope figcaption'), /^Polariscope: (dark at .* doubly refracting|no blink)/);
+    assert.ok(await page.$('figure.viewer-polariscope-chart img[src$="polariscope.png"]'));
     await shot('15b-result-polarised');
   });
 

@@ -7,7 +7,7 @@ set -euo pipefail
 exe="$1"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-"$exe" polariscope --mesh round_brilliant --material sapphire --optic-axis-tilt 90 --angles 12 --photons 3000 \
+"$exe" polariscope --mesh round_brilliant --material sapphire --optic-axis-tilt 90 --angles 12 --polariscope-photons 3000 \
     --json "$work/p.json" --out "$work/out" > "$work/sapphire.txt"
 grep -q "dark at 0, 90, 180 and 270 deg of a turn: doubly refracting" "$work/sapphire.txt" ||
     { echo "sapphire across its axis did not blink"; cat "$work/sapphire.txt"; exit 1; }
@@ -22,7 +22,7 @@ assert j["settings"]["material"] == "sapphire" and j["settings"]["optic_axis"]["
 r = {x["angle_deg"]: x["share"] for x in j["readings"]}
 assert r[45.0] > 5 * r[0.0] and r[45.0] > 5 * r[90.0], r
 PY
-"$exe" polariscope --mesh round_brilliant --material cubic_zirconia --angles 12 --photons 3000 > "$work/cz.txt"
+"$exe" polariscope --mesh round_brilliant --material cubic_zirconia --angles 12 --polariscope-photons 3000 > "$work/cz.txt"
 grep -q "singly refracting" "$work/cz.txt" || { echo "cubic zirconia blinked"; cat "$work/cz.txt"; exit 1; }
 refused() {  # refused EXPECTED-MESSAGE FLAGS...
     local expected="$1"
@@ -32,7 +32,8 @@ refused() {  # refused EXPECTED-MESSAGE FLAGS...
     fi
     grep -q -- "$expected" "$work/err.txt" || { echo "expected '$expected' for $*:"; cat "$work/err.txt"; exit 1; }
 }
-refused "angles must be 4 to 360" --angles 2
+refused "--angles must be an integer between 4 and 360" --angles 2
+refused "--polariscope-photons must be" --polariscope-photons 5
 refused "--optic-axis-tilt must be" --optic-axis-tilt 200
 refused "--material must be one of" --material glassy
 echo "polariscope: blinks for sapphire, not for cubic zirconia"

@@ -47,6 +47,7 @@ void forEachJobField(const std::function<void(const std::string&, const FieldInf
     forEachField(asetSettingsSchema().fields(), "aset", visit);
     forEachField(tiltSeriesSettingsSchema().fields(), "tilt_series", visit);
     forEachField(firePictureSettingsSchema().fields(), "fire_picture", visit);
+    forEachField(polariscopeSettingsSchema().fields(), "polariscope", visit);
 }
 
 json::json_pointer pointer(const std::string& path) {
@@ -209,6 +210,7 @@ TEST(SettingsSchema, JsonRoundTrip) {
     spec.settings.aset = AsetSettings{20, 40, 3, true};
     spec.settings.tiltSeries = TiltSeriesSettings{5, 0.5, 90};
     spec.settings.firePicture = FirePictureSettings{7, 35, 2.5, 0.1};
+    spec.settings.polariscope = PolariscopeSettings{12, 5000, 64};
     const json written = toJson(spec);
     const JobRequest back = JobRequest::fromJson(written);
     EXPECT_EQ(toJson(back), written);
@@ -241,6 +243,9 @@ TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
     tilt.add(&app, tiltSeriesSettingsSchema().fields(), toJson(TiltSeriesSettings{}), "tilt_series");
     cli::SettingsFlags fire;
     fire.add(&app, firePictureSettingsSchema().fields(), toJson(FirePictureSettings{}), "fire_picture");
+    cli::SettingsFlags polariscope;  // the polariscope command's
+    polariscope.add(&app, polariscopeSettingsSchema().fields(), polariscopeSettingsSchema().write(PolariscopeSettings{}),
+                    "polariscope");
     std::set<std::string> flags;
     forEachJobField([&](const std::string& path, const FieldInfo& f) {
         EXPECT_NE(app.get_option_no_throw(f.doc.flag), nullptr) << path;
@@ -365,6 +370,10 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     fire.fields = &firePictureSettingsSchema().fields();
     keys.insert("fire_picture");
     expectOpenApiAgrees(properties["fire_picture"], fire, "fire_picture");
+    FieldInfo polariscope = settings::describe("polariscope", FieldType::Object);
+    polariscope.fields = &polariscopeSettingsSchema().fields();
+    keys.insert("polariscope");
+    expectOpenApiAgrees(properties["polariscope"], polariscope, "polariscope");
     EXPECT_EQ(documented, keys);
 }
 

@@ -123,6 +123,18 @@ TEST(JobCost, PolarisedAndDoublyRefractingTracesCostTheirMeasuredFactors) {
     EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / plain, 4.1, 1e-9);
 }
 
+TEST(JobCost, APolariscopeCostsItsPositionsPolarised) {
+    StudySettings s;
+    s.trace.photons = 1000;
+    s.trace.viewer.enabled = false;
+    s.polariscope = PolariscopeSettings{10, 5000, 0};
+    const JobCost cost = estimateJobCost(s, unitRates(), 1);
+    EXPECT_EQ(cost.largest().name, "polariscope");
+    EXPECT_NEAR(partSeconds(cost, "polariscope"), 10 * 5000 * 1e-6 * 4.1 * kCostSafetyFactor, 1e-9);
+    s.polariscope->photons = 200'000;
+    EXPECT_EQ(estimateJobCost(s, unitRates(), 1).largest().field, "polariscope.photons");
+}
+
 // The detail of a refused job names its largest part, its size and the field that makes it large.
 TEST(JobCost, TheLargestPartIsNamedWithItsSizeAndField) {
     const CostRates rates = unitRates();

@@ -1,6 +1,8 @@
 #include "viewer/polariscope.h"
 
 #include "pictures/polariscope_chart.h"
+#include "study/job_request.h"
+#include "study/study.h"
 
 #include <gtest/gtest.h>
 
@@ -97,4 +99,26 @@ TEST(Polariscope, SameReadingsAtAnyThreadCount) {
 TEST(Polariscope, RefusesSettingsOutOfRange) {
     test::expectError([] { polariscope(test::unitCube(), block("diamond", 0), {2, 1000}); }, "angles");
     test::expectError([] { polariscope(test::unitCube(), block("diamond", 0), {8, 10}); }, "photons");
+}
+
+TEST(Polariscope, AJobAsksForItAndGetsItsStatisticsAndFiles) {
+    // A job's `polariscope` (docs/stats-schema.md): run after the trace, counted in the viewing phase.
+    const JobRequest spec = JobRequest::fromJson({{"mesh", "round_brilliant"},
+                                                  {"material", "zircon"},
+                                                  {"optic_axis", {{"tilt_deg", 90}}},
+                                                  {"photons", 2000},
+                                                  {"viewer", {{"enabled", false}}},
+                                                  {"polariscope", {{"angles", 8}, {"photons", 2000}, {"picture_size", 32}}}});
+    ASSERT_TRUE(spec.settings.polariscope);
+    EXPECT_EQ(studyUnits(spec.settings, RunPhase::Viewing), 8u * 2000u);
+    RunControl control;
+    const StudyResult r = runStudy(test::roundBrilliant(), spec.settings, control);
+    ASSERT_TRUE(r.stats.contains("polariscope"));
+    EXPECT_EQ(r.stats["polariscope"]["readings"].size(), 8u);
+    EXPECT_TRUE(r.stats["polariscope"]["blinks"].get<bool>());
+    EXPECT_EQ(r.file("polariscope.png").substr(1, 3), "PNG");
+    EXPECT_EQ(r.file("polariscope.webp").substr(8, 4), "WEBP");
+    EXPECT_EQ(control.done(), control.total());
+    test::expectError([] { JobRequest::fromJson({{"mesh", "round_brilliant"}, {"polariscope", {{"angles", 2}}}}); },
+                      "polariscope.angles");
 }

@@ -168,6 +168,12 @@ export function scintillationText(tilt) {
   return `Rocked ±${fmtNumber(max, 1)}° about ${tiltAxisName(axis)}: scintillation ${fmtPctErr(tilt.scintillation, tilt.scintillation_stderr)} of the face-up area per frame, over ${tilt.frames.length} frames`;
 }
 
+// The polariscope's verdict: where the stone goes dark as it turns, or that it does not blink.
+function polariscopeText(p) {
+  if (!p.blinks) return 'Polariscope: no blink as it turns (singly refracting, or seen along an optic axis)';
+  return `Polariscope: dark at ${p.dark_angles_deg.map((a) => `${a}°`).join(', ')} of a turn: doubly refracting`;
+}
+
 // A picture as a link to itself, which opens it at full size.
 function zoomable(src, alt) {
   return h('a', { href: src, target: '_blank', rel: 'noopener', class: 'zoom', title: 'Open the picture at full size' },
@@ -175,8 +181,9 @@ function zoomable(src, alt) {
 }
 
 // A job's viewer figures: the ASET picture with its shares, the tilt series' animation with its
-// scintillation, and its chart; none when the job asked for neither. With `tiltRange` ([lo, hi] in percent,
-// the comparison's common range) the chart is drawn on the page on that range instead of tilt.png's own.
+// scintillation and its chart, the polariscope's animation and chart; none when the job asked for none. With
+// `tiltRange` ([lo, hi] in percent, the comparison's common range) the chart is drawn on the page on that
+// range instead of tilt.png's own.
 export function viewerFigures(job, stats, name = '', tiltRange = null) {
   const links = job.links || {};
   const aset = stats.aset;
@@ -199,6 +206,11 @@ export function viewerFigures(job, stats, name = '', tiltRange = null) {
           tiltChartSvg(tilt, tiltRange, name)),
         h('figcaption', {}, `Light return against tilt, on the comparison's common range (${tiltRange[0]} to ${tiltRange[1]} %)`)]
         : zoomable(links.tilt_chart, `Light return against tilt${name ? `, ${name}` : ''}`)) : null,
+    links.polariscope_animation ? h('figure', { class: 'viewer-polariscope' },
+      zoomable(links.polariscope_animation, `The stone${name ? ` (${name})` : ''} turning between crossed polarisers (animation)`),
+      stats.polariscope ? h('figcaption', {}, polariscopeText(stats.polariscope)) : null) : null,
+    links.polariscope_chart ? h('figure', { class: 'viewer-polariscope-chart' },
+      zoomable(links.polariscope_chart, `Light through crossed polarisers against the turntable's angle${name ? `, ${name}` : ''}`)) : null,
   ].filter(Boolean);
 }
 
