@@ -182,6 +182,47 @@ void BM_FireVsPlainBrilliant57(benchmark::State& state) {
 }
 BENCHMARK(BM_FireVsPlainBrilliant57)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(9);
 
+// Polarised tracing (issue 28) against the unpolarised trace of the same stone, the shipped brilliant on one
+// thread, timed alternately in each iteration: diamond with polarization on, and sapphire, whose double
+// refraction is traced with polarization on, against each material off (targets: at most 1.6x and 3x).
+void BM_PolarizedVsPlainShipped(benchmark::State& state) {
+    const Stone* stone = shippedBrilliant();
+    if (!stone) {
+        state.SkipWithError("meshes/round_brilliant.obj not found");
+        return;
+    }
+    struct Run {
+        const char* name;
+        std::string material;
+        PolarizationMode polarization;
+        std::vector<double> seconds;
+    };
+    std::vector<Run> runs{{"diamond_off", "diamond", PolarizationMode::Off, {}},
+                          {"diamond_on", "diamond", PolarizationMode::On, {}},
+                          {"sapphire_off", "sapphire", PolarizationMode::Off, {}},
+                          {"sapphire_on", "sapphire", PolarizationMode::On, {}}};
+    for (auto _ : state) {
+        for (Run& run : runs) {
+            TraceSettings settings;
+            settings.photons = run.polarization == PolarizationMode::On && run.material == "sapphire" ? 100'000
+                                                                                                     : 400'000;
+            settings.material = run.material;
+            settings.polarization = run.polarization;
+            const Scene scene(*stone, settings);
+            const TraceBase base(scene, settings);
+            const auto start = std::chrono::steady_clock::now();
+            FacetStats stats(stone->facets.size());
+            traceBlocks(base, 0, blockCount(settings.photons), 1, stats);
+            benchmark::DoNotOptimize(stats.exited);
+            run.seconds.push_back(bench::seconds(start) / double(settings.photons) * 1e6);  // per 1e6 photons
+        }
+    }
+    for (const Run& run : runs) state.counters[std::string(run.name) + "_s_per_M"] = bench::median(run.seconds);
+    state.counters["polarized_over_plain"] = bench::median(runs[1].seconds) / bench::median(runs[0].seconds);
+    state.counters["birefringent_over_plain"] = bench::median(runs[3].seconds) / bench::median(runs[2].seconds);
+}
+BENCHMARK(BM_PolarizedVsPlainShipped)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
+
 }  // namespace
 
 int main(int argc, char** argv) {
