@@ -203,6 +203,21 @@ TraceSettings calcite(double axisTiltDeg) {
     return s;
 }
 
+// A calcite block with its axis `axisTiltDeg` from the top's normal lit straight down through one point, the
+// light's polariser at `polarizerDeg`: what crossed and parallel analysers below it pass.
+AnalyserTally betweenPolarisers(double axisTiltDeg, double polarizerDeg, uint64_t photons) {
+    const Stone stone = test::unitCube();
+    TraceSettings settings = calcite(axisTiltDeg);
+    settings.light.polarizerDeg = polarizerDeg;
+    const Scene scene(stone, settings);
+    const TraceBase trace(scene, settings);
+    const double a = radians(polarizerDeg);
+    const Vec3f along(float(std::cos(a)), float(std::sin(a)), 0);
+    AnalyserTally v{{-along.y, along.x, 0}, along, facetFacing(stone, {0, 0, -1}), 0, 0, 0, {}, {}};
+    shootThrough(trace, scene, 0.1f, -0.1f, photons, v);
+    return v;
+}
+
 }  // namespace
 
 TEST(BirefringentTrace, CalciteRhombShowsTwoImagesAsFarApartAsTheWalkOff) {
@@ -260,18 +275,10 @@ TEST(BirefringentTrace, SlabCutAlongItsAxisBlinksFourTimesATurnBetweenCrossedPol
     // the axis) and o (sin^2 alpha, across it); the analyser at alpha + 90 passes sin^2 alpha of the first and
     // cos^2 alpha of the second: sin^2(2 alpha) / 2 in all, dark at 0, 90, 180 and 270 deg (Hecht, Optics,
     // sec. 8.10; the two waves' Fresnel losses differ by under 2 % for calcite).
-    const Stone stone = test::unitCube();
     for (double alpha : {0.0, 22.5, 45.0, 90.0, 135.0}) {
-        TraceSettings settings = calcite(90);
-        settings.light.polarizerDeg = alpha;
-        const Scene scene(stone, settings);
-        const TraceBase trace(scene, settings);
-        const double a = radians(alpha);
-        const Vec3f along(float(std::cos(a)), float(std::sin(a)), 0);
-        AnalyserTally v{{-along.y, along.x, 0}, along, facetFacing(stone, {0, 0, -1}), 0, 0, 0, {}, {}};
-        shootThrough(trace, scene, 0.1f, -0.1f, 20000, v);
+        const AnalyserTally v = betweenPolarisers(90, alpha, 20000);
         ASSERT_GT(v.through, 15000u);
-        const double expected = 0.5 * std::pow(std::sin(2 * a), 2);
+        const double expected = 0.5 * std::pow(std::sin(2 * radians(alpha)), 2);
         EXPECT_NEAR(v.crossedSum / double(v.through), expected, 0.02) << alpha;
         if (expected == 0) {
             EXPECT_LT(v.crossedSum, 1e-6 * double(v.through)) << alpha << " deg: dark";
@@ -312,20 +319,13 @@ TEST(BirefringentTrace, ViewerFiguresOfADoublyRefractingStone) {
 TEST(BirefringentTrace, AlongTheOpticAxisTheWavesStayInPhase) {
     // A calcite block with its axis along the light: both waves see n_o and keep in step, so the block between
     // crossed polarisers stays dark at every polariser angle, as an isotropic one does.
-    const Stone stone = test::unitCube();
     for (double polarizer : {0.0, 30.0, 45.0}) {
-        TraceSettings settings = calcite(0);
-        settings.light.polarizerDeg = polarizer;
-        const Scene scene(stone, settings);
-        const TraceBase trace(scene, settings);
-        const double a = radians(polarizer);
-        const Vec3f along(float(std::cos(a)), float(std::sin(a)), 0);
-        AnalyserTally v{{-along.y, along.x, 0}, along, facetFacing(stone, {0, 0, -1}), 0, 0, 0, {}, {}};
-        shootThrough(trace, scene, 0.1f, -0.1f, 5000, v);
+        const AnalyserTally v = betweenPolarisers(0, polarizer, 5000);
         ASSERT_GT(v.through, 4000u);
         EXPECT_LT(v.crossedSum, 1e-6 * double(v.through)) << polarizer;
     }
     // Tilted well off the light it splits again (the slab test above).
+    const Stone stone = test::unitCube();
     const TraceSettings tilted = calcite(20);
     const Scene scene(stone, tilted);
     EXPECT_FALSE(TraceBase(scene, tilted).nearOpticAxis({0, 0, -1}));
