@@ -1,10 +1,11 @@
 // The packet walk: photons inside a convex stone, one per SIMD lane (4 with SSE4, 8 with AVX2, 16 with
 // AVX-512), stepped together. A step is the one-photon step() done lane-wise (the same operations in the
-// same order, so the same bits), with masks where step() branches: the reflect-or-refract draw no longer
-// costs a mispredicted branch per interaction, and the exit search tests one plane against a packet of rays
-// at a time. Photons are started a packet at a time too where the light is one collimated beam. A lane whose
-// photon is done takes the next started photon, so the lanes stay full until the block runs out. Compiled
-// once per SIMD target; the CPU's best is picked once per block of photons.
+// same order, so the same bits; a polarised trace's Stokes vectors too), with masks where step() branches:
+// the reflect-or-refract draw no longer costs a mispredicted branch per interaction, and the exit search
+// tests one plane against a packet of rays at a time. Photons are started a packet at a time too where the
+// light is one collimated beam. A lane whose photon is done takes the next started photon, so the lanes stay
+// full until the block runs out. Compiled once per SIMD target; the CPU's best is picked once per block of
+// photons.
 #include <algorithm>
 #include <bit>
 
@@ -46,29 +47,55 @@ HWY_INLINE void forEachLane(LaneBits bits, F&& f) {
     for (; bits; bits &= bits - 1) f(std::countr_zero(bits));
 }
 
+// Photons' polarisation (PhotonWalker::Photon::pol), one per lane: Stokes vector and frame.
+struct alignas(64) PolarizationLanes {
+    float s0[kMaxLanes], s1[kMaxLanes], s2[kMaxLanes], s3[kMaxLanes];
+    float xx[kMaxLanes], xy[kMaxLanes], xz[kMaxLanes];
+
+    Polarization operator[](int k) const { return {{s0[k], s1[k], s2[k], s3[k]}, {xx[k], xy[k], xz[k]}}; }
+    void put(int k, const Polarization& p) {
+        s0[k] = p.stokes.s0, s1[k] = p.stokes.s1, s2[k] = p.stokes.s2, s3[k] = p.stokes.s3;
+        xx[k] = p.x.x, xy[k] = p.x.y, xz[k] = p.x.z;
+    }
+    StokesOf<Floats> stokes() const {
+        return {Floats::load(s0), Floats::load(s1), Floats::load(s2), Floats::load(s3)};
+    }
+    Vec3Of<Floats> frame() const { return {Floats::load(xx), Floats::load(xy), Floats::load(xz)}; }
+    void store(const StokesOf<Floats>& st, const Vec3Of<Floats>& x) {
+        st.s0.store(s0), st.s1.store(s1), st.s2.store(s2), st.s3.store(s3);
+        x.x.store(xx), x.y.store(xy), x.z.store(xz);
+    }
+};
+
 // Photons inside the stone, one per lane, as a structure of arrays.
 struct alignas(64) Packet {
     float px[kMaxLanes]{}, py[kMaxLanes]{}, pz[kMaxLanes]{};
     float dx[kMaxLanes]{}, dy[kMaxLanes]{}, dz[kMaxLanes]{};
     float n[kMaxLanes]{};
+    PolarizationLanes pol{};  // when the trace is polarised
     uint64_t rng[kMaxLanes]{};
     uint32_t bounces[kMaxLanes]{};
     uint32_t id[kMaxLanes]{};  // what the visitor knows the lane's photon by (Visitor::lane)
     LaneBits live = 0;
 
-    void put(int k, const Vec3f& p, const Vec3f& d, float index, uint64_t rngState, uint32_t photonId) {
+    void put(int k, const Vec3f& p, const Vec3f& d, float index, const Polarization& state, uint64_t rngState,
+             uint32_t photonId) {
         px[k] = p.x, py[k] = p.y, pz[k] = p.z;
         dx[k] = d.x, dy[k] = d.y, dz[k] = d.z;
         n[k] = index;
+        pol.put(k, state);
         rng[k] = rngState;
         bounces[k] = 0;
         id[k] = photonId;
         live |= LaneBits(1) << k;
     }
+    void put(int k, const PhotonWalker::Photon& ph, uint32_t photonId) {
+        put(k, ph.p, ph.d, ph.n, ph.pol, ph.rng.state(), photonId);
+    }
     // Lane k takes the photon in lane j of another packet.
     void take(int k, const Packet& from, int j) {
         put(k, {from.px[j], from.py[j], from.pz[j]}, {from.dx[j], from.dy[j], from.dz[j]}, from.n[j],
-            from.rng[j], from.id[j]);
+            from.pol[j], from.rng[j], from.id[j]);
     }
 };
 
@@ -184,8 +211,24 @@ template <class Visitor>
 HWY_INLINE void enterBeam(const Packets& s, const BeamStart& b, Floats n, uint64_t* state, Visitor& visit,
                           uint32_t firstId, uint32_t idStep, Packet& started) {
     const Vec3f d(s.light.direction());
-    const Floats eta = Floats(1.0f) / n;
-    const FresnelTerms<Floats> fr = fresnelTerms(Floats::load(b.hit.cosI), eta);
+    const Floats eta = Floats(1.0f) / n, cosI = Floats::load(b.hit.cosI);
+    // The reflect-or-refract draw by the unpolarised Fresnel reflectance, or (PhotonWalker::enterPolarized)
+    // by the share of the light's state that the reflected wave takes: the state inside into `inside`.
+    FresnelTerms<Floats> fr;
+    PolarizationLanes inside;
+    if (s.polarized) {
+        const Polarization source = s.trace.sourcePolarization(d);
+        const Stokes& st = source.stokes;
+        const Normals normal = gatherNormals(s.normal, hn::LoadU(IndexTag(), b.hit.facet));
+        const FacetMeeting<Floats> m = meetFacet(
+            StokesOf<Floats>{Floats(st.s0), Floats(st.s1), Floats(st.s2), Floats(st.s3)},
+            Vec3Of<Floats>{Floats(source.x.x), Floats(source.x.y), Floats(source.x.z)},
+            Vec3Of<Floats>{Floats(d.x), Floats(d.y), Floats(d.z)}, {normal.x, normal.y, normal.z}, cosI, eta);
+        fr = {m.waves.totalInternal, m.waves.reflected.share(m.stokes), m.waves.cosT};
+        inside.store(m.waves.refracted.apply(m.stokes), m.s);
+    } else {
+        fr = fresnelTerms(cosI, eta);
+    }
     const LaneBits hitBits = b.hits;
     const FloatMask hits = maskOf(hitBits);
     const LaneBits reflects = bitsOf(hn::And(hits, uniformOf(state, hits) < fr.reflectance));
@@ -201,7 +244,7 @@ HWY_INLINE void enterBeam(const Packets& s, const BeamStart& b, Floats n, uint64
         const uint32_t f = b.hit.facet[k];
         visit.lane(firstId + k * idStep).entered(f);
         started.put(k, b.hit.p(k), refractIn(d, s.normal[f], etas[k], b.hit.cosI[k], cosT[k]), index[k],
-                    state[k], firstId + k * idStep);
+                    s.polarized ? inside[k] : Polarization{}, state[k], firstId + k * idStep);
     });
 }
 
@@ -216,7 +259,7 @@ void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end,
         for (uint64_t i = first; i < first + count; ++i) {
             PhotonWalker::Photon ph;
             if (PhotonWalker::start(s.trace, s.convex, i, tally, ph))
-                started.put(k++, ph.p, ph.d, ph.n, ph.rng.state(), uint32_t(i - begin));
+                started.put(k++, ph, uint32_t(i - begin));
         }
         return;
     }
@@ -226,9 +269,15 @@ void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end,
     enterBeam(s, b, n, started.rng, tally, uint32_t(first - begin), 1, started);
 }
 
-// PhotonWalker::step() for every live lane of the packet; the lanes whose photon is done are no longer live.
-template <class Visitor>
+// PhotonWalker::step() for every live lane of the packet, in a polarised trace or not; the lanes whose photon
+// is done are no longer live.
+template <bool kPolarized, class Visitor>
 void stepPacket(const Packets& s, Packet& lanes, Visitor& visit) {
+    static_assert(
+        !requires(Visitor & v, const Polarization& pol, const Vec3f& d) {
+            v.lane(0).exitPolarization(pol, d);
+        },
+        "the packet walk does not work out the state a photon leaves in");
     const Floats ox = Floats::load(lanes.px), oy = Floats::load(lanes.py), oz = Floats::load(lanes.pz);
     const Floats dx = Floats::load(lanes.dx), dy = Floats::load(lanes.dy), dz = Floats::load(lanes.dz);
     Floats t;
@@ -239,7 +288,17 @@ void stepPacket(const Packets& s, Packet& lanes, Visitor& visit) {
     const Floats px = ox + dx * t, py = oy + dy * t, pz = oz + dz * t;
     const Normals normal = gatherNormals(s.normal, facet);
     const Floats cosI = clampUnit(dot3(dx, dy, dz, normal.x, normal.y, normal.z));
-    const FresnelTerms<Floats> fr = fresnelTerms(cosI, Floats::load(lanes.n));
+    // The reflect-or-refract choice: by the unpolarised Fresnel reflectance, or by the share of the photon's
+    // own state that the reflected wave takes; a photon that reflects goes on in the facet's s-p frame.
+    FresnelTerms<Floats> fr;
+    if constexpr (kPolarized) {
+        const FacetMeeting<Floats> m = meetFacet(lanes.pol.stokes(), lanes.pol.frame(), {dx, dy, dz},
+                                                 {normal.x, normal.y, normal.z}, cosI, Floats::load(lanes.n));
+        fr = {m.waves.totalInternal, m.waves.reflected.share(m.stokes), m.waves.cosT};
+        lanes.pol.store(m.waves.reflected.apply(m.stokes), m.s);
+    } else {
+        fr = fresnelTerms(cosI, Floats::load(lanes.n));
+    }
     const FloatMask draw = hn::AndNot(fr.totalInternal, inside);
     const LaneBits exits = bitsOf(hn::And(draw, uniformOf(lanes.rng, draw) >= fr.reflectance));
     const LaneBits live = lanes.live, reflects = bitsOf(inside) & ~exits;
@@ -288,7 +347,11 @@ void walkLanes(const Packets& s, Visitor& visit, Start&& start) {
             empty &= empty - 1;
         }
         if (!lanes.live) return;
-        stepPacket(s, lanes, visit);
+        if (s.polarized) {
+            stepPacket<true>(s, lanes, visit);
+        } else {
+            stepPacket<false>(s, lanes, visit);
+        }
     }
 }
 
@@ -343,7 +406,7 @@ void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_
                 const uint32_t id = firstId + uint32_t(i - first) * count;
                 PhotonWalker::Photon ph;
                 if (PhotonWalker::startBand(s.trace, s.convex, i, bands[band], visit.lane(id), ph))
-                    started.put(k++, ph.p, ph.d, ph.n, ph.rng.state(), id);
+                    started.put(k++, ph, id);
             }
         }
         ++band;
@@ -376,9 +439,17 @@ HWY_EXPORT(walkBandPackets);
 
 PhotonWalker::PacketScene PhotonWalker::packetScene(const TraceBase& t) {
     const Scene& s = t.scene();
-    return {
-        t,           *s.convex(),    s.beamEntry(),  s.light(),         s.material(),
-        s.normals(), s.fixedIndex(), s.dispersive(), t.settings().seed, uint32_t(t.settings().maxBounces)};
+    return {t,
+            *s.convex(),
+            s.beamEntry(),
+            s.light(),
+            s.material(),
+            s.normals(),
+            s.fixedIndex(),
+            s.dispersive(),
+            t.polarized(),
+            t.settings().seed,
+            uint32_t(t.settings().maxBounces)};
 }
 
 void PhotonWalker::packets(const TraceBase& s, uint64_t begin, uint64_t end, Tally& tally) {

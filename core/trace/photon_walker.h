@@ -116,18 +116,17 @@ class PhotonWalker {
         const float cosI = std::clamp(dot(d, normal), 0.0f, 1.0f), n = ph.n;
         if (s.polarized()) {
             // The facet's s-p frame; the same draws as below, none under total internal reflection.
-            const Vec3f sDir = sDirection(d, normal, ph.pol.x);
-            const Stokes st = rotateFrame(ph.pol.stokes, ph.pol.x, sDir, d);
-            const FacetWaves w = facetWaves(cosI, n);
-            if (!w.totalInternal && ph.rng.uniform() >= w.reflected.share(st)) {
+            const FacetMeeting<float> m = meetFacet(ph.pol, d, normal, cosI, n);
+            const FacetWaves& w = m.waves;
+            if (!w.totalInternal && ph.rng.uniform() >= w.reflected.share(m.stokes)) {
                 const Vec3f out = refractOut(d, normal, n, cosI, w.cosT);
-                ph.pol = {w.refracted.apply(st), sDir};
+                ph.pol = {w.refracted.apply(m.stokes), toVec3f(m.s)};
                 if constexpr (requires { visit.exitPolarization(ph.pol, out); })
                     visit.exitPolarization(ph.pol, out);
                 visit.exited(hit.facet, p, out, ph.bounces);
                 return false;
             }
-            ph.pol = {w.reflected.apply(st), sDir};
+            ph.pol = {w.reflected.apply(m.stokes), toVec3f(m.s)};
         } else {
             const FresnelResult fr = fresnel(cosI, n);
             if (!fr.totalInternal && ph.rng.uniform() >= fr.reflectance) {
@@ -193,15 +192,13 @@ class PhotonWalker {
     static bool enterPolarized(const Vec3f& normal, float eta, uint32_t facet, const Vec3f& p, Vec3f& d,
                                Visitor& visit, Photon& ph) {
         const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
-        const Vec3f sDir = sDirection(d, normal, ph.pol.x);
-        const Stokes st = rotateFrame(ph.pol.stokes, ph.pol.x, sDir, d);
-        const FacetWaves w = facetWaves(cosI, eta);
-        if (ph.rng.uniform() < w.reflected.share(st)) {
+        const FacetMeeting<float> m = meetFacet(ph.pol, d, normal, cosI, eta);
+        if (ph.rng.uniform() < m.waves.reflected.share(m.stokes)) {
             visit.reflectedAtEntry(facet, p, reflectOff(d, normal, cosI));
             return false;
         }
-        d = refractIn(d, normal, eta, cosI, w.cosT);
-        ph.pol = {w.refracted.apply(st), sDir};
+        d = refractIn(d, normal, eta, cosI, m.waves.cosT);
+        ph.pol = {m.waves.refracted.apply(m.stokes), toVec3f(m.s)};
         return true;
     }
 
@@ -359,10 +356,10 @@ class PhotonWalker {
     }
     // The bands of photons [begin, end): band k of photon i into exits[(i - begin) * bands.size() + k], as
     // walkBands() gives it. A convex stone's bands are walked a packet at a time, one (photon, band) per
-    // lane, unless photons carry their polarisation.
+    // lane, unless the stone is birefringent.
     static void blockBands(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const float> bands,
                            std::span<BandExit> exits) {
-        if (s.scene().convex() && !s.polarized()) {
+        if (s.scene().convex() && !s.birefringent()) {
             bandPackets(s, begin, end, bands, exits);
             return;
         }
@@ -381,20 +378,21 @@ class PhotonWalker {
         const std::vector<Vec3f>& normal;
         float fixedIndex;
         bool dispersive;
+        bool polarized;  // photons carry their polarisation
         uint64_t seed;
         uint32_t maxBounces;
     };
     // Photons [begin, end) of a convex stone a packet at a time, one per SIMD lane, on the CPU's best
     // target. Each photon takes exactly the steps walk() takes, so the tally has the same bits.
     static void packets(const TraceBase& s, uint64_t begin, uint64_t end, Tally& t);
-    // The packet walk of blockBands(), on a convex stone.
+    // The packet walk of blockBands(), on a convex stone. Neither walks a birefringent stone.
     static void bandPackets(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const float> bands,
                             std::span<BandExit> exits);
 
     // Photons [begin, end) into one thread's tally.
     static void tally(const TraceBase& s, uint64_t begin, uint64_t end, FacetStats& stats) {
         Tally t{s, stats};
-        if (s.scene().convex() && !s.polarized()) {
+        if (s.scene().convex() && !s.birefringent()) {
             packets(s, begin, end, t);
         } else if (s.scene().convex()) {
             for (uint64_t i = begin; i < end; ++i) walk(s, *s.scene().convex(), i, t);

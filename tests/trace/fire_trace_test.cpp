@@ -181,8 +181,9 @@ TEST(FireTrace, LeavesThePlainTallyAsItWas) {
 
 // The bands walked a packet at a time (one (photon, band) per SIMD lane) give every tally of the reference
 // walk, each photon's bands one at a time (PhotonWalker::walkBands), on every SIMD target: light that the
-// packet walk starts lane-wise (one collimated beam) and photon by photon (the others), a stone whose exit
-// search skips the girdle, one without, and one traced by Embree (which takes the reference walk).
+// packet walk starts lane-wise (one collimated beam) and photon by photon (the others, and polarised
+// photons), a stone whose exit search skips the girdle, one without, and one traced by Embree (which takes
+// the reference walk).
 TEST(FireTrace, PacketWalkReproducesTheOneByOneWalk) {
     struct Case {
         const char* what;
@@ -205,6 +206,14 @@ TEST(FireTrace, PacketWalkReproducesTheOneByOneWalk) {
         s.maxBounces = 3;
     });
     brilliant("embree", [](TraceSettings& s) { s.intersector = IntersectorKind::Embree; });
+    brilliant("polarised, hemisphere", [](TraceSettings& s) {
+        s.polarization = PolarizationMode::On;
+        s.light.model = LightModelKind::Hemisphere;
+    });
+    brilliant("polarised, collimated through a polariser", [](TraceSettings& s) {
+        s.polarization = PolarizationMode::On;
+        s.light.polarizerDeg = 30;
+    });
     cases.front().settings.photons = kPhotonBlock + 300;
     test::forEachSimdTarget([&] {
         for (const Case& c : cases) {

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -265,13 +266,19 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
         double tiltDeg;
         int maxBounces;
         SkyKind sky = SkyKind::Uniform;
+        PolarizationMode polarization = PolarizationMode::Off;
+        std::optional<double> polarizerDeg = std::nullopt;
     };
     for (const Case& c :
          {Case{"collimated", LightModelKind::Collimated, false, 0, 64},
           Case{"collimated, tilted, dispersion", LightModelKind::Collimated, true, 20, 64},
           Case{"hemisphere, dispersion", LightModelKind::Hemisphere, true, 0, 64},
           Case{"hemisphere, cosine sky", LightModelKind::Hemisphere, false, 0, 64, SkyKind::Cosine},
-          Case{"point, 3 bounces at most", LightModelKind::Point, false, 0, 3}}) {
+          Case{"point, 3 bounces at most", LightModelKind::Point, false, 0, 3},
+          Case{"polarised, hemisphere, dispersion", LightModelKind::Hemisphere, true, 0, 64, SkyKind::Uniform,
+               PolarizationMode::On},
+          Case{"polarised, collimated through a polariser, tilted", LightModelKind::Collimated, false, 20, 64,
+               SkyKind::Uniform, PolarizationMode::On, 30.0}}) {
         SCOPED_TRACE(c.what);
         TraceSettings settings = baseSettings(2 * kPhotonBlock + 1000);
         settings.light.model = c.light;
@@ -279,6 +286,8 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
         settings.light.tiltDeg = c.tiltDeg;
         settings.dispersion = c.dispersion;
         settings.maxBounces = c.maxBounces;
+        settings.polarization = c.polarization;
+        settings.light.polarizerDeg = c.polarizerDeg;
         const Scene scene(stone, settings);
         const TraceBase trace(scene, settings);
         FacetStats traced(stone.facets.size());
