@@ -8,7 +8,7 @@
 namespace facetlight {
 namespace {
 
-constexpr int kTitleHeight = 52;
+constexpr int kTitleHeight = 68;
 constexpr int kLegendRow = 22;
 const Rgb kInk{0.1f, 0.1f, 0.1f};
 const Rgb kOrdinary{0.1f, 0.3f, 0.95f};
@@ -30,13 +30,13 @@ std::string doublingTitle(const std::string& stoneName, const TraceSettings& set
 
 std::string doublingSummary(const Doubling& d) {
     if (!d.doublyRefracting) return "no doubling: " + d.tracedAs;
-    const DoublingSpread& s = d.table.pixels ? d.table : d.crown;
-    return std::string(d.table.pixels ? "through the table " : "through the crown ") + mm(s.medianMm) +
-           " mm (quartiles " + mm(s.lowMm) + "-" + mm(s.highMm) + " mm), " +
-           formatNumber("%.2f", 100 * d.shareOfDiameter(s.medianMm)) + " % of the girdle, " +
-           formatNumber("%.1f", d.arcMinutes(s.medianMm)) + " arcmin through a " +
-           formatNumber("%g", d.loupe) + "x loupe; " + formatNumber("%.0f", d.viewToAxisDeg) +
-           " deg from the optic axis";
+    const DoublingSpread& t = d.table;
+    return "through the table: median " + mm(t.medianMm) + " mm (quartiles " + mm(t.lowMm) + "-" +
+           mm(t.highMm) + "), " + formatNumber("%.2f", 100 * d.shareOfDiameter(t.medianMm)) +
+           " % of the girdle, " + formatNumber("%.1f", d.arcMinutes(t.medianMm)) + " arcmin through a " +
+           formatNumber("%g", d.loupe) + "x loupe; through the whole crown: median " + mm(d.crown.medianMm) +
+           " mm (quartiles " + mm(d.crown.lowMm) + "-" + mm(d.crown.highMm) + "), seen " +
+           formatNumber("%.0f", d.viewToAxisDeg) + " deg from the optic axis";
 }
 
 Image doublingPicture(const Doubling& d, const std::string& title) {
@@ -74,10 +74,16 @@ Image doublingPicture(const Doubling& d, const std::string& title) {
             for (int dy = 0; dy < s; ++dy)
                 for (int dx = 0; dx < s; ++dx) image.at(left + x * s + dx, top + y * s + dy) = c;
         }
-    drawText(image, width / 2.0, 6, title, textWidth(title, 2) > width - 10 ? 1.5 : 2, kInk, Align::Center);
+    // The title, then the summary at its "; " on two lines, each as large as fits.
     const std::string summary = doublingSummary(d);
-    drawText(image, width / 2.0, 30, summary, textWidth(summary, 1.5) > width - 10 ? 1.2 : 1.5, kInk,
-             Align::Center);
+    const size_t cut = summary.find("; ");
+    const std::string lines[3] = {title, summary.substr(0, cut),
+                                  cut == std::string::npos ? "" : summary.substr(cut + 2)};
+    for (int k = 0; k < 3; ++k) {
+        const double scale =
+            std::min(k == 0 ? 2.0 : 1.5, (width - 10) / std::max(1.0, textWidth(lines[k], 1)));
+        drawText(image, width / 2.0, k == 0 ? 6 : 14 + 16.0 * k, lines[k], scale, kInk, Align::Center);
+    }
 
     // A scale bar of a round length about a quarter of the view.
     const double span = 2 * d.halfWidthMm, pixelsPerMm = side / span;
