@@ -77,7 +77,8 @@ double Doubling::arcMinutes(double mm) const {
     return mm / (250.0 / loupe) * 180.0 / std::numbers::pi * 60.0;
 }
 
-Doubling doubling(const Stone& stone, const TraceSettings& settings, const DoublingSettings& d) {
+Doubling doubling(const Stone& stone, const TraceSettings& settings, const DoublingSettings& d,
+                  RunControl* control) {
     doublingSettingsSchema().read(doublingSettingsSchema().write(d));  // the table's checks
     TraceSettings s = settings;
     s.polarization = PolarizationMode::On;  // TraceBase's crystal and optic-axis cone
@@ -130,7 +131,7 @@ Doubling doubling(const Stone& stone, const TraceSettings& settings, const Doubl
 
     const UniaxialMedium crystal = trace.crystal(float(out.nO), float(out.nE));
     const BlockLoop loop{0, n, 8, settings.threads};
-    parallelForBlocks(loop, nullptr, [&](int, uint64_t first, uint64_t last) {
+    parallelForBlocks(loop, control, [&](int, uint64_t first, uint64_t last) {
         for (uint64_t row = first; row < last; ++row)
             for (size_t col = 0; col < n; ++col) {
                 const size_t k = row * n + col;

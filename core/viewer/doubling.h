@@ -13,6 +13,7 @@
 #include "settings/settings_schema.h"
 #include "stone/stone.h"
 #include "trace/trace_settings.h"
+#include "util/run_control.h"
 
 namespace facetlight {
 
@@ -58,8 +59,10 @@ struct Doubling {
 // the stone from afar) along -z of the stone tilted by `d.tiltDeg`, each pixel's ray through its centre: no
 // random draws, the same numbers at any thread count. The waves come from the interface optics of the
 // tracer (optics/birefringence.h) at 589.3 nm; within TraceBase::nearOpticAxis of the axis they coincide. An
-// isotropic material, or a biaxial one (traced at beta), gives one image and zero doubling.
-Doubling doubling(const Stone& stone, const TraceSettings& settings, const DoublingSettings& d);
+// isotropic material, or a biaxial one (traced at beta), gives one image and zero doubling. Adds each pixel
+// to control->done() (the caller starts the phase).
+Doubling doubling(const Stone& stone, const TraceSettings& settings, const DoublingSettings& d,
+                  RunControl* control = nullptr);
 
 nlohmann::json toJson(const Doubling& d);
 

@@ -1,6 +1,8 @@
 #include "viewer/doubling.h"
 
 #include "pictures/doubling_picture.h"
+#include "study/job_request.h"
+#include "study/study.h"
 
 #include <gtest/gtest.h>
 
@@ -136,4 +138,30 @@ TEST(Doubling, PictureShowsBothImagesWithTitleAndScale) {
         }
     EXPECT_GT(ordinary, 200);
     EXPECT_GT(extraordinary, 200);
+}
+
+TEST(Doubling, AJobAsksForItAndGetsItsStatisticsAndPicture) {
+    // A job's `doubling` (docs/stats-schema.md): run after the trace, counted in the viewing phase.
+    const JobRequest spec = JobRequest::fromJson({{"mesh", "round_brilliant"},
+                                                  {"material", "moissanite"},
+                                                  {"optic_axis", {{"tilt_deg", 45}}},
+                                                  {"photons", 2000},
+                                                  {"viewer", {{"enabled", false}}},
+                                                  {"doubling", {{"picture_size", 64}, {"loupe", 5}}}});
+    ASSERT_TRUE(spec.settings.doubling);
+    EXPECT_EQ(studyUnits(spec.settings, RunPhase::Viewing), 64u * 64u);
+    RunControl control;
+    const StudyResult r = runStudy(test::roundBrilliant(), spec.settings, control);
+    ASSERT_TRUE(r.stats.contains("doubling"));
+    const nlohmann::json& d = r.stats["doubling"];
+    EXPECT_TRUE(d["doubly_refracting"].get<bool>());
+    EXPECT_GT(d["table"]["median_mm"].get<double>(), 0.02);
+    EXPECT_EQ(d["loupe"], 5);
+    EXPECT_EQ(r.file("doubling.png").substr(1, 3), "PNG");
+    EXPECT_EQ(control.done(), control.total());
+    test::expectError(
+        [] {
+            JobRequest::fromJson({{"mesh", "round_brilliant"}, {"doubling", {{"tilt_deg", 90}}}});
+        },
+        "doubling.tilt_deg");
 }
