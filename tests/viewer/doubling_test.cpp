@@ -26,7 +26,7 @@ TraceSettings stoneOf(const std::string& material, double axisTiltDeg, double ax
 }
 
 // The walk-off of the extraordinary ray from the wave normal, at angle theta to the optic axis (Born & Wolf,
-// Principles of Optics, sec. 15.3.3): tan rho = (1 - (n_o/n_e)^2) tan theta / (1 + (n_o/n_e)^2 tan^2 theta).
+// Principles of Optics, sec. 15.3): tan rho = (1 - (n_o/n_e)^2) tan theta / (1 + (n_o/n_e)^2 tan^2 theta).
 double walkOff(const std::string& material, double thetaDeg) {
     const std::array<double, 3> n = Material::byName(material).principalIndices(Material::kSodiumD);
     const double r = (n[0] / n[2]) * (n[0] / n[2]), t = std::tan(radians(thetaDeg));
