@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "optics/material.h"
@@ -56,6 +57,52 @@ TEST(Doubling, SlabLookedAtAlongItsNormalDoublesByItsThicknessTimesTheWalkOff) {
         EXPECT_NEAR(d.viewToAxisDeg, theta, 1e-9);
     }
     EXPECT_NEAR(6.5 * std::tan(walkOff("calcite", 44.6)), 0.711, 0.001);
+}
+
+TEST(Doubling, AWedgeDoublesByTheImagesNotByTheRaysHits) {
+    // A wedge: the bottom flat, the top rising along y at alpha, seen from above, the axis in the y-z plane
+    // so that both rays stay in it. A ray entering at image height y goes down a depth D(y) and moves across
+    // by s D (s = r_y / -r_z of its ray r): the pavilion point the ordinary ray of y meets is seen through
+    // the extraordinary wave at y' with y' + s_e D(y') = y + s_o D(y), D(y') = D(y) + (y' - y) tan alpha, so
+    // the images lie (s_o - s_e) D(y) / (1 + s_e tan alpha) apart: not the rays' own (s_o - s_e) D(y).
+    const double alpha = radians(20);
+    PolygonMesh m;
+    for (int i = 0; i < 8; ++i) {
+        const double y = (i >> 1) & 1;
+        m.vertices.push_back({double(i & 1), y, (i >> 2) & 1 ? 1 + y * std::tan(alpha) : 0.0});
+    }
+    m.polygons = {{{0, 2, 3, 1}, "bottom"}, {{4, 5, 7, 6}, "top"},  {{0, 1, 5, 4}, "front"},
+                  {{2, 6, 7, 3}, "back"},   {{0, 4, 6, 2}, "left"}, {{1, 3, 7, 5}, "right"}};
+    const Stone wedge = Stone::build(m, "wedge");
+    const TraceSettings s = stoneOf("calcite", 45, 90);
+    const Doubling d = doubling(wedge, s, {96});
+    const Facet& top = *std::find_if(wedge.facets.begin(), wedge.facets.end(),
+                                     [](const Facet& f) { return f.region == Region::Crown; });
+    const double tanAlpha = -top.normal.y / top.normal.z;
+    ASSERT_NEAR(tanAlpha, std::tan(alpha), 1e-9);
+    const std::array<double, 3> n = Material::byName("calcite").principalIndices(Material::kSodiumD);
+    const InterfaceWaves w = enterCrystal({n[0], n[2], s.opticAxis.direction()}, {0, 0, -1}, top.normal);
+    const Vec3 o = w.transmitted[0].wave.ray, e = w.transmitted[1].wave.ray;
+    ASSERT_NEAR(e.x, 0, 1e-12);
+    const double so = o.y / -o.z, se = e.y / -e.z;
+    // The wedge is 1 across, so 1 unit is size_mm; the picture's centre row is at the wedge's middle, y =
+    // 0.5.
+    uint64_t checked = 0;
+    double largestGap = 0;
+    for (int row = 0; row < d.size; ++row) {
+        const double y = (1 - 2 * (row + 0.5) / d.size) * d.halfWidthMm;
+        const double depth = 6.5 * (1 + 0.5 * tanAlpha) + y * tanAlpha;
+        const double expected = std::abs(so - se) * depth / (1 + se * tanAlpha);
+        for (int col = 0; col < d.size; ++col) {
+            const float got = d.doublingMm[size_t(row) * size_t(d.size) + size_t(col)];
+            if (got < 0) continue;
+            EXPECT_NEAR(got, expected, 1e-4 * expected) << row << " " << col;
+            largestGap = std::max(largestGap, std::abs(std::abs(so - se) * depth - expected));
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 4000u);
+    EXPECT_GT(largestGap, 0.01);  // the images' distance and the rays' differ by more than the tolerance
 }
 
 TEST(Doubling, NoneAlongTheAxisAcrossItOrInASinglyRefractingStone) {
