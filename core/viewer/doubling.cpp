@@ -30,7 +30,8 @@ Vec3 onPlane(const Facet& f, const Vec3& p, const Vec3& r) {
 // facet `pavilion` at po and pe. Within one pair of planar facets the extraordinary image of the pavilion is
 // an affine map of the image plane, X(u) = pe + J (u - u0): the pavilion point po is seen through the
 // extraordinary wave at u0 + J^-1 (po - pe), so that is the doubling (J: the image plane moved along the line
-// of sight onto the entry facet, then along the wave onto the pavilion facet, read in u and v).
+// of sight onto the entry facet, then along the wave onto the pavilion facet; pavilion points are read by
+// their projections on u and v, a chart of the facet plane as long as the line of sight is not in it).
 double imageDistance(const Facet& entry, const Facet& pavilion, const Vec3& view, const Vec3& e,
                      const Vec3& u, const Vec3& v, const Vec3& po, const Vec3& pe) {
     auto carried = [&](const Vec3& delta) {
