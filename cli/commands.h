@@ -11,5 +11,6 @@ void addStudyCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addSweepCommand(CLI::App& app);
 void addPolariscopeCommand(CLI::App& app);
+void addDoublingCommand(CLI::App& app);
 
 }  // namespace facetlight::cli

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
     facetlight::cli::addRenderCommand(app);
     facetlight::cli::addSweepCommand(app);
     facetlight::cli::addPolariscopeCommand(app);
+    facetlight::cli::addDoublingCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

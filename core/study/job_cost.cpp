@@ -141,6 +141,12 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                          count(p.angles) + " positions x " + count(double(p.photons)) + " photons",
                          p.angles * traceSeconds(polarised, p.photons, rates)});
     }
+    if (s.doubling) {
+        // Each pixel three view rays (into the crown, then each wave to the pavilion), at the ASET view's rate.
+        const double px = double(s.doubling->pictureSize) * double(s.doubling->pictureSize);
+        parts.push_back({"doubling", "doubling.picture_size", count(px) + " pixels x 3 view rays",
+                         3 * px * rates.asetRay});
+    }
     if (s.render) {
         const RenderSettings& r = *s.render;
         const RenderSettings usual;

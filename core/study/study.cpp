@@ -10,6 +10,7 @@
 #include "pictures/aset_picture.h"
 #include "pictures/design_diagram.h"
 #include "pictures/heatmap.h"
+#include "pictures/doubling_picture.h"
 #include "pictures/polariscope_chart.h"
 #include "pictures/tilt_chart.h"
 #include "pictures/webp_animation.h"
@@ -48,10 +49,12 @@ uint64_t studyUnits(const StudySettings& settings, RunPhase phase) {
             return settings.trace.photons;
         case RunPhase::Viewing:
             // The stone's view rays and lamp photons, and as many again for the reference it is judged against;
-            // the polariscope's photons.
+            // the polariscope's photons; the doubling's pixels.
             return (settings.trace.viewer.enabled ? 2 * viewerUnits(settings.trace.viewer) : 0) +
                    (settings.polariscope ? uint64_t(settings.polariscope->angles) * settings.polariscope->photons
-                                         : 0);
+                                         : 0) +
+                   (settings.doubling ? uint64_t(settings.doubling->pictureSize) * settings.doubling->pictureSize
+                                      : 0);
         case RunPhase::PhotonMap:
             return settings.render ? settings.render->mapPhotons : 0;
         case RunPhase::Rendering:
@@ -127,8 +130,9 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
             result.file("heatmap_fire.png") = encodePng(fireHeatmap(stone, *traced.fire));
         }
     }
-    if (settings.trace.viewer.enabled || settings.polariscope) {
-        // Rank 0 alone: the viewer's rays and the polariscope's photons are a small fraction of a trace's.
+    if (settings.trace.viewer.enabled || settings.polariscope || settings.doubling) {
+        // Rank 0 alone: the viewer's rays, the polariscope's photons and the doubling's rays are a small
+        // fraction of a trace's.
         enterPhase(control, RunPhase::Viewing, comm.isRoot() ? studyUnits(settings, RunPhase::Viewing) : 0);
         if (comm.isRoot() && settings.trace.viewer.enabled)
             result.stats["viewer"] = viewerReport(stone, settings.trace, &control);
@@ -139,6 +143,11 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
                 encodePng(polariscopeChart(p, "Polariscope: " + stone.name + ", " + settings.trace.material));
             if (settings.polariscope->pictureSize > 0)
                 result.file("polariscope.webp") = encodeAnimatedWebp(polariscopeFrames(p), kPolariscopeFrameMs);
+        }
+        if (comm.isRoot() && settings.doubling && !control.cancelled()) {
+            const Doubling d = doubling(stone, settings.trace, *settings.doubling, &control);
+            result.stats["doubling"] = toJson(d);
+            result.file("doubling.png") = encodePng(doublingPicture(d, doublingTitle(stone.name, settings.trace)));
         }
         if (anyRank(comm, control.cancelled())) throw Canceled();
     }

@@ -15,6 +15,7 @@
 #include "trace/trace_settings.h"
 #include "util/distributed.h"
 #include "util/run_control.h"
+#include "viewer/doubling.h"
 #include "viewer/polariscope.h"
 
 namespace facetlight {
@@ -33,6 +34,9 @@ struct StudySettings {
     // The stone turned between crossed polarisers (docs/optics.md, "The polariscope"): polariscope.png,
     // polariscope.webp and stats "polariscope".
     std::optional<PolariscopeSettings> polariscope;
+    // The stone face-up through a loupe, its pavilion's edges doubled by a doubly refracting stone
+    // (docs/optics.md, "The doubling"): doubling.png and stats "doubling".
+    std::optional<DoublingSettings> doubling;
     // A sweep of the job's shape (docs/sweeps.md) instead of one trace: runSweepJob, not runStudy.
     std::optional<SweepRequest> sweep;
 };

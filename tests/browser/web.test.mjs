@@ -954,6 +954,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.fill('#f-axis-tilt', '30');
     await page.fill('#f-axis-azimuth', '45');
     await page.setChecked('#f-polariscope', true);
+    await page.setChecked('#f-doubling', true);
     await shot('15a-form-polarised');
     const posted = page.waitForRequest((r) => r.method() === 'POST' && r.url().endsWith('/api/jobs'));
     const formId = await submitAndGetId({ stay: true });
@@ -961,6 +962,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(sent.polarization, 'on');
     assert.deepEqual(sent.optic_axis, { tilt_deg: 30, azimuth_deg: 45 });
     assert.deepEqual(sent.polariscope, {}, 'the polariscope box asks for one with its defaults');
+    assert.deepEqual(sent.doubling, {}, 'the doubling box asks for one with its defaults');
     const formJob = await (await fetch(`${baseUrl}/api/jobs/${formId}`)).json();
     assert.equal(formJob.settings.polarization, 'on');
     assert.deepEqual(formJob.settings.optic_axis, { tilt_deg: 30, azimuth_deg: 45 });
@@ -969,10 +971,11 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.selectOption('#f-polarization', 'off');
     await page.selectOption('#f-material', 'auto');
     await page.setChecked('#f-polariscope', false);
+    await page.setChecked('#f-doubling', false);
     // The same stone without the viewer's figures (quick), its result page read.
     const res = await fetch(`${baseUrl}/api/jobs`, {
       method: 'POST', headers: { 'Content-Type': 'application/json' },
-      body: JSON.stringify({ ...sent, viewer: { enabled: false }, polariscope: { angles: 8, photons: 1000, picture_size: 48 } }),
+      body: JSON.stringify({ ...sent, viewer: { enabled: false }, polariscope: { angles: 8, photons: 1000, picture_size: 48 }, doubling: { picture_size: 96 } }),
     });
     const created = await res.json();
     assert.equal(res.status, 202, JSON.stringify(created));
@@ -987,6 +990,10 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.waitForSelector('figure.viewer-polariscope img[src$="polariscope.webp"]');
     assert.match(await page.textContent('figure.viewer-polariscope figcaption'), /^Polariscope: (dark at .* doubly refracting|no blink)/);
     assert.ok(await page.$('figure.viewer-polariscope-chart img[src$="polariscope.png"]'));
+    // The doubling's face-up view with what was measured: sapphire at 30 deg to its axis doubles a little.
+    await page.waitForSelector('figure.viewer-doubling img[src$="doubling.png"]');
+    assert.match(await page.textContent('figure.viewer-doubling figcaption'),
+      /^Doubling: through the table 0\.0\d\d mm \(quartiles .*\), .* % of the girdle, .*′ through a 10× loupe; .* seen 30° from the optic axis$/);
     await shot('15b-result-polarised');
   });
 

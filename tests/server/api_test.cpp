@@ -318,6 +318,30 @@ TEST_F(ServiceTest, FireIsMeasuredLinkedAndServed) {
     expectProblem(submit(bad), 422, "fire.pupil_mm");
 }
 
+TEST_F(ServiceTest, TheDoublingIsLinkedServedAndItsFieldsChecked) {
+    json job = smallJob();
+    job["material"] = "zircon";
+    job["optic_axis"] = {{"tilt_deg", 45}};
+    job["doubling"] = {{"picture_size", 48}};
+    const std::string id = submitOk(job);
+    const json done = waitFinished(id);
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    const std::string self = "/api/jobs/" + id;
+    EXPECT_EQ(done["links"]["doubling"], self + "/doubling.png");
+    auto p = client_->Get(self + "/doubling.png");
+    ASSERT_TRUE(p && p->status == 200);
+    EXPECT_EQ(p->get_header_value("Content-Type"), "image/png");
+    const json stats = json::parse(client_->Get(self + "/stats")->body);
+    EXPECT_TRUE(stats["doubling"]["doubly_refracting"].get<bool>());
+    EXPECT_GT(stats["doubling"]["table"]["median_mm"].get<double>(), 0);
+
+    json bad = smallJob();
+    bad["doubling"] = {{"picture_size", 4}};
+    expectProblem(submit(bad), 422, "doubling.picture_size");
+    bad["doubling"] = {{"loupe", "ten"}};
+    expectProblem(submit(bad), 422, "doubling.loupe");
+}
+
 TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
     json job = smallJob();
     job["render"] = {{"width", 24}, {"height", 24}, {"samples", 1}, {"map_photons", 2000}};

@@ -48,6 +48,7 @@ void forEachJobField(const std::function<void(const std::string&, const FieldInf
     forEachField(tiltSeriesSettingsSchema().fields(), "tilt_series", visit);
     forEachField(firePictureSettingsSchema().fields(), "fire_picture", visit);
     forEachField(polariscopeSettingsSchema().fields(), "polariscope", visit);
+    forEachField(doublingSettingsSchema().fields(), "doubling", visit);
 }
 
 json::json_pointer pointer(const std::string& path) {
@@ -211,6 +212,7 @@ TEST(SettingsSchema, JsonRoundTrip) {
     spec.settings.tiltSeries = TiltSeriesSettings{5, 0.5, 90};
     spec.settings.firePicture = FirePictureSettings{7, 35, 2.5, 0.1};
     spec.settings.polariscope = PolariscopeSettings{12, 5000, 64};
+    spec.settings.doubling = DoublingSettings{96, 15, 5};
     const json written = toJson(spec);
     const JobRequest back = JobRequest::fromJson(written);
     EXPECT_EQ(toJson(back), written);
@@ -246,6 +248,9 @@ TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
     cli::SettingsFlags polariscope;  // the polariscope command's
     polariscope.add(&app, polariscopeSettingsSchema().fields(), polariscopeSettingsSchema().write(PolariscopeSettings{}),
                     "polariscope");
+    cli::SettingsFlags doubling;  // the doubling command's
+    doubling.add(&app, doublingSettingsSchema().fields(), doublingSettingsSchema().write(DoublingSettings{}),
+                 "doubling");
     std::set<std::string> flags;
     forEachJobField([&](const std::string& path, const FieldInfo& f) {
         EXPECT_NE(app.get_option_no_throw(f.doc.flag), nullptr) << path;
@@ -374,6 +379,10 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     polariscope.fields = &polariscopeSettingsSchema().fields();
     keys.insert("polariscope");
     expectOpenApiAgrees(properties["polariscope"], polariscope, "polariscope");
+    FieldInfo doubling = settings::describe("doubling", FieldType::Object);
+    doubling.fields = &doublingSettingsSchema().fields();
+    keys.insert("doubling");
+    expectOpenApiAgrees(properties["doubling"], doubling, "doubling");
     EXPECT_EQ(documented, keys);
 }
 

@@ -135,6 +135,17 @@ TEST(JobCost, APolariscopeCostsItsPositionsPolarised) {
     EXPECT_EQ(estimateJobCost(s, unitRates(), 1).largest().field, "polariscope.photons");
 }
 
+TEST(JobCost, TheDoublingCostsThreeViewRaysAPixel) {
+    StudySettings s;
+    s.trace.photons = 1000;
+    s.trace.viewer.enabled = false;
+    s.doubling = DoublingSettings{2000};
+    const JobCost cost = estimateJobCost(s, unitRates(), 1);
+    EXPECT_EQ(cost.largest().name, "doubling");
+    EXPECT_EQ(cost.largest().field, "doubling.picture_size");
+    EXPECT_NEAR(partSeconds(cost, "doubling"), 3 * 2000.0 * 2000.0 * 1e-6 * kCostSafetyFactor, 1e-9);
+}
+
 // The detail of a refused job names its largest part, its size and the field that makes it large.
 TEST(JobCost, TheLargestPartIsNamedWithItsSizeAndField) {
     const CostRates rates = unitRates();

@@ -85,6 +85,7 @@ function buildJob(form) {
   }
   if (form.elements['fire.enabled'].checked) job.fire = { enabled: true };
   if (form.elements.polariscope.checked) job.polariscope = {};
+  if (form.elements.doubling.checked) job.doubling = {};
   job.max_bounces = readNumber(form, 'max_bounces', errors);
   if (form.elements.render.checked) {
     job.render = {

@@ -174,6 +174,15 @@ function polariscopeText(p) {
   return `Polariscope: dark at ${p.dark_angles_deg.map((a) => `${a}°`).join(', ')} of a turn: doubly refracting`;
 }
 
+// The doubling measured through the table, or why the stone shows one image.
+function doublingText(d) {
+  if (!d.doubly_refracting) return `Doubling: none, ${d.traced_as}`;
+  const t = d.table;
+  return `Doubling: through the table ${t.median_mm.toFixed(3)} mm (quartiles ${t.quartiles_mm.map((q) => q.toFixed(3)).join('–')} mm), `
+    + `${(100 * t.median_share_of_diameter).toFixed(2)} % of the girdle, ${t.median_arcmin.toFixed(1)}′ through a ${d.loupe}× loupe; `
+    + `through the whole crown ${d.crown.median_mm.toFixed(3)} mm; seen ${d.view_to_axis_deg.toFixed(0)}° from the optic axis`;
+}
+
 // A picture as a link to itself, which opens it at full size.
 function zoomable(src, alt) {
   return h('a', { href: src, target: '_blank', rel: 'noopener', class: 'zoom', title: 'Open the picture at full size' },
@@ -181,9 +190,9 @@ function zoomable(src, alt) {
 }
 
 // A job's viewer figures: the ASET picture with its shares, the tilt series' animation with its
-// scintillation and its chart, the polariscope's animation and chart; none when the job asked for none. With
-// `tiltRange` ([lo, hi] in percent, the comparison's common range) the chart is drawn on the page on that
-// range instead of tilt.png's own.
+// scintillation and its chart, the polariscope's animation and chart, the doubling's face-up view; none when
+// the job asked for none. With `tiltRange` ([lo, hi] in percent, the comparison's common range) the chart is
+// drawn on the page on that range instead of tilt.png's own.
 export function viewerFigures(job, stats, name = '', tiltRange = null) {
   const links = job.links || {};
   const aset = stats.aset;
@@ -211,6 +220,9 @@ export function viewerFigures(job, stats, name = '', tiltRange = null) {
       stats.polariscope ? h('figcaption', {}, polariscopeText(stats.polariscope)) : null) : null,
     links.polariscope_chart ? h('figure', { class: 'viewer-polariscope-chart' },
       zoomable(links.polariscope_chart, `Light through crossed polarisers against the turntable's angle${name ? `, ${name}` : ''}`)) : null,
+    links.doubling ? h('figure', { class: 'viewer-doubling' },
+      zoomable(links.doubling, `The stone${name ? ` (${name})` : ''} face-up with its pavilion's edges through each wave`),
+      stats.doubling ? h('figcaption', {}, doublingText(stats.doubling)) : null) : null,
   ].filter(Boolean);
 }
 

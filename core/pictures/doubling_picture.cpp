@@ -1,0 +1,114 @@
+#include "pictures/doubling_picture.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "util/number_text.h"
+
+namespace facetlight {
+namespace {
+
+constexpr int kTitleHeight = 68;
+constexpr int kLegendRow = 22;
+const Rgb kInk{0.1f, 0.1f, 0.1f};
+const Rgb kOrdinary{0.1f, 0.3f, 0.95f};
+const Rgb kExtraordinary{0.95f, 0.35f, 0.05f};
+const Rgb kBoth{0.45f, 0.1f, 0.55f};
+const Rgb kCrownEdge{0.35f, 0.35f, 0.35f};
+
+std::string mm(double v) {
+    return formatNumber(v < 0.1 ? "%.3f" : "%.2f", v);
+}
+
+}  // namespace
+
+std::string doublingTitle(const std::string& stoneName, const TraceSettings& settings) {
+    return "Doubling: " + stoneName + ", " + settings.material + ", optic axis " +
+           formatNumber("%g", settings.opticAxis.tiltDeg) + " deg from the table's normal toward " +
+           formatNumber("%g", settings.opticAxis.azimuthDeg) + " deg";
+}
+
+std::string doublingSummary(const Doubling& d) {
+    if (!d.doublyRefracting) return "no doubling: " + d.tracedAs;
+    const DoublingSpread& t = d.table;
+    return "through the table: median " + mm(t.medianMm) + " mm (quartiles " + mm(t.lowMm) + "-" +
+           mm(t.highMm) + "), " + formatNumber("%.2f", 100 * d.shareOfDiameter(t.medianMm)) +
+           " % of the girdle, " + formatNumber("%.1f", d.arcMinutes(t.medianMm)) + " arcmin through a " +
+           formatNumber("%g", d.loupe) + "x loupe; through the whole crown: median " + mm(d.crown.medianMm) +
+           " mm (quartiles " + mm(d.crown.lowMm) + "-" + mm(d.crown.highMm) + "), seen " +
+           formatNumber("%.0f", d.viewToAxisDeg) + " deg from the optic axis";
+}
+
+Image doublingPicture(const Doubling& d, const std::string& title) {
+    const int n = d.size, s = std::max(1, 480 / std::max(n, 1)), side = n * s;
+    const int width = std::max(side + 20, 720);
+    Image image(width, kTitleHeight + side + 12 + 4 * kLegendRow, {1, 1, 1});
+    const int left = (width - side) / 2, top = kTitleHeight;
+    auto at = [&](const std::vector<int32_t>& v, int x, int y) {
+        return v[size_t(y) * size_t(n) + size_t(x)];
+    };
+    // An edge where a pixel's facet differs from its right or lower neighbour's, both on the stone.
+    auto edge = [&](const std::vector<int32_t>& v, int x, int y) {
+        if (at(d.entry, x, y) < 0) return false;
+        const bool right = x + 1 < n && at(d.entry, x + 1, y) >= 0 && at(v, x + 1, y) != at(v, x, y);
+        const bool down = y + 1 < n && at(d.entry, x, y + 1) >= 0 && at(v, x, y + 1) != at(v, x, y);
+        return right || down;
+    };
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const int entry = at(d.entry, x, y);
+            if (entry < 0) continue;
+            Rgb c{0.78f, 0.78f, 0.78f};
+            const bool o = edge(d.ordinary, x, y), e = edge(d.extraordinary, x, y);
+            if (o && e) {
+                c = kBoth;
+            } else if (o) {
+                c = kOrdinary;
+            } else if (e) {
+                c = kExtraordinary;
+            } else if (edge(d.entry, x, y)) {
+                c = kCrownEdge;
+            } else if (at(d.ordinary, x, y) < 0) {
+                c = {0.62f, 0.62f, 0.62f};  // the ordinary wave meets the girdle or the crown first
+            }
+            for (int dy = 0; dy < s; ++dy)
+                for (int dx = 0; dx < s; ++dx) image.at(left + x * s + dx, top + y * s + dy) = c;
+        }
+    // The title, then the summary at its "; " on two lines, each as large as fits.
+    const std::string summary = doublingSummary(d);
+    const size_t cut = summary.find("; ");
+    const std::string lines[3] = {title, summary.substr(0, cut),
+                                  cut == std::string::npos ? "" : summary.substr(cut + 2)};
+    for (int k = 0; k < 3; ++k) {
+        const double scale =
+            std::min(k == 0 ? 2.0 : 1.5, (width - 10) / std::max(1.0, textWidth(lines[k], 1)));
+        drawText(image, width / 2.0, k == 0 ? 6 : 14 + 16.0 * k, lines[k], scale, kInk, Align::Center);
+    }
+
+    // A scale bar of a round length about a quarter of the view.
+    const double span = 2 * d.halfWidthMm, pixelsPerMm = side / span;
+    double bar = 0.1;
+    for (double b : {0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0})
+        if (b <= 0.3 * span) bar = b;
+    const double y0 = top + side + 10;
+    drawLine(image, {10, y0 + 8}, {10 + bar * pixelsPerMm, y0 + 8}, 3, kInk);
+    drawLine(image, {10, y0 + 2}, {10, y0 + 14}, 1.5, kInk);
+    drawLine(image, {10 + bar * pixelsPerMm, y0 + 2}, {10 + bar * pixelsPerMm, y0 + 14}, 1.5, kInk);
+    drawText(image, 18 + bar * pixelsPerMm, y0 + 1,
+             formatNumber("%g", bar) + " mm (stone " + formatNumber("%g", d.sizeMm) + " mm across)", 2, kInk);
+    const std::pair<Rgb, std::string> legend[3] = {
+        {kOrdinary, "pavilion edges seen through the ordinary wave (n_o " + formatNumber("%.4f", d.nO) + ")"},
+        {kExtraordinary,
+         "pavilion edges seen through the extraordinary wave (n_e " + formatNumber("%.4f", d.nE) + ")"},
+        {kCrownEdge, "crown facet outlines (purple: both images on one pixel)"}};
+    for (int k = 0; k < 3; ++k) {
+        const double y = y0 + (k + 1) * kLegendRow;
+        const Point2 box[4] = {Point2{10, y}, Point2{26, y}, Point2{26, y + 16}, Point2{10, y + 16}};
+        fillPolygon(image, box, legend[k].first);
+        drawPolyline(image, box, true, 1, kInk);
+        drawText(image, 34, y + 3, legend[k].second, 1.5, kInk);
+    }
+    return image;
+}
+
+}  // namespace facetlight
