@@ -92,10 +92,12 @@ class SettingsFlags {
             std::string pointer = "/" + at;
             for (char& c : pointer) c = c == '.' ? '/' : c;
             CLI::Option* option = nullptr;
+            const std::string names =
+                f.doc.formerFlag.empty() ? f.doc.flag : f.doc.flag + "," + f.doc.formerFlag;
             if (f.type == settings::FieldType::Boolean) {
-                option = cmd->add_flag(f.doc.flag)->description(help(f));
+                option = cmd->add_flag(names)->description(help(f));
             } else {
-                option = cmd->add_option(f.doc.flag)->description(help(f));
+                option = cmd->add_option(names)->description(help(f));
                 if (f.type == settings::FieldType::Vec3) option->expected(3);
                 if (const std::string d = text(defaults.at(f.key)); !d.empty()) option->default_str(d);
             }

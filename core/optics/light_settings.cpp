@@ -17,7 +17,10 @@ const Schema<LightSettings>& lightSettingsSchema() {
             vec3("direction", &LightSettings::direction, true,
                  {"--light-direction", "Collimated: direction of travel of the light (x y z)"}),
             number("tilt_deg", &LightSettings::tiltDeg, {.lo = -90, .hi = 90},
-                   {"--tilt", "Tilt of the stone about the x axis", "degrees"}),
+                   {"--stone-tilt",
+                    "Tilt of the stone about the x axis, the light kept still (--tilt-series rocks it in an "
+                    "animation instead)",
+                    "degrees", "--tilt"}),
             number("head_shadow_deg", &LightSettings::headShadowDeg, {.lo = 0, .hi = 90, .openHi = true},
                    {"--head-shadow", "Hemisphere: half-angle of the viewer's cone removed", "degrees"}),
             choice("sky", &LightSettings::sky, kSkyNames,
@@ -30,7 +33,7 @@ const Schema<LightSettings>& lightSettingsSchema() {
                            {.lo = 0, .hi = 180, .openHi = true},
                            {"--polarizer",
                             "A linear polariser over the light, its axis this far from the stone's x axis "
-                            "(needs --polarization on)",
+                            "(not with --polarization off)",
                             "degrees"}),
         },
         // No stone reaches beyond kMaxMeshCoordinate (a light at 1e308 "succeeded" with no photon hitting);

@@ -32,7 +32,7 @@ const Schema<TiltSeriesSettings>& tiltSeriesSettingsSchema() {
                 {"--tilt-series",
                  "Tilt series (off unless a --tilt-... flag is given): rock the stone from -DEG to +DEG in "
                  "ASET views: tilt.webp (animation), tilt.png (light return against tilt) and the "
-                 "scintillation",
+                 "scintillation (--stone-tilt tilts the stone itself for the whole study)",
                  "degrees"}),
             number("step_deg", &TiltSeriesSettings::stepDeg, {.lo = 0, .hi = kMaxTiltDeg, .openLo = true},
                    {"--tilt-step", "Tilt series: the step between frames", "degrees"}),

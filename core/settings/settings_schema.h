@@ -31,12 +31,16 @@ struct NumberRange {
 // What a table row says about its field, apart from the struct holding it.
 struct Doc {
     Doc() = default;
-    Doc(std::string flag, std::string help, std::string unit = "")
-        : flag(std::move(flag)), help(std::move(help)), unit(std::move(unit)) {}
+    Doc(std::string flag, std::string help, std::string unit = "", std::string formerFlag = "")
+        : flag(std::move(flag)),
+          help(std::move(help)),
+          unit(std::move(unit)),
+          formerFlag(std::move(formerFlag)) {}
 
-    std::string flag;  // the CLI flag, e.g. "--max-bounces"; a Boolean's "--no-..." flag sets it false
-    std::string help;  // CLI help
-    std::string unit;  // e.g. "degrees"; empty: none
+    std::string flag;        // the CLI flag, e.g. "--max-bounces"; a Boolean's "--no-..." flag sets it false
+    std::string help;        // CLI help
+    std::string unit;        // e.g. "degrees"; empty: none
+    std::string formerFlag;  // an earlier name the CLI still accepts, so that old command lines keep working
 };
 
 struct FieldInfo {

@@ -39,14 +39,15 @@ std::string pixels(const RenderSettings& r) {
     return std::to_string(r.width) + "x" + std::to_string(r.height) + " pixels";
 }
 
-// Polarised photons are walked one at a time, and a doubly refracting stone solves each facet's waves: 4.3x and
-// 30x an unpolarised trace of the shipped brilliant (docs/performance.md, "Polarised and birefringent
-// tracing", bench_trace's PolarizedVsPlain), the calibration being unpolarised.
+// The calibration traces polarised, the default (cost_calibration.cpp); an unpolarised one takes about as
+// long (0.8-1.04x its time, docs/performance.md, "Polarised and birefringent tracing"), and a doubly
+// refracting stone solves each facet's waves one photon at a time: about 30x (bench_trace's
+// PolarizedVsPlain).
 double polarizationFactor(const TraceSettings& t) {
     if (t.polarization == PolarizationMode::Off) return 1;
     const bool uniaxial = !t.constantIndex && t.material != "auto" &&
                           Material::byName(t.material).optic() == Optic::Uniaxial;
-    return uniaxial ? 30 : 4.3;
+    return uniaxial ? 30 : 1;
 }
 
 // A trace of `photons` photons (with the fire trace when enabled): every job's, and each sweep point's.

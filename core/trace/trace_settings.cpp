@@ -60,8 +60,9 @@ const Schema<TraceSettings>& traceSettingsSchema() {
                   {"--max-bounces", "Internal reflections before a photon counts as trapped"}),
             choice("polarization", &TraceSettings::polarization, kPolarizationNames,
                    {"--polarization",
-                    "off: each facet reflects the unpolarised Fresnel average; on: each photon carries its "
-                    "polarisation (Stokes vector) through every facet"}),
+                    "on (the default): each photon carries its polarisation (Stokes vector) through every "
+                    "facet; "
+                    "off: each facet reflects the unpolarised Fresnel average"}),
             choice("intersector", inherited<TraceSettings>(&TraceSettings::intersector), kIntersectorNames,
                    {"--intersector", "Ray-stone intersection"}),
             object("light", inherited<TraceSettings>(&TraceSettings::light), lightSettingsSchema()),

@@ -32,11 +32,11 @@ TraceSettings diamond() {
     return s;
 }
 
-// Unpolarised Fresnel reflectance from air into index n at incidence `theta` (optics.md), with Snell's law.
-double reflectance(double n, double theta) {
+// Fresnel reflectances (s, p) from air into index n at incidence `theta` (optics.md), with Snell's law.
+std::pair<double, double> reflectances(double n, double theta) {
     const double ci = std::cos(theta), ct = std::sqrt(1 - std::pow(std::sin(theta) / n, 2));
     const double rs = (ci - n * ct) / (ci + n * ct), rp = (ct - n * ci) / (ct + n * ci);
-    return (rs * rs + rp * rp) / 2;
+    return {rs * rs, rp * rp};
 }
 
 double share(const AsetView& v, AsetClass c) {
@@ -49,31 +49,43 @@ double share(const AsetView& v, AsetClass c) {
 // crosses, and each crossing it leaves through the bottom (leakage) with 1 - R or comes back up with R, where
 // it leaves through the top, parallel to the first reflection, with 1 - R. Summed: 2R / (1 + R) of the rays
 // show the sky in the mirror direction and (1 - R) / (1 + R) leak, R the Fresnel reflectance at the view's
-// incidence. Face-up the mirror direction is the viewer's head; at 60 deg elevation bright light, at 30 deg
-// low light.
+// incidence. Unpolarised, R is the mean of Rs and Rp; polarised, the s and p parts never mix between the
+// slab's parallel faces, so the share is the mean of each part's own 2R / (1 + R). Face-up the mirror
+// direction is the viewer's head; at 60 deg elevation bright light, at 30 deg low light.
 TEST(AsetView, SlabShowsItsMirrorDirectionByFresnelAndSnell) {
     const Stone slab = box(20, 20, 1);
-    const Scene scene(slab, diamond());
-    const TraceBase trace(scene, diamond());
     const double n = Material::byName("diamond").indexD();
     const struct {
         double elevation;
         AsetClass mirror;
     } views[] = {{90, AsetClass::Head}, {60, AsetClass::Bright}, {30, AsetClass::Low}};
-    for (const auto& v : views) {
-        CameraSettings camera;
-        camera.elevationDeg = v.elevation;
-        camera.distance = 10;  // 200 slab thicknesses away, 2 deg wide: the rays within 1 deg of each other
-        camera.fovDeg = 2;
-        AsetSettings settings;
-        settings.samples = 16;
-        const AsetView view = asetView(trace, camera, 48, 48, settings, 2, 11);
-        ASSERT_EQ(view.stoneRays(), 48u * 48u * 16u) << "every ray meets the slab";
-        const double r = reflectance(n, radians(90 - v.elevation));
-        const AsetShare mirror = view.share(v.mirror);
-        EXPECT_NEAR(mirror.share, 2 * r / (1 + r), 4 * mirror.standardError + 1e-3) << v.elevation;
-        EXPECT_NEAR(share(view, AsetClass::Leakage), (1 - r) / (1 + r), 4 * mirror.standardError + 1e-3);
-        EXPECT_NEAR(mirror.share + share(view, AsetClass::Leakage), 1.0, 1e-12);
+    for (const PolarizationMode mode : {PolarizationMode::Off, PolarizationMode::On}) {
+        TraceSettings settings = diamond();
+        settings.polarization = mode;
+        const Scene scene(slab, settings);
+        const TraceBase trace(scene, settings);
+        for (const auto& v : views) {
+            CameraSettings camera;
+            camera.elevationDeg = v.elevation;
+            camera.distance =
+                10;  // 200 slab thicknesses away, 2 deg wide: the rays within 1 deg of each other
+            camera.fovDeg = 2;
+            AsetSettings aset;
+            aset.samples = 16;
+            const AsetView view = asetView(trace, camera, 48, 48, aset, 2, 11);
+            ASSERT_EQ(view.stoneRays(), 48u * 48u * 16u) << "every ray meets the slab";
+            const auto [rs, rp] = reflectances(n, radians(90 - v.elevation));
+            const auto mirrored = [](double r) { return 2 * r / (1 + r); };
+            const double expected =
+                mode == PolarizationMode::Off ? mirrored((rs + rp) / 2) : (mirrored(rs) + mirrored(rp)) / 2;
+            const AsetShare mirror = view.share(v.mirror);
+            const std::string where =
+                std::string(kPolarizationNames.name(mode)) + " at " + std::to_string(v.elevation) + " deg";
+            EXPECT_NEAR(mirror.share, expected, 4 * mirror.standardError + 1e-3) << where;
+            EXPECT_NEAR(share(view, AsetClass::Leakage), 1 - expected, 4 * mirror.standardError + 1e-3)
+                << where;
+            EXPECT_NEAR(mirror.share + share(view, AsetClass::Leakage), 1.0, 1e-12);
+        }
     }
 }
 
@@ -90,7 +102,7 @@ TEST(AsetView, CubeLeaksThroughItsBottom) {
     const AsetView view = asetView(trace, CameraSettings{}, side, side, settings, 2, 3);
     const double area = std::pow(1 / (2 * 3.5 * std::tan(radians(10))), 2);
     EXPECT_NEAR(double(view.stoneRays()) / (side * side * settings.samples), area, 0.01);
-    const double r = 0.1720;
+    const double r = 0.1720;  // s and p alike at normal incidence: polarised or not
     const AsetShare leakage = view.share(AsetClass::Leakage);
     EXPECT_NEAR(leakage.share, (1 - r) / (1 + r), 4 * leakage.standardError + 1e-3);
     EXPECT_NEAR(share(view, AsetClass::Head), 2 * r / (1 + r), 4 * leakage.standardError + 1e-3);

@@ -152,7 +152,7 @@ TEST(PolarizedTrace, PolarisedAndUnpolarisedTracesDiffer) {
 TEST(PolarizedTrace, PolariserNeedsPolarisedTracing) {
     test::expectError(
         [] {
-            TraceSettings::fromJson({{"light", {{"polarizer_deg", 30}}}});
+            TraceSettings::fromJson({{"polarization", "off"}, {"light", {{"polarizer_deg", 30}}}});
         },
         "light.polarizer_deg");
     test::expectError([] { TraceSettings::fromJson({{"polarization", "partly"}}); }, "polarization");
@@ -161,8 +161,7 @@ TEST(PolarizedTrace, PolariserNeedsPolarisedTracing) {
             TraceSettings::fromJson({{"polarization", "on"}, {"light", {{"polarizer_deg", 180}}}});
         },
         "light.polarizer_deg");
-    const TraceSettings s =
-        TraceSettings::fromJson({{"polarization", "on"}, {"light", {{"polarizer_deg", 30}}}});
+    const TraceSettings s = TraceSettings::fromJson({{"light", {{"polarizer_deg", 30}}}});  // on by default
     EXPECT_EQ(s.polarization, PolarizationMode::On);
     EXPECT_EQ(*s.light.polarizerDeg, 30);
     EXPECT_EQ(toJson(s)["light"]["polarizer_deg"], 30);
