@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -60,6 +61,7 @@ std::vector<Route> Api::routes() {
         {"GET", "/api/defaults"},
         {"GET", "/api/jobs"},
         {"POST", "/api/jobs"},
+        {"POST", "/api/jobs/estimate"},
         {"GET", "/api/jobs/{id}"},
         {"DELETE", "/api/jobs/{id}"},
         {"POST", "/api/jobs/{id}/cancel"},
@@ -123,32 +125,30 @@ json Api::storageJson(bool& writable) const {
     return doc;
 }
 
-void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
-    BodyCollector body(limits_, req);
-    body.read(reader);
-    if (body.tooLarge())
-        return problem(res, 413, "the job is larger than " + std::to_string(body.limit()) + " bytes");
-    if (!body.complete()) return problem(res, 400, kShortBody);
-    if (refuseWhenStorageLow(res)) return;
+std::optional<JobRequest> Api::checkJob(const std::string& body, Response& res, bool enforceBudget) {
     json j;
     try {
-        j = parseUntrustedJson(body.bytes(), "the body");
+        j = parseUntrustedJson(body, "the body");
     } catch (const Error& e) {
-        return problem(res, 400, e.what());
+        problem(res, 400, e.what());
+        return std::nullopt;
     }
-    if (!j.is_object()) return problem(res, 400, "the job must be a JSON object");
+    if (!j.is_object()) {
+        problem(res, 400, "the job must be a JSON object");
+        return std::nullopt;
+    }
     JobRequest spec;
     try {
         spec = parseJobSpec(j, queue_.cores(), &limits_);
         // Before anything is built or stored: a job that would hold the worker too long (issue 31).
-        queue_.budget().check(spec.settings, queue_.threadsFor(spec));
+        if (enforceBudget) queue_.budget().check(spec.settings, queue_.threadsFor(spec));
     } catch (const Error& e) {
-        return problem(res, 422, e.what(), e.field());
+        problem(res, 422, e.what(), e.field());
+        return std::nullopt;
     }
     // A sweep's shape, and a design's (cut), were checked with them; the stone a job traces is built here, so
     // that what depends on it (a point light outside it) is refused now, not when the job runs.
     std::shared_ptr<const Stone> stone;
-    std::shared_lock meshInUse(meshUse_);
     try {
         // A sweep of a design or mesh file: its tiers and the request are checked once the file is found.
         if (spec.settings.sweep && !isLibraryShape(spec.mesh))
@@ -157,13 +157,27 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
             stone = spec.cut.empty() ? catalog_.resolve(spec.mesh)
                                      : std::make_shared<const Stone>(cutStone(spec, catalog_.shapeSource(spec.mesh)));
     } catch (const Error& e) {
-        return problem(res, 422, e.what(), e.field().empty() ? "mesh" : e.field());
+        problem(res, 422, e.what(), e.field().empty() ? "mesh" : e.field());
+        return std::nullopt;
     }
     try {
         if (stone) LightModel(spec.settings.trace.light, *stone);
     } catch (const Error& e) {
-        return problem(res, 422, e.what(), e.field().empty() ? "light" : e.field());
+        problem(res, 422, e.what(), e.field().empty() ? "light" : e.field());
+        return std::nullopt;
     }
+    return spec;
+}
+
+void Api::submitJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
+    BodyCollector body(limits_, req);
+    body.read(reader);
+    if (body.refuseIncomplete(res, "the job")) return;
+    if (refuseWhenStorageLow(res)) return;
+    std::shared_lock meshInUse(meshUse_);  // until the job is queued
+    std::optional<JobRequest> checked = checkJob(body.bytes(), res, true);
+    if (!checked) return;
+    JobRequest& spec = *checked;
     // Named here, where an upload's file name is known, so that the API and the page show one name.
     if (spec.name.empty()) spec.name = defaultJobName(spec, catalog_.designName(spec.mesh));
     JobRecord job;
@@ -184,6 +198,40 @@ void Api::submitJob(const Request& req, Response& res, const httplib::ContentRea
     }
     res.set_header("Location", jobPath(job.id));
     sendJson(res, 202, jobStatusJson(job, queue_));
+}
+
+// What a job would cost here, checked as a submission is but neither queued nor stored: the page shows it as
+// the form is edited, and a client learns whether the job would be refused before sending it.
+void Api::estimateJob(const Request& req, Response& res, const httplib::ContentReader& reader) {
+    BodyCollector body(limits_, req);
+    body.read(reader);
+    if (body.refuseIncomplete(res, "the job")) return;
+    std::optional<JobRequest> spec;
+    {
+        std::shared_lock meshInUse(meshUse_);
+        spec = checkJob(body.bytes(), res, false);
+    }
+    if (!spec) return;
+    const JobBudget& budget = queue_.budget();
+    const int threads = queue_.threadsFor(*spec);
+    const JobCost cost = budget.estimate(spec->settings, threads);
+    const auto seconds = [](double s) { return std::round(s * 100) / 100; };
+    const auto partJson = [&](const CostPart& part) {
+        json doc = {{"part", part.name}, {"size", part.size}, {"seconds", seconds(part.seconds)}};
+        if (!part.field.empty()) doc["field"] = part.field;
+        return doc;
+    };
+    json parts = json::array();
+    for (const CostPart& part : cost.parts) parts.push_back(partJson(part));
+    const std::string refusal = budget.refusal(cost, threads);
+    json doc = {{"estimate_s", seconds(cost.seconds)},
+                {"threads", threads},
+                {"max_job_seconds", budget.maxSeconds()},
+                {"largest", partJson(cost.largest())},
+                {"parts", std::move(parts)},
+                {"refused", !refusal.empty()}};
+    if (!refusal.empty()) doc["reason"] = refusal;
+    sendJson(res, 200, doc);
 }
 
 void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentReader& reader) {
@@ -210,9 +258,7 @@ void Api::uploadMesh(const Request& req, Response& res, const httplib::ContentRe
     } else {
         body.read(reader);
     }
-    if (body.tooLarge())
-        return problem(res, 413, "the upload is larger than " + std::to_string(body.limit()) + " bytes");
-    if (!body.complete()) return problem(res, 400, kShortBody);
+    if (body.refuseIncomplete(res, "the upload")) return;
     if (req.is_multipart_form_data() && files == 0)
         return problem(res, 422, "a multipart upload carries the mesh in a part named \"file\"", "file");
     if (refuseWhenStorageLow(res)) return;
@@ -420,6 +466,8 @@ void Api::install(httplib::Server& server, bool accessLog) {
     std::map<std::string, WithReader> withReader = {
         {"POST /api/jobs", [this](const Request& req, Response& res,
                                   const httplib::ContentReader& r) { submitJob(req, res, r); }},
+        {"POST /api/jobs/estimate", [this](const Request& req, Response& res,
+                                           const httplib::ContentReader& r) { estimateJob(req, res, r); }},
         {"POST /api/meshes", [this](const Request& req, Response& res,
                                     const httplib::ContentReader& r) { uploadMesh(req, res, r); }},
         // `curl -X POST` sends no Content-Length: a plain handler would wait out the read timeout for a body.
@@ -458,6 +506,7 @@ void Api::install(httplib::Server& server, bool accessLog) {
                        limits.maxUrlBytes,
                        [limits](const std::string& path) { return bodyLimit(limits, path); },
                        {{"POST /api/jobs", {kJsonType}},
+                        {"POST /api/jobs/estimate", {kJsonType}},
                         {"POST /api/meshes", {"application/octet-stream", "multipart/form-data"}}}};
     for (std::string host : allowedHosts_) {
         std::transform(host.begin(), host.end(), host.begin(),
@@ -480,9 +529,9 @@ void Api::install(httplib::Server& server, bool accessLog) {
     });
     server.set_error_handler(httplib::Server::HandlerWithResponse([](const Request&, Response& res) {
         if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
-        if (const HttpServer::HeadRefusal& head = HttpServer::headRefusal(); head.status != 0) {
+        if (const HttpServer::ReadRefusal& refused = HttpServer::readRefusal(); refused.status != 0) {
             res.set_header("Connection", "close");
-            problem(res, head.status, head.detail);
+            problem(res, refused.status, refused.detail);
             return httplib::Server::HandlerResponse::Handled;
         }
         problem(res, res.status,

@@ -3,6 +3,7 @@
 // the access log. Answers are written with problem.h (problem+json, RFC 9457), a job's status with
 // job_status.h, bodies read with request_body.h. Handlers only read and write the store and the queue; jobs
 // run on the queue's worker.
+#include <optional>
 #include <set>
 #include <shared_mutex>
 #include <string>
@@ -39,7 +40,13 @@ class Api {
     bool refuseWhenReadOnly(httplib::Response& res) const;    // true: answered 503
     // `writable`: false when nothing can be written (the disk has no room, or the store refuses writes).
     nlohmann::json storageJson(bool& writable) const;
+    // A job's body checked as a submission is, before anything is stored: 400 for a body that is not a JSON
+    // object, 422 naming the field at fault (a setting, the mesh, the light; the budget when
+    // `enforceBudget`). Nothing when `res` holds the refusal. The caller holds meshUse_ shared.
+    std::optional<JobRequest> checkJob(const std::string& body, httplib::Response& res, bool enforceBudget);
     void submitJob(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader);
+    void estimateJob(const httplib::Request& req, httplib::Response& res,
+                     const httplib::ContentReader& reader);
     void uploadMesh(const httplib::Request& req, httplib::Response& res,
                     const httplib::ContentReader& reader);
     void listJobs(const httplib::Request& req, httplib::Response& res);

@@ -25,8 +25,9 @@ using Clock = std::chrono::steady_clock;
 // Set while a response is written that must end its connection. httplib 0.11 writes "Connection: close" but
 // goes on reading: the unread body of a refused request would be taken for the next request.
 thread_local bool closeAfterResponse = false;
-// Set when the request's head passed its limits (ConnectionLimits::maxHeadBytes, maxHeaderLines).
-thread_local HttpServer::HeadRefusal headRefused;
+// Set when the request's head passed its limits (ConnectionLimits::maxHeadBytes, maxHeaderLines) or its body
+// came too slowly.
+thread_local HttpServer::ReadRefusal readRefused;
 
 // Threads added while every one is busy, up to a cap; they stay until shutdown. A connection that finds every
 // thread busy at the cap calls `saturated` with the number of connections waiting for a thread: each is
@@ -93,8 +94,9 @@ class GrowingThreadPool : public httplib::TaskQueue {
     bool stopping_ = false;
 };
 
+// Rounded up: a poll() that wakes before its deadline would take it for another (DeadlineStream::slowBody).
 int millisecondsUntil(Clock::time_point deadline) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()).count();
     return int(std::clamp<long long>(left, 0, 1 << 30));
 }
 
@@ -106,6 +108,10 @@ bool waitFor(int sock, short events, Clock::time_point deadline) {
         if (n > 0) return (p.revents & (events | POLLHUP | POLLERR)) != 0;
         if (n == 0 || errno != EINTR) return false;
     }
+}
+
+std::string wholeSeconds(Clock::duration d) {
+    return std::to_string(std::chrono::duration_cast<std::chrono::seconds>(d).count());
 }
 
 std::string peerAddress(int sock, int& port, bool local) {
@@ -122,7 +128,9 @@ std::string peerAddress(int sock, int& port, bool local) {
 }
 
 // httplib's SocketStream with a deadline for the request: reads wait for the sooner of the read timeout and
-// the deadline, so a request trickling in byte by byte ends when the deadline passes.
+// the deadline, so a request trickling in byte by byte ends when the deadline passes. Once the head has
+// arrived, the body's bytes must also keep up with ConnectionLimits::minBodyRate: a read waits no longer than
+// until the body falls behind it.
 class DeadlineStream : public httplib::Stream {
   public:
     DeadlineStream(HttpServer::Connection& connection, int sock, std::string peer, int peerPort,
@@ -141,21 +149,26 @@ class DeadlineStream : public httplib::Stream {
     void startRequest(Clock::time_point deadline) {
         deadline_ = deadline;
         inHead_ = true, lineEmpty_ = false, sawColon_ = false, headBytes_ = 0, headLines_ = 0;
-        headRefused = {};
+        bodyBytes_ = 0, timedOut_ = false;
+        readRefused = {};
     }
 
     bool is_readable() const override {
-        const auto now = Clock::now();
-        return now < deadline_ && waitFor(sock_, POLLIN, std::min(deadline_, now + readTimeout_));
+        const auto now = Clock::now(), until = readDeadline();
+        return now < until && waitFor(sock_, POLLIN, std::min(until, now + readTimeout_));
     }
     bool is_writable() const override { return waitFor(sock_, POLLOUT, Clock::now() + writeTimeout_); }
 
-    // A head past its limits or with a malformed line reads as the end of the connection: httplib answers
-    // 400, which the error handler makes the refusal's problem.
+    // A head past its limits or with a malformed line, and a body that stopped coming or came too slowly,
+    // read as the end of the connection: httplib answers 400 (a route reading its own body sees it stop
+    // short), which the error handler (or the route) makes the refusal's problem.
     ssize_t read(char* ptr, size_t size) override {
+        const bool inBody = !inHead_;
         const ssize_t n = readBytes(ptr, size);
-        if (n > 0) headRefused = checkHead(ptr, size_t(n));
-        if (headRefused.status == 0) return n;
+        if (n > 0 && inBody) bodyBytes_ += size_t(n);
+        if (n > 0 && !inBody) readRefused = checkHead(ptr, size_t(n));
+        if (n < 0 && inBody && timedOut_) readRefused = slowBody();
+        if (readRefused.status == 0) return n;
         closeAfterResponse = true;
         return -1;
     }
@@ -165,10 +178,12 @@ class DeadlineStream : public httplib::Stream {
         if (bufferBegin_ == bufferEnd_) {
             char* into = size < sizeof buffer_ ? buffer_ : ptr;
             const size_t most = size < sizeof buffer_ ? sizeof buffer_ : size;
-            if (Clock::now() >= deadline_) return -1;
+            timedOut_ = Clock::now() >= deadline_;
+            if (timedOut_) return -1;
             ssize_t n = recvRetrying(into, most, MSG_DONTWAIT);
             if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-                if (!is_readable()) return -1;
+                timedOut_ = !is_readable();
+                if (timedOut_) return -1;
                 n = recvRetrying(into, most, 0);
             }
             if (n <= 0 || size >= sizeof buffer_) return n;
@@ -204,11 +219,34 @@ class DeadlineStream : public httplib::Stream {
     bool hasBufferedBytes() const { return bufferBegin_ < bufferEnd_; }
 
   private:
+    // The body must have brought minBodyRate bytes a second since its grace period ended: with b bytes so
+    // far it falls behind at bodyStart + grace + b / rate.
+    Clock::time_point rateDeadline() const {
+        const auto behind = std::chrono::duration<double>(double(bodyBytes_) / double(limits_.minBodyRate));
+        return bodyStart_ + limits_.bodyGrace + std::chrono::duration_cast<Clock::duration>(behind);
+    }
+    Clock::time_point readDeadline() const {
+        return inHead_ || limits_.minBodyRate == 0 ? deadline_ : std::min(deadline_, rateDeadline());
+    }
+
+    // Why a read of the body timed out: the request's deadline, the rate, or the read timeout (no byte).
+    HttpServer::ReadRefusal slowBody() const {
+        const auto now = Clock::now();
+        if (now >= deadline_)
+            return {408, "the request took longer than " + wholeSeconds(limits_.requestTimeout) +
+                             " s to arrive (--request-timeout)"};
+        if (limits_.minBodyRate > 0 && now >= rateDeadline())
+            return {408, "the body came slower than " + std::to_string(limits_.minBodyRate) +
+                             " bytes/s (--min-body-rate): " + std::to_string(bodyBytes_) + " bytes in " +
+                             wholeSeconds(now - bodyStart_) + " s"};
+        return {408, "the body stopped coming: no byte for " + wholeSeconds(readTimeout_) + " s"};
+    }
+
     // Reads the head's bytes as they come, until the empty line that ends it: its size and lines within the
     // limits, and header lines httplib 0.11 would take or drop silently refused (issue 31): a NUL byte, a
     // line without a colon, white space before the colon (e.g. "Transfer-Encoding : chunked", which a proxy
     // in front may read as chunked while httplib does not).
-    HttpServer::HeadRefusal checkHead(const char* p, size_t n) {
+    HttpServer::ReadRefusal checkHead(const char* p, size_t n) {
         for (size_t i = 0; i < n && inHead_; ++i) {
             ++headBytes_;
             const char c = p[i];
@@ -219,7 +257,10 @@ class DeadlineStream : public httplib::Stream {
                     return {400, "header line " + std::to_string(headLines_) + " has no colon"};
                 ++headLines_;
                 inHead_ = !lineEmpty_;
-                if (!inHead_) connection_.enter(HttpServer::Phase::Busy);
+                if (!inHead_) {
+                    connection_.enter(HttpServer::Phase::Busy);
+                    bodyStart_ = Clock::now();
+                }
                 lineEmpty_ = true, sawColon_ = false;
                 continue;
             }
@@ -253,6 +294,9 @@ class DeadlineStream : public httplib::Stream {
     Clock::time_point deadline_ = Clock::time_point::max();
     bool inHead_ = true, lineEmpty_ = false, sawColon_ = false;
     size_t headBytes_ = 0, headLines_ = 0;
+    Clock::time_point bodyStart_;
+    size_t bodyBytes_ = 0;
+    bool timedOut_ = false;  // the last read failed on a deadline or the read timeout
     char buffer_[4096];
     size_t bufferBegin_ = 0, bufferEnd_ = 0;
 };
@@ -279,14 +323,15 @@ HttpServer::HttpServer(const ConnectionLimits& limits) : limits_(limits) {
     };
     set_keep_alive_max_count(std::max<size_t>(1, limits.keepAliveRequests));
     // 400, 413 and 414 also come from httplib's own parser, which leaves the rest of the request unread.
+    // A refused read (a slow body's 408) has set it already.
     set_post_routing_handler([](const httplib::Request&, httplib::Response& res) {
-        closeAfterResponse = res.get_header_value("Connection") == "close" || res.status == 400 ||
-                             res.status == 413 || res.status == 414;
+        closeAfterResponse = closeAfterResponse || res.get_header_value("Connection") == "close" ||
+                             res.status == 400 || res.status == 413 || res.status == 414;
     });
 }
 
-const HttpServer::HeadRefusal& HttpServer::headRefusal() {
-    return headRefused;
+const HttpServer::ReadRefusal& HttpServer::readRefusal() {
+    return readRefused;
 }
 
 bool HttpServer::bind(const std::string& host, int port) {

@@ -6,7 +6,8 @@
 // raised from 5. It reads sockets with poll(), so descriptors above 1023 are safe too. When every thread is
 // busy at the cap, a new connection ends the one that has waited longest for its request's head (idle between
 // requests, or trickling its head in): slow clients from many addresses, each under the per-peer cap, cannot
-// hold every thread (issue 31, item 3).
+// hold every thread (issue 31, item 3). A body must keep coming at ConnectionLimits::minBodyRate once its
+// first seconds are past, else 408: a client trickling its body held a thread until the request's deadline.
 #include <atomic>
 #include <chrono>
 #include <cstddef>
@@ -29,6 +30,11 @@ struct ConnectionLimits {
     // A request's head (its line and headers): 0.11 kept every header line it was sent, 110 MB a connection.
     size_t maxHeadBytes = 64 << 10;
     size_t maxHeaderLines = 100;  // Host, Content-Type and the others, each a line
+    // A body must have brought minBodyRate x (t - bodyGrace) bytes t after its head ended, else 408 (0: no
+    // minimum). 1 KiB/s takes a 1 MiB job in 17 min: no honest client is that slow; a few bytes a second, as
+    // Kestrel's MinRequestBodyDataRate (240 B/s after 5 s) bounds it, are an attack.
+    size_t minBodyRate = 1024;  // bytes per second
+    std::chrono::milliseconds bodyGrace{2000};
 };
 
 class HttpServer : public httplib::Server {
@@ -39,13 +45,16 @@ class HttpServer : public httplib::Server {
     bool bind(const std::string& host, int port);
     int bindToAnyPort(const std::string& host);
 
-    // Why the request this thread is answering was cut off in its head (status 0: it was not), for the error
-    // handler, which httplib calls with a plain 400: 431 past the head's limits, 400 for a malformed line.
-    struct HeadRefusal {
+    // Why the request this thread is answering was cut off while it was read (status 0: it was not): in its
+    // head, 431 past the head's limits, 400 for a malformed line; in its body, 408 when it came too slowly
+    // (below minBodyRate, no byte for the read timeout, or past the request's deadline). For the error
+    // handler, which httplib calls with a plain 400, and for the routes that read their own body
+    // (request_body.h).
+    struct ReadRefusal {
         int status = 0;
         std::string detail;
     };
-    static const HeadRefusal& headRefusal();
+    static const ReadRefusal& readRefusal();
 
     // Where a connection is, for the choice of one to end when every thread is busy: waiting for a request
     // (Idle) or for the rest of its head (Head) may be ended; reading a body, answering or writing (Busy)

@@ -16,17 +16,19 @@ JobCost JobBudget::estimate(const StudySettings& settings, int threads) const {
     return estimateJobCost(settings, rates_, threads);
 }
 
+std::string JobBudget::refusal(const JobCost& cost, int threads) const {
+    if (maxSeconds_ <= 0 || cost.seconds <= maxSeconds_) return {};
+    const CostPart& part = cost.largest();
+    return part.name + ": about " + formatSeconds(part.seconds) + " s of the " + formatSeconds(maxSeconds_) +
+           " s a job may take on this server (" + part.size + "); the whole job about " +
+           formatSeconds(cost.seconds) + " s with " + std::to_string(threads) +
+           (threads == 1 ? " thread" : " threads") + (part.field.empty() ? "" : ": lower " + part.field);
+}
+
 void JobBudget::check(const StudySettings& settings, int threads) const {
     if (maxSeconds_ <= 0) return;
     const JobCost cost = estimate(settings, threads);
-    if (cost.seconds <= maxSeconds_) return;
-    const CostPart& part = cost.largest();
-    throw Error(part.field, part.name + ": about " + formatSeconds(part.seconds) + " s of the " +
-                                formatSeconds(maxSeconds_) + " s a job may take on this server (" +
-                                part.size + "); the whole job about " + formatSeconds(cost.seconds) +
-                                " s with " + std::to_string(threads) +
-                                (threads == 1 ? " thread" : " threads") +
-                                (part.field.empty() ? "" : ": lower " + part.field));
+    if (const std::string why = refusal(cost, threads); !why.empty()) throw Error(cost.largest().field, why);
 }
 
 std::string JobBudget::overrun(double ranSeconds) const {

@@ -17,8 +17,11 @@ class JobBudget {
     double maxSeconds() const { return maxSeconds_; }
     // The job's cost with `threads` workers, from this machine's rates.
     JobCost estimate(const StudySettings& settings, int threads) const;
-    // Throws Error naming the largest part's field when the job's cost passes the limit: "render: about
-    // 5400 s of the 600 s a job may take on this server (2048x2048 pixels x 256 samples x depth 64); ...".
+    // Why a job of this cost with `threads` workers is refused, or empty when it is within the limit:
+    // "render: about 5400 s of the 600 s a job may take on this server (2048x2048 pixels x 256 samples x
+    // depth 64); the whole job about 5600 s with 2 threads: lower render.samples".
+    std::string refusal(const JobCost& cost, int threads) const;
+    // Throws Error with the refusal, naming the largest part's field, when the job's cost passes the limit.
     void check(const StudySettings& settings, int threads) const;
     // How long a job may run before it is stopped: twice the limit, a margin as long as the limit for an
     // estimate that fell short (0: no limit).

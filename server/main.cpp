@@ -73,6 +73,11 @@ int main(int argc, char** argv) {
                    "Seconds a request (line, headers and body) may take to arrive")
         ->capture_default_str()
         ->check(CLI::Range(0.1, 3600.0));
+    app.add_option("--min-body-rate", config.http.minBodyRate,
+                   "Bytes a second a request body must keep coming at after its first 2 s; slower gets 408 "
+                   "(0: no minimum)")
+        ->capture_default_str()
+        ->check(CLI::Range(size_t(0), size_t(1) << 30));
     app.add_option("--cores", config.cores, "Cap on a job's threads (0: all the machine's cores)")
         ->capture_default_str()
         ->check(CLI::Range(0, 1024));

@@ -1,5 +1,7 @@
 #include "request_body.h"
 
+#include "http_server.h"
+#include "problem.h"
 #include "util/error.h"
 
 namespace facetlight::server {
@@ -26,6 +28,20 @@ void BodyCollector::readMultipart(const httplib::ContentReader& reader,
                                   const std::function<bool()>& wanted) {
     complete_ =
         reader(header, [&](const char* data, size_t n) { return wanted() ? (*this)(data, n) : true; });
+}
+
+bool BodyCollector::refuseIncomplete(httplib::Response& res, const std::string& what) const {
+    if (tooLarge_) {
+        problem(res, 413, what + " is larger than " + std::to_string(limit_) + " bytes");
+    } else if (const HttpServer::ReadRefusal& refused = HttpServer::readRefusal(); refused.status != 0) {
+        problem(res, refused.status, refused.detail + "; nothing was stored");
+    } else if (!complete_) {
+        // The client went away, or lied about the length.
+        problem(res, 400, "the body ended before its Content-Length; nothing was stored");
+    } else {
+        return false;
+    }
+    return true;
 }
 
 int64_t queryInt(const httplib::Request& req, const std::string& name, int64_t fallback, int64_t lo,

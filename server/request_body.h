@@ -26,9 +26,10 @@ class BodyCollector {
     void read(const httplib::ContentReader& reader);
     void readMultipart(const httplib::ContentReader& reader, const httplib::MultipartContentHeader& header,
                        const std::function<bool()>& wanted);
-    bool tooLarge() const { return tooLarge_; }
-    bool complete() const { return complete_; }
-    size_t limit() const { return limit_; }
+    // Answers a body that was not read whole, `what` naming it ("the job"): 413 past its limit, 408 when it
+    // came too slowly (HttpServer::readRefusal), else 400 (it stopped short of its Content-Length). False
+    // when the body is whole and nothing was answered.
+    bool refuseIncomplete(httplib::Response& res, const std::string& what) const;
     std::string& bytes() { return bytes_; }
 
   private:
@@ -37,9 +38,6 @@ class BodyCollector {
     bool tooLarge_ = false;
     bool complete_ = false;
 };
-
-// A body that stopped short of its Content-Length (the client went away, or lied): nothing is stored.
-constexpr const char* kShortBody = "the body ended before its Content-Length; nothing was stored";
 
 // A query parameter as an integer in [lo, hi]; `fallback` when absent. Throws Error naming it.
 int64_t queryInt(const httplib::Request& req, const std::string& name, int64_t fallback, int64_t lo,

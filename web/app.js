@@ -6,7 +6,7 @@ import { followApiLinksWithToken } from './js/api.js';
 import { showCompare } from './js/compare.js';
 import { JOBS_PER_PAGE } from './js/constants.js';
 import { $, clearFieldError, h } from './js/dom.js';
-import { loadFormDefaults, submitJob, syncFormControls } from './js/form.js';
+import { loadFormDefaults, scheduleEstimate, submitJob, syncFormControls } from './js/form.js';
 import { jobsView, refreshHealth, refreshJobs } from './js/jobs.js';
 import { describeMesh, loadMeshes, uploadMesh } from './js/meshes.js';
 import { resultView, showResult } from './js/result.js';
@@ -52,7 +52,10 @@ async function start() {
   form.addEventListener('input', (ev) => {
     const field = ev.target.closest('.field');
     if (field && field.dataset.field) clearFieldError(field.dataset.field);
+    scheduleEstimate();
   });
+  form.addEventListener('change', scheduleEstimate);
+  document.addEventListener('meshes-loaded', scheduleEstimate);
   form.elements['light.model'].addEventListener('change', syncFormControls);
   form.elements.render.addEventListener('change', syncFormControls);
   form.elements.tilt_series.addEventListener('change', syncFormControls);

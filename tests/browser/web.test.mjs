@@ -1012,6 +1012,95 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.match(text, /Polarisation\s*off: each facet reflects the unpolarised Fresnel average/);
   });
 
+  // Issue 31: an upload can be deleted from the page; while a queued or running job uses it the server refuses,
+  // and the page shows the server's reason under it.
+  test('an upload is deleted with its Delete button, and the server\'s refusal is shown while a job uses it', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#f-mesh option:not([value=""])', { state: 'attached' });
+    const mesh = await uploadThroughPage('tests/data/cube_quads.obj');
+    const item = `#upload-list li[data-mesh="${mesh}"]`;
+    assert.equal(await page.isVisible(item), true, 'the upload is listed with its Delete button');
+    assert.match(await page.textContent(item), /cube_quads\.obj/);
+    const res = await fetch(`${baseUrl}/api/jobs`, {
+      method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ mesh, photons: 100000000, threads: 1 }),
+    });
+    assert.equal(res.status, 202);
+    const job = await res.json();
+    await page.click(`${item} button[data-action="delete-mesh"]`);
+    const error = await page.waitForSelector(`${item} .field-error:not([hidden])`);
+    assert.match(await error.textContent(), /Cannot delete cube_quads\.obj: a queued or running job uses this mesh/);
+    await shot('11-upload-in-use');
+    assert.equal((await (await fetch(`${baseUrl}/api/meshes`)).json()).uploaded.some((m) => m.mesh === mesh), true);
+    await fetch(`${baseUrl}/api/jobs/${job.id}/cancel`, { method: 'POST' });
+    for (let i = 0; i < 300; ++i) {
+      if (!['queued', 'running'].includes((await (await fetch(`${baseUrl}/api/jobs/${job.id}`)).json()).state)) break;
+      await new Promise((r) => setTimeout(r, 200));
+    }
+    await page.click(`${item} button[data-action="delete-mesh"]`);
+    await page.waitForSelector(item, { state: 'detached' });
+    assert.match(await page.textContent('#upload-status'), /Deleted cube_quads\.obj/);
+    assert.equal(await page.$(`#f-mesh option[value="${mesh}"]`), null, 'the shape select no longer offers it');
+    assert.equal((await (await fetch(`${baseUrl}/api/meshes`)).json()).uploaded.some((m) => m.mesh === mesh), false);
+  });
+
+  // Issue 31: the form shows the server's estimate as it is edited (asked for once typing pauses), in red with the
+  // server's reason when the job is over --max-job-seconds, and such a job cannot be submitted.
+  test('the form shows the job\'s estimate as it is edited, and blocks a job over the server\'s limit', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#f-mesh option[value="round_brilliant"]', { state: 'attached' });
+    await page.selectOption('#f-mesh', 'round_brilliant');
+    const estimates = [];
+    const count = (req) => { if (req.url().endsWith('/api/jobs/estimate')) estimates.push(req.postData()); };
+    page.on('request', count);
+    try {
+      await fillSmallJob();
+      await page.waitForFunction(() => /^Estimated time here: about .* with 2 threads, most of it the /
+        .test(document.querySelector('#job-estimate').textContent), null, { timeout: 15_000 });
+      assert.equal(await page.getAttribute('#job-estimate', 'class'), 'job-estimate');
+      assert.equal(await page.isDisabled('#submit-button'), false);
+      // Typed a key at a time: one estimate once typing pauses, not one per key.
+      const before = estimates.length;
+      await page.fill('#f-photons', '');
+      const asked = page.waitForRequest((req) => req.url().endsWith('/api/jobs/estimate')
+        && JSON.parse(req.postData()).photons === 300000, { timeout: 15_000 });
+      await page.type('#f-photons', '300000', { delay: 40 });
+      await asked;
+      await page.waitForTimeout(800);  // a second estimate for the same form would have been asked by now
+      const typed = estimates.slice(before);
+      assert.ok(typed.length >= 1 && typed.length <= 2, `${typed.length} estimates for 6 keys`);
+      assert.equal(JSON.parse(typed.at(-1)).photons, 300000);
+      const jobsBefore = (await (await fetch(`${baseUrl}/api/jobs`)).json()).total;
+      // A render of 2048 x 2048 at 256 samples and a tilt series of 91 such frames: about an hour on this 2-core
+      // VM, red, the server's reason (which part is costliest depends on the machine's rates), blocked.
+      await page.fill('#f-width', '2048');
+      await page.fill('#f-height', '2048');
+      await page.fill('#f-samples', '256');
+      await page.setChecked('#f-tilt-series', true);
+      await page.fill('#f-tilt-max', '45');
+      await page.waitForSelector('#job-estimate.over', { timeout: 15_000 });
+      const over = await page.textContent('#job-estimate');
+      assert.match(over, /^Too long for this server: [a-zA-Z ]+: about \d+ s of the 600 s a job may take on this server/);
+      assert.match(over, /: lower (render\.\w+|tilt_series\.\w+|aset\.samples)$/);
+      const colour = await page.$eval('#job-estimate', (el) => getComputedStyle(el).color);
+      assert.equal(colour, await page.$eval('.job-error, .field-error', (el) => getComputedStyle(el).color));
+      assert.equal(await page.isDisabled('#submit-button'), true);
+      await shot('12-estimate-over');
+      // Enter in a field submits the form without the button: still refused by the page.
+      await page.$eval('#job-form', (form) => form.requestSubmit());
+      assert.match(await page.textContent('#form-error'), /longer than this server allows/);
+      assert.equal((await (await fetch(`${baseUrl}/api/jobs`)).json()).total, jobsBefore, 'nothing was submitted');
+      // Back within the limit: the estimate is plain again and the job may be submitted.
+      await page.fill('#f-samples', '1');
+      await page.setChecked('#f-tilt-series', false);
+      await page.waitForSelector('#job-estimate:not(.over)', { timeout: 15_000 });
+      assert.equal(await page.isDisabled('#submit-button'), false);
+    } finally {
+      page.off('request', count);
+    }
+    await fillSmallJob();
+  });
+
   test('the home page fits a phone', async () => {
     await page.setViewportSize(PHONE);
     await page.goto(`${baseUrl}/#/`);

@@ -896,6 +896,76 @@ TEST_F(ServiceTest, JobsEstimatedOverMaxJobSecondsAreRefusedNamingTheLargestPart
     client_->Post("/api/jobs/" + big["id"].get<std::string>() + "/cancel");
 }
 
+// Issue 31: POST /api/jobs/estimate checks a job as a submission does (the same 4xx, the same field) and
+// answers what it would cost and whether it would be refused for it, storing nothing.
+TEST_F(ServiceTest, AnEstimateChecksAJobAsASubmissionDoesAndStoresNothing) {
+    const auto estimate = [&](const json& job) {
+        return client_->Post("/api/jobs/estimate", job.dump(), kJson);
+    };
+    const json schema = json::parse(openApiDocument())["components"]["schemas"]["JobEstimate"];
+    auto r = estimate(smallJob());
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    const json small = json::parse(r->body);
+    for (const auto& [key, value] : small.items()) EXPECT_TRUE(schema["properties"].contains(key)) << key;
+    for (const auto& key : schema["required"]) EXPECT_TRUE(small.contains(key)) << key;
+    EXPECT_FALSE(small["refused"].get<bool>());
+    EXPECT_FALSE(small.contains("reason"));
+    EXPECT_EQ(small["max_job_seconds"], 600);
+    EXPECT_EQ(small["threads"], 2);
+    EXPECT_GT(small["estimate_s"].get<double>(), 0);
+    EXPECT_EQ(small["parts"][0]["part"], "trace");  // every job traces first
+    bool listed = false;
+    for (const json& part : small["parts"]) {
+        EXPECT_LE(part["seconds"].get<double>(), small["largest"]["seconds"].get<double>()) << part;
+        listed = listed || part == small["largest"];
+    }
+    EXPECT_TRUE(listed) << small;
+
+    json render = smallJob();
+    render["render"] = {{"width", 2048}, {"height", 2048}, {"samples", 256}, {"max_depth", 64}};
+    r = estimate(render);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    const json over = json::parse(r->body);
+    EXPECT_TRUE(over["refused"].get<bool>());
+    EXPECT_GT(over["estimate_s"].get<double>(), 600);
+    EXPECT_EQ(over["largest"]["part"], "render");
+    EXPECT_EQ(over["largest"]["field"], "render.samples");
+    const auto refused = submit(render);
+    expectProblem(refused, 422, "render.samples");
+    EXPECT_EQ(over["reason"],
+              json::parse(refused->body)["detail"]);  // the words the submission is refused with
+
+    json inside = smallJob();
+    inside["light"] = {{"model", "point"}, {"position", {0, 0, 0}}};
+    json wide = smallJob();
+    wide["render"] = {{"width", 3000}};
+    for (const std::string& body :
+         {std::string("{\"mesh\":"), std::string("[1,2]"), std::string("{}"),
+          json{{"mesh", "round_brilliant"}, {"photons", -5}}.dump(),
+          json{{"mesh", "no_such_cut"}, {"photons", 10}}.dump(),
+          json{{"mesh", "round_brilliant"}, {"photons", 10}, {"colour", "red"}}.dump(), inside.dump(),
+          wide.dump()}) {
+        const auto asEstimate = client_->Post("/api/jobs/estimate", body, kJson);
+        const auto asJob = client_->Post("/api/jobs", body, kJson);
+        ASSERT_TRUE(asEstimate && asJob);
+        EXPECT_GE(asJob->status, 400) << body;
+        EXPECT_EQ(asEstimate->status, asJob->status) << body;
+        EXPECT_EQ(json::parse(asEstimate->body).value("field", ""),
+                  json::parse(asJob->body).value("field", ""))
+            << body;
+        EXPECT_EQ(asEstimate->get_header_value("Content-Type"), "application/problem+json");
+    }
+    expectProblem(client_->Post("/api/jobs/estimate", smallJob().dump(), "text/plain"), 415);
+    EXPECT_EQ(getJson("/api/jobs")["total"], 0);  // nothing was queued or stored
+
+    // The estimate is the one the job's status then carries.
+    const json accepted = json::parse(submit(smallJob())->body);
+    EXPECT_EQ(accepted["estimate_s"], small["estimate_s"]);
+    waitFinished(accepted["id"]);
+}
+
 // A job that outlives twice --max-job-seconds is stopped through its cancel and fails with the reason, which
 // a restart keeps. The test's rates make a minute's job look like nothing, as a slower stone than the
 // calibration's could.

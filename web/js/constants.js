@@ -5,6 +5,7 @@ import { fmtInt, fmtNumber } from './format.js';
 export const POLL_ACTIVE_MS = 600;  // while a job is queued or running
 export const POLL_IDLE_MS = 4000;
 export const JOBS_PER_PAGE = 10;
+export const ESTIMATE_DELAY_MS = 400;  // the job form's estimate is asked for once typing pauses this long
 export const REGIONS = ['table', 'crown', 'girdle', 'pavilion'];
 export const STATES = {
   queued: { glyph: '◷', label: 'Queued' },

@@ -1,9 +1,10 @@
-// The job form: its defaults from the server, reading it into a job, showing the server's field errors,
-// submitting.
+// The job form: its defaults from the server, reading it into a job, its estimate as it is edited, showing the
+// server's field errors, submitting.
 import { api } from './api.js';
+import { ESTIMATE_DELAY_MS } from './constants.js';
 import { readCut } from './cut_fields.js';
 import { $, clearFieldError, fieldError, showFieldError } from './dom.js';
-import { shortId } from './format.js';
+import { fmtDuration, shortId } from './format.js';
 import { jobsView, refreshJobs } from './jobs.js';
 import { jobName } from './meshes.js';
 
@@ -119,10 +120,61 @@ function reportError(e) {
   showFormError(e.field ? `${e.field}: ${e.message}` : e.message);
 }
 
+// The job's cost as the server estimates it (POST /api/jobs/estimate), asked for once the form has been still for
+// ESTIMATE_DELAY_MS; `asked` numbers the requests so that a late answer to an older form is dropped. A job over
+// the server's --max-job-seconds is shown in red with the server's reason, and cannot be submitted.
+const estimateView = { timer: 0, asked: 0, refused: false };
+
+function showEstimate(text, refused) {
+  const el = $('#job-estimate');
+  el.textContent = text;
+  el.classList.toggle('over', refused);
+  estimateView.refused = refused;
+  $('#submit-button').disabled = refused;
+}
+
+export function scheduleEstimate() {
+  clearTimeout(estimateView.timer);
+  estimateView.timer = setTimeout(estimateJob, ESTIMATE_DELAY_MS);
+}
+
+async function estimateJob() {
+  const asked = ++estimateView.asked;
+  const { job, errors } = buildJob($('#job-form'));
+  if (errors.length) {
+    showEstimate('', false);  // the fields say what is missing when the job is submitted
+    return;
+  }
+  let estimate;
+  try {
+    estimate = await api('/api/jobs/estimate', {
+      method: 'POST', headers: { 'Content-Type': 'application/json', Accept: 'application/json' }, body: JSON.stringify(job),
+    });
+  } catch (e) {
+    // A field the server refuses: submitting shows it beside its field.
+    if (asked === estimateView.asked) showEstimate(`No estimate: ${e.field ? `${e.field}: ` : ''}${e.message}`, false);
+    return;
+  }
+  if (asked !== estimateView.asked) return;
+  if (estimate.refused) {
+    showEstimate(`Too long for this server: ${estimate.reason}`, true);
+    return;
+  }
+  const largest = estimate.largest;
+  const limit = estimate.max_job_seconds > 0
+    ? `this server takes jobs of up to ${fmtDuration(estimate.max_job_seconds)}` : 'this server sets no limit';
+  showEstimate(`Estimated time here: about ${fmtDuration(estimate.estimate_s)} with ${estimate.threads} `
+    + `${estimate.threads === 1 ? 'thread' : 'threads'}, most of it the ${largest.part} (${largest.size}); ${limit}.`, false);
+}
+
 export async function submitJob(event) {
   event.preventDefault();
   const form = event.currentTarget;
   clearFormErrors();
+  if (estimateView.refused) {
+    showFormError('This job would take longer than this server allows: lower the setting the estimate names.');
+    return;
+  }
   const status = $('#submit-status');
   const { job, errors } = buildJob(form);
   if (errors.length) {
@@ -149,7 +201,7 @@ export async function submitJob(event) {
     status.textContent = '';
     reportError(e);
   } finally {
-    button.disabled = false;
+    button.disabled = estimateView.refused;
   }
 }
 

@@ -1,5 +1,5 @@
-// The shapes a job may use: shipped and uploaded meshes, their descriptions and uploads. loadMeshes returns the
-// shipped ones.
+// The shapes a job may use: shipped and uploaded meshes, their descriptions, uploads and their deletion.
+// loadMeshes returns the shipped ones.
 import { api } from './api.js';
 import { showCutFields } from './cut_fields.js';
 import { $, clearFieldError, h, showFieldError } from './dom.js';
@@ -46,12 +46,44 @@ export async function loadMeshes(select) {
   }
   if (!groups.length) groups.push(h('option', { value: '' }, 'No shapes yet: upload a mesh'));
   el.replaceChildren(...groups);
+  renderUploads(list.uploaded || []);
   // The classic round brilliant is the reference design people start from.
   const preferred = [previous, 'round_brilliant'].find((m) => m && meshes.has(m));
   if (preferred) el.value = preferred;
   describeMesh();
   document.dispatchEvent(new CustomEvent('meshes-loaded', { detail: list }));
   return list.shipped || [];
+}
+
+// Each upload with a Delete button. The server refuses to delete one a queued or running job uses (409): its
+// reason is shown under the upload.
+function renderUploads(uploaded) {
+  const list = $('#upload-list');
+  list.replaceChildren(...uploaded.map((m) => {
+    const name = m.file_name || m.mesh;
+    const error = h('p', { class: 'field-error', role: 'alert', hidden: true });
+    const button = h('button', {
+      type: 'button', class: 'button secondary small', 'data-action': 'delete-mesh', 'aria-label': `Delete ${name}`,
+      onclick: () => deleteMesh(m, button, error),
+    }, 'Delete');
+    return h('li', { 'data-mesh': m.mesh }, h('span', { class: 'upload-name' }, meshLabel(m)), button, error);
+  }));
+  list.hidden = uploaded.length === 0;
+}
+
+async function deleteMesh(m, button, error) {
+  const name = m.file_name || m.mesh;
+  button.disabled = true;
+  error.hidden = true;
+  try {
+    await api(`/api/meshes/${encodeURIComponent(m.mesh)}`, { method: 'DELETE' });
+    $('#upload-status').textContent = `Deleted ${name}.`;
+    await loadMeshes();
+  } catch (e) {
+    error.textContent = `Cannot delete ${name}: ${e.message}`;
+    error.hidden = false;
+    button.disabled = false;
+  }
 }
 
 export function describeMesh() {
