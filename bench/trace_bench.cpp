@@ -223,6 +223,56 @@ void BM_PolarizedVsPlainShipped(benchmark::State& state) {
 }
 BENCHMARK(BM_PolarizedVsPlainShipped)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 
+// Absorption (issue 29) against the clear stone: the shipped brilliant in diamond on one thread, hemisphere
+// light with dispersion (photons started one at a time) and one collimated beam without it (started a packet
+// at a time), each timed alternately with the same stone absorbing a spectrum (target: at least 0.7x the
+// clear stone's speed on every SIMD target, --simd=...).
+void BM_AbsorbingVsPlain(benchmark::State& state) {
+    const Stone* stone = shippedBrilliant();
+    if (!stone) {
+        state.SkipWithError("meshes/round_brilliant.obj not found");
+        return;
+    }
+    struct Run {
+        const char* name;
+        LightModelKind light;
+        bool absorbing;
+        std::vector<double> seconds;
+    };
+    std::vector<Run> runs{{"hemisphere_clear", LightModelKind::Hemisphere, false, {}},
+                          {"hemisphere_absorbing", LightModelKind::Hemisphere, true, {}},
+                          {"beam_clear", LightModelKind::Collimated, false, {}},
+                          {"beam_absorbing", LightModelKind::Collimated, true, {}}};
+    for (auto _ : state) {
+        for (Run& run : runs) {
+            TraceSettings settings;
+            settings.photons = 400'000;
+            settings.light.model = run.light;
+            settings.dispersion = run.light == LightModelKind::Hemisphere;
+            // About a third of the light that enters a 6.5 mm stone is absorbed.
+            if (run.absorbing)
+                settings.absorption = AbsorptionSpectrum{{400, 550, 700}, {0.06, 0.02, 0.04}, {}};
+            const Scene scene(*stone, settings);
+            const TraceBase base(scene, settings);
+            const auto start = std::chrono::steady_clock::now();
+            FacetStats stats(stone->facets.size());
+            traceBlocks(base, 0, blockCount(settings.photons), 1, stats);
+            benchmark::DoNotOptimize(stats.exited);
+            run.seconds.push_back(bench::seconds(start) / double(settings.photons) * 1e6);  // per 1e6 photons
+            if (run.absorbing)
+                state.counters[std::string(run.name) + "_absorbed_share"] =
+                    double(stats.absorbed) / double(stats.entered);
+        }
+    }
+    for (const Run& run : runs)
+        state.counters[std::string(run.name) + "_s_per_M"] = bench::median(run.seconds);
+    // Speed of the absorbing trace as a share of the clear one's (target >= 0.7).
+    state.counters["hemisphere_speed_ratio"] =
+        bench::median(runs[0].seconds) / bench::median(runs[1].seconds);
+    state.counters["beam_speed_ratio"] = bench::median(runs[2].seconds) / bench::median(runs[3].seconds);
+}
+BENCHMARK(BM_AbsorbingVsPlain)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
+
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -5,6 +5,7 @@
 // sources from cli/*_command.cpp.
 #include <algorithm>
 #include <charconv>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,9 +44,12 @@ class SettingsFlags {
         try {
             schema.read(s, given, root_);
         } catch (const Error& e) {
-            for (const Flag& f : flags_)
-                if (settings::fieldPath(root_, f.path) == e.field())
-                    throw Error(f.field->doc.flag, message(f, e.what()));
+            for (const Flag& f : flags_) {
+                const std::string path = settings::fieldPath(root_, f.path);
+                if (path == e.field()) throw Error(f.field->doc.flag, message(f, e.what()));
+                if (e.field().rfind(path + ".", 0) == 0)  // inside a table the flag gave
+                    throw Error(f.field->doc.flag, f.field->doc.flag + ": " + e.what());
+            }
             throw;
         }
     }
@@ -133,8 +137,28 @@ class SettingsFlags {
                 for (const std::string& w : words) v.push_back(number(w));
                 return v;
             }
+            case settings::FieldType::Table:
+                return table(f, words.at(0));
             default:
                 return words.at(0);
+        }
+    }
+
+    // A table flag's JSON: written inline ("{...}") or the path of a file holding it.
+    static nlohmann::json table(const Flag& f, const std::string& word) {
+        const std::string& flag = f.field->doc.flag;
+        const size_t first = word.find_first_not_of(" \t\r\n");
+        std::string text = word;
+        if (first == std::string::npos || word[first] != '{') {
+            std::ifstream in(word);
+            if (!in)
+                throw Error(flag, flag + ": cannot read '" + word + "' (give the JSON inline or a file)");
+            text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        }
+        try {
+            return nlohmann::json::parse(text);
+        } catch (const nlohmann::json::parse_error& e) {
+            throw Error(flag, flag + ": not JSON (" + e.what() + ")");
         }
     }
 

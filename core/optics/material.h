@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "optics/absorption.h"
+
 namespace facetlight {
 
 // The optic class: one index (cubic crystals, glasses), one optic axis (n_o, n_e) or two (alpha, beta, gamma).
@@ -48,6 +50,14 @@ class Material {
     // g/cm^3, for weights; none for a constant index (an `n` or a design file's index names no material).
     std::optional<double> densityGcm3() const { return density_ > 0 ? std::optional(density_) : std::nullopt; }
 
+    // Beer-Lambert absorption (docs/optics.md, "Absorption"): none (clear), or a spectrum a job gives.
+    const std::optional<AbsorptionSpectrum>& absorption() const { return absorption_; }
+    Material withAbsorption(std::optional<AbsorptionSpectrum> spectrum) const {
+        Material m = *this;
+        m.absorption_ = std::move(spectrum);
+        return m;
+    }
+
     Optic optic() const { return optic_; }
     // n_o, n_o, n_e (uniaxial); alpha, beta, gamma (biaxial, alpha < beta < gamma); n, n, n (isotropic).
     std::array<double, 3> principalIndices(double wavelengthNm) const;
@@ -75,6 +85,7 @@ class Material {
     // Principal indices in the order of principalIndices(); axes_[1] is index()'s.
     std::array<Dispersion, 3> axes_{};
     double density_ = 0;
+    std::optional<AbsorptionSpectrum> absorption_;
 };
 
 std::vector<std::string> materialNames();

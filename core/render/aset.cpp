@@ -66,6 +66,7 @@ struct ViewRayEnd {
     void internalReflection(uint32_t) {}
     void trapped(uint32_t) { end = AsetClass::Trapped; }
     void lost(uint32_t) { end = AsetClass::Trapped; }
+    void absorbed(uint32_t) { end = AsetClass::Trapped; }  // dark, as trapped light
 };
 
 AsetShare binomialShare(uint64_t count, uint64_t n) {

@@ -17,12 +17,22 @@ double smoothstep(double lo, double hi, double x) {
 
 }  // namespace
 
-MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone) {
+namespace {
+
+MaterialChoice chooseIndex(const SceneSettings& settings, const Stone& stone) {
     if (settings.constantIndex) return {Material::constant(*settings.constantIndex), "n"};
     if (settings.material != "auto") return {Material::byName(settings.material), "material"};
     if (stone.design && stone.design->refractiveIndex)
         return {Material::constant(*stone.design->refractiveIndex, "design file index"), "design file"};
     return {Material::byName("diamond"), "default"};
+}
+
+}  // namespace
+
+MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone) {
+    MaterialChoice choice = chooseIndex(settings, stone);
+    choice.material = choice.material.withAbsorption(settings.absorption);
+    return choice;
 }
 
 Scene::Scene(const Stone& stone, const SceneSettings& settings)

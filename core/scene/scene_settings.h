@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "optics/absorption.h"
 #include "optics/light_settings.h"
 #include "optics/optic_axis.h"
 #include "optics/viewer_settings.h"
@@ -22,12 +23,16 @@ struct SceneSettings {
     // diamond.
     std::string material = "auto";
     std::optional<double> constantIndex;  // a constant refractive index overriding the material's (JSON "n")
+    // The material's absorption (JSON "absorption"): none, or a user's spectrum (docs/optics.md,
+    // "Absorption").
+    std::optional<AbsorptionSpectrum> absorption;
     bool dispersion = true;               // refraction by wavelength in 380-780 nm; false: all at 589.3 nm
     IntersectorKind intersector = IntersectorKind::Auto;
     LightSettings light;
     OpticAxisSettings opticAxis;  // a uniaxial material's, traced with polarisation on
-    // The stone's size: its girdle diameter (the width of a fancy shape), which the mesh's units are scaled to.
-    // A round brilliant of 1 carat is about 6.5 mm across (docs/physics.md, "Viewer figures").
+    // The stone's size: its girdle diameter (the width of a fancy shape), which the mesh's units are scaled
+    // to. A round brilliant of 1 carat is about 6.5 mm across (docs/physics.md, "Viewer figures").
+    // Absorption's path lengths are in mm at this size; every figure without absorption is scale-free.
     double sizeMm = 6.5;
     // How a person looks at it: the viewer, the office and spot set-ups, the motion (the viewer figures).
     ViewerSettings viewer;

@@ -18,7 +18,8 @@
 
 namespace facetlight::settings {
 
-enum class FieldType { Integer, Number, Boolean, Text, Choice, Vec3, Object };
+// Table: a value of its own JSON form (a spectrum), read and written by the row's own functions.
+enum class FieldType { Integer, Number, Boolean, Text, Choice, Vec3, Object, Table };
 
 // How a number may range; open ends exclude their bound.
 struct NumberRange {
@@ -49,10 +50,11 @@ struct FieldInfo {
     Doc doc;
     uint64_t minCount = 0, maxCount = 0;             // Integer: whole numbers in [minCount, maxCount]
     NumberRange range;                               // Number
-    bool nullable = false;                           // Number: null means none
+    bool nullable = false;                           // Number, Table: null means none
     bool nonZero = false;                            // Vec3: not the zero vector
     std::vector<std::string> choices;                // Choice: the names it takes
     const std::vector<FieldInfo>* fields = nullptr;  // Object: its own table
+    std::string ref;                                 // Table: its schema's name in server/openapi.json
 };
 
 // A row's description; the builders below fill in the rest.
@@ -208,6 +210,22 @@ Field<S> vec3(std::string key, Vec3 S::*member, bool nonZero, Doc doc) {
                 const Vec3& v = s.*member;
                 return nlohmann::json::array({v.x, v.y, v.z});
             }};
+}
+
+// A table of its own JSON form, `ref` in server/openapi.json's schemas, read by read(json, path) (which
+// throws Error naming the field at fault) and written by write(value); absent or null: none.
+template <class S, class T>
+Field<S> table(std::string key, std::optional<T> S::*member, std::string ref,
+               T (*read)(const nlohmann::json&, const std::string&), nlohmann::json (*write)(const T&),
+               Doc doc) {
+    FieldInfo info = describe(std::move(key), FieldType::Table, std::move(doc));
+    info.ref = std::move(ref);
+    info.nullable = true;
+    return {std::move(info),
+            [=](S& s, const nlohmann::json& j, const std::string& path) {
+                s.*member = j.is_null() ? std::nullopt : std::optional<T>(read(j, path));
+            },
+            [=](const S& s) { return s.*member ? write(*(s.*member)) : nlohmann::json(nullptr); }};
 }
 
 // A settings struct inside another; `schema` must outlive the table (a function-local static).

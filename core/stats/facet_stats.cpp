@@ -58,6 +58,7 @@ void FacetStats::merge(const FacetStats& o) {
     exited += o.exited;
     trapped += o.trapped;
     lost += o.lost;
+    absorbed += o.absorbed;
     crownReturn += o.crownReturn;
     crownReflection += o.crownReflection;
     for (int i = 0; i < kConeCount; ++i) coneReturn[i] += o.coneReturn[i];
@@ -80,7 +81,7 @@ namespace {
 template <class Stats, class F>
 void forEachTally(Stats& s, F&& f) {
     for (auto* v : {&s.photons, &s.hit, &s.reflectedAtEntry, &s.entered, &s.exited, &s.trapped, &s.lost,
-                    &s.crownReturn, &s.crownReflection, &s.weightSum, &s.weightSquareSum})
+                    &s.crownReturn, &s.crownReflection, &s.weightSum, &s.weightSquareSum, &s.absorbed})
         f(*v);
     for (auto& v : s.coneReturn) f(v);
     for (auto& h : s.histogram)
@@ -114,14 +115,16 @@ json statsToJson(const FacetStats& s, const Stone& stone, const json& settings, 
         throw Error("statistics do not belong to stone '" + stone.name + "'");
     const uint64_t n = s.hit;
 
-    json totals = {{"photons", s.photons}, {"hit", s.hit},       {"reflected_at_entry", s.reflectedAtEntry},
-                   {"entered", s.entered}, {"exited", s.exited}, {"trapped", s.trapped},
-                   {"lost", s.lost}};
+    json totals = {
+        {"photons", s.photons}, {"hit", s.hit},          {"reflected_at_entry", s.reflectedAtEntry},
+        {"entered", s.entered}, {"exited", s.exited},    {"trapped", s.trapped},
+        {"lost", s.lost},       {"absorbed", s.absorbed}};
     auto figure = [&](const std::string& name, double p) {
         totals[name] = p;
         totals[name + "_stderr"] = stderrOf(p, n);
     };
     figure("trapped_share", share(s.trapped, n));
+    figure("absorbed_share", share(s.absorbed, n));
     figure("crown_return", share(s.crownReturn, n));
     figure("crown_return_with_reflection", share(s.crownReturn + s.crownReflection, n));
     const double w = n ? double(s.weightSum) / kWeightScale / double(n) : 0.0;

@@ -59,6 +59,7 @@ struct alignas(64) FacetStats {
 
     uint64_t photons = 0, hit = 0, reflectedAtEntry = 0, entered = 0, exited = 0, trapped = 0;
     uint64_t lost = 0;             // part of `trapped`: the intersector found no way out (rounding)
+    uint64_t absorbed = 0;         // of `entered`, absorbed inside (Beer-Lambert; 0 in a clear stone)
     uint64_t crownReturn = 0;      // left through table or crown into the upper hemisphere
     uint64_t crownReflection = 0;  // first-surface reflections off table or crown into the upper hemisphere
     std::array<uint64_t, kConeCount> coneReturn{};  // crown exits within each cone, outside the head cone

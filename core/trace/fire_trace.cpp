@@ -73,25 +73,26 @@ class FireTally {
 
 }  // namespace
 
-std::array<float, kFireBands> fireBandIndices(const Scene& scene) {
-    std::array<float, kFireBands> bands;
-    for (int k = 0; k < kFireBands; ++k)
-        bands[k] =
-            float(scene.refractiveIndex(scene.dispersive() ? kFireWavelengthsNm[k] : Material::kSodiumD));
+std::array<FireBand, kFireBands> fireBands(const Scene& scene) {
+    std::array<FireBand, kFireBands> bands;
+    for (int k = 0; k < kFireBands; ++k) {
+        const double nm = scene.dispersive() ? kFireWavelengthsNm[k] : Material::kSodiumD;
+        bands[k] = {float(scene.refractiveIndex(nm)), float(nm)};
+    }
     return bands;
 }
 
 void traceFire(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats) {
     thread_local std::vector<BandExit> exits;  // the block's, sized once per thread
     exits.resize((end - begin) * kFireBands);
-    PhotonWalker::blockBands(trace, begin, end, fireBandIndices(trace.scene()), exits);
+    PhotonWalker::blockBands(trace, begin, end, fireBands(trace.scene()), exits);
     FireTally tally(trace, stats);
     for (size_t i = 0; i < end - begin; ++i)
         tally.add(std::span<const BandExit, kFireBands>(&exits[i * kFireBands], kFireBands));
 }
 
 void traceFirePhotonByPhoton(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats) {
-    const std::array<float, kFireBands> bands = fireBandIndices(trace.scene());
+    const std::array<FireBand, kFireBands> bands = fireBands(trace.scene());
     FireTally tally(trace, stats);
     std::array<BandExit, kFireBands> exits;
     for (uint64_t i = begin; i < end; ++i) {

@@ -11,9 +11,13 @@
 
 namespace facetlight {
 
-// The index of refraction of each band (kFireWavelengthsNm) in the scene: all the same when it is not
-// dispersive.
-std::array<float, kFireBands> fireBandIndices(const Scene& scene);
+// One band of the fire trace: its wavelength (kFireWavelengthsNm, or 589.3 nm when the scene is not
+// dispersive) and the index of refraction there.
+struct FireBand {
+    float index;
+    float wavelengthNm;
+};
+std::array<FireBand, kFireBands> fireBands(const Scene& scene);
 
 // Adds photons [begin, end) of the job to `stats` (sized for the stone's facets). A convex stone's bands
 // are walked a packet at a time, one (photon, band) per SIMD lane.

@@ -72,17 +72,19 @@ struct alignas(64) Packet {
     float px[kMaxLanes]{}, py[kMaxLanes]{}, pz[kMaxLanes]{};
     float dx[kMaxLanes]{}, dy[kMaxLanes]{}, dz[kMaxLanes]{};
     float n[kMaxLanes]{};
+    float absorption[kMaxLanes]{}, depth[kMaxLanes]{};  // PhotonWalker::Photon's, when the stone absorbs
     PolarizationLanes pol{};  // when the trace is polarised
     uint64_t rng[kMaxLanes]{};
     uint32_t bounces[kMaxLanes]{};
     uint32_t id[kMaxLanes]{};  // what the visitor knows the lane's photon by (Visitor::lane)
     LaneBits live = 0;
 
-    void put(int k, const Vec3f& p, const Vec3f& d, float index, const Polarization& state, uint64_t rngState,
-             uint32_t photonId) {
+    void put(int k, const Vec3f& p, const Vec3f& d, float index, float alpha, float depthLeft,
+             const Polarization& state, uint64_t rngState, uint32_t photonId) {
         px[k] = p.x, py[k] = p.y, pz[k] = p.z;
         dx[k] = d.x, dy[k] = d.y, dz[k] = d.z;
         n[k] = index;
+        absorption[k] = alpha, depth[k] = depthLeft;
         pol.put(k, state);
         rng[k] = rngState;
         bounces[k] = 0;
@@ -90,12 +92,12 @@ struct alignas(64) Packet {
         live |= LaneBits(1) << k;
     }
     void put(int k, const PhotonWalker::Photon& ph, uint32_t photonId) {
-        put(k, ph.p, ph.d, ph.n, ph.pol, ph.rng.state(), photonId);
+        put(k, ph.p, ph.d, ph.n, ph.absorption, ph.depth, ph.pol, ph.rng.state(), photonId);
     }
     // Lane k takes the photon in lane j of another packet.
     void take(int k, const Packet& from, int j) {
         put(k, {from.px[j], from.py[j], from.pz[j]}, {from.dx[j], from.dy[j], from.dz[j]}, from.n[j],
-            from.pol[j], from.rng[j], from.id[j]);
+            from.absorption[j], from.depth[j], from.pol[j], from.rng[j], from.id[j]);
     }
 };
 
@@ -175,6 +177,7 @@ using BandExit = PhotonWalker::BandExit;
 // lane-wise, up to the reflect-or-refract draw at entry.
 struct BeamStart {
     StepResult hit;    // the entry point, facet and cos(incidence) (cosT: not known before the index)
+    alignas(64) float wavelength[kMaxLanes];  // nm
     LaneBits photons = 0;  // the lanes that hold a photon
     LaneBits hits = 0;     // those that enter
 };
@@ -188,10 +191,12 @@ HWY_INLINE void startBeam(const Packets& s, uint64_t first, size_t count, uint64
     Floats ox, oy, oz;
     sampleBeam(s.light.disc(), state, ox, oy, oz);
     if (n) *n = Floats(s.fixedIndex);
+    Floats wavelength(float(Material::kSodiumD));
     if (s.dispersive) {
-        const Floats wavelength = Floats(380.0f) + Floats(400.0f) * uniformOf(state, lanes);
+        wavelength = Floats(380.0f) + Floats(400.0f) * uniformOf(state, lanes);
         if (n) *n = viaDoubles(wavelength, [&](Doubles w) HWY_ATTR { return s.material.indexOf(w); });
     }
+    wavelength.store(b.wavelength);
     Floats t;
     Facets facet;
     const FloatMask hits = hn::And(lanes, EnterBeamPacket(*s.beam, ox, oy, oz, t, facet));
@@ -204,12 +209,13 @@ HWY_INLINE void startBeam(const Packets& s, uint64_t first, size_t count, uint64
     b.hit.store(ox + dx * t, oy + dy * t, oz + dz * t, cosI, cosI, facet);
 }
 
-// The rest of start() for the photons of `b` at index n, drawing from state[]: the photons that reflect off
-// the stone, and those that get in as live lanes of `started` (which has none live before), the photon in
-// lane k known to the visitor as firstId + k * idStep.
+// The rest of start() for the photons of `b` at index n, absorbing absorption[k] per mesh unit in lane k,
+// drawing from state[]: the photons that reflect off the stone, and those that get in as live lanes of
+// `started` (which has none live before), the photon in lane k known to the visitor as firstId + k * idStep.
 template <class Visitor>
-HWY_INLINE void enterBeam(const Packets& s, const BeamStart& b, Floats n, uint64_t* state, Visitor& visit,
-                          uint32_t firstId, uint32_t idStep, Packet& started) {
+HWY_INLINE void enterBeam(const Packets& s, const BeamStart& b, Floats n, const float* absorption,
+                          uint64_t* state, Visitor& visit, uint32_t firstId, uint32_t idStep,
+                          Packet& started) {
     const Vec3f d(s.light.direction());
     const Floats eta = Floats(1.0f) / n, cosI = Floats::load(b.hit.cosI);
     // The reflect-or-refract draw by the unpolarised Fresnel reflectance, or (PhotonWalker::enterPolarized)
@@ -243,8 +249,16 @@ HWY_INLINE void enterBeam(const Packets& s, const BeamStart& b, Floats n, uint64
     forEachLane(hitBits & ~reflects, [&](int k) {
         const uint32_t f = b.hit.facet[k];
         visit.lane(firstId + k * idStep).entered(f);
+        // PhotonWalker::enter()'s free path, from the lane's own stream.
+        float depth = 0;
+        if (absorption[k] > 0) {
+            Rng rng = Rng::resume(state[k]);
+            depth = PhotonWalker::freePath(rng);
+            state[k] = rng.state();
+        }
         started.put(k, b.hit.p(k), refractIn(d, s.normal[f], etas[k], b.hit.cosI[k], cosT[k]), index[k],
-                    s.polarized ? inside[k] : Polarization{}, state[k], firstId + k * idStep);
+                    absorption[k], depth, s.polarized ? inside[k] : Polarization{}, state[k],
+                    firstId + k * idStep);
     });
 }
 
@@ -266,12 +280,15 @@ void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end,
     BeamStart b;
     Floats n;
     startBeam(s, first, count, started.rng, b, &n);
-    enterBeam(s, b, n, started.rng, tally, uint32_t(first - begin), 1, started);
+    alignas(64) float absorption[kMaxLanes] = {};
+    if (s.trace.absorbs())
+        forEachLane(b.hits, [&](int k) { absorption[k] = s.trace.absorption(b.wavelength[k]); });
+    enterBeam(s, b, n, absorption, started.rng, tally, uint32_t(first - begin), 1, started);
 }
 
-// PhotonWalker::step() for every live lane of the packet, in a polarised trace or not; the lanes whose photon
-// is done are no longer live.
-template <bool kPolarized, class Visitor>
+// PhotonWalker::step() for every live lane of the packet, in a polarised trace or not, through an absorbing
+// stone or not; the lanes whose photon is done are no longer live.
+template <bool kPolarized, bool kAbsorbing, class Visitor>
 void stepPacket(const Packets& s, Packet& lanes, Visitor& visit) {
     static_assert(
         !requires(Visitor & v, const Polarization& pol, const Vec3f& d) {
@@ -285,6 +302,16 @@ void stepPacket(const Packets& s, Packet& lanes, Visitor& visit) {
     const FloatMask walking = maskOf(lanes.live);
     LeavePacket(s.convex, walking, ox, oy, oz, dx, dy, dz, t, facet);
     const FloatMask inside = hn::And(walking, t < Floats(kInf));
+    // The photons that reach the facet: those whose free path outlasts the segment (PhotonWalker::step()).
+    FloatMask meets = inside;
+    LaneBits absorbed = 0;
+    if constexpr (kAbsorbing) {
+        const Floats depth = depthLeft(Floats::load(lanes.depth), Floats::load(lanes.absorption), t);
+        depth.store(lanes.depth);
+        const FloatMask gone = hn::And(inside, depth < Floats(0.0f));
+        absorbed = bitsOf(gone);
+        meets = hn::AndNot(gone, inside);
+    }
     const Floats px = ox + dx * t, py = oy + dy * t, pz = oz + dz * t;
     const Normals normal = gatherNormals(s.normal, facet);
     const Floats cosI = clampUnit(dot3(dx, dy, dz, normal.x, normal.y, normal.z));
@@ -299,13 +326,14 @@ void stepPacket(const Packets& s, Packet& lanes, Visitor& visit) {
     } else {
         fr = fresnelTerms(cosI, Floats::load(lanes.n));
     }
-    const FloatMask draw = hn::AndNot(fr.totalInternal, inside);
+    const FloatMask draw = hn::AndNot(fr.totalInternal, meets);
     const LaneBits exits = bitsOf(hn::And(draw, uniformOf(lanes.rng, draw) >= fr.reflectance));
-    const LaneBits live = lanes.live, reflects = bitsOf(inside) & ~exits;
+    const LaneBits live = lanes.live, reflects = bitsOf(meets) & ~exits;
 
     StepResult hit;
     hit.store(px, py, pz, cosI, fr.cosT, facet);
     forEachLane(live & ~bitsOf(inside), [&](int k) { visit.lane(lanes.id[k]).lost(lanes.bounces[k]); });
+    forEachLane(absorbed, [&](int k) { visit.lane(lanes.id[k]).absorbed(lanes.bounces[k]); });
     forEachLane(exits, [&](int k) {
         const uint32_t f = hit.facet[k];
         const Vec3f d{lanes.dx[k], lanes.dy[k], lanes.dz[k]};
@@ -348,9 +376,11 @@ void walkLanes(const Packets& s, Visitor& visit, Start&& start) {
         }
         if (!lanes.live) return;
         if (s.polarized) {
-            stepPacket<true>(s, lanes, visit);
+            s.trace.absorbs() ? stepPacket<true, true>(s, lanes, visit)
+                              : stepPacket<true, false>(s, lanes, visit);
         } else {
-            stepPacket<false>(s, lanes, visit);
+            s.trace.absorbs() ? stepPacket<false, true>(s, lanes, visit)
+                              : stepPacket<false, false>(s, lanes, visit);
         }
     }
 }
@@ -380,7 +410,7 @@ void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t en
 // light ray and the entry do not depend on the index of refraction) and enters at each band's index in turn,
 // each band from its own copy of the photon's stream. Each band takes exactly the steps walkBands() takes.
 void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
-                     std::span<const float> bands, std::span<PhotonWalker::BandExit> exits) {
+                     std::span<const FireBand> bands, std::span<PhotonWalker::BandExit> exits) {
     BandExits visit{exits};
     const uint32_t count = uint32_t(bands.size());
     uint64_t first = begin;  // the packet of photons being started
@@ -399,7 +429,10 @@ void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_
         const uint32_t firstId = uint32_t((first - begin) * count + band);
         if (s.beam) {
             std::copy_n(drawn, laneCount(), started.rng);
-            enterBeam(s, beam, Floats(bands[band]), started.rng, visit, firstId, count, started);
+            alignas(64) float absorption[kMaxLanes];
+            std::fill_n(absorption, kMaxLanes, s.trace.absorption(bands[band].wavelengthNm));
+            enterBeam(s, beam, Floats(bands[band].index), absorption, started.rng, visit, firstId, count,
+                      started);
         } else {
             int k = 0;
             for (uint64_t i = first; i < next; ++i) {
@@ -420,7 +453,7 @@ void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t en
     for (uint64_t i = begin; i < end; ++i) PhotonWalker::walk(s.trace, s.convex, i, tally);
 }
 void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
-                     std::span<const float> bands, std::span<PhotonWalker::BandExit> exits) {
+                     std::span<const FireBand> bands, std::span<PhotonWalker::BandExit> exits) {
     for (uint64_t i = begin; i < end; ++i)
         PhotonWalker::walkBands(s.trace, s.convex, i, bands,
                                 exits.subspan((i - begin) * bands.size(), bands.size()));
@@ -456,8 +489,8 @@ void PhotonWalker::packets(const TraceBase& s, uint64_t begin, uint64_t end, Tal
     HWY_DYNAMIC_DISPATCH(walkPackets)(packetScene(s), begin, end, tally);
 }
 
-void PhotonWalker::bandPackets(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const float> bands,
-                               std::span<BandExit> exits) {
+void PhotonWalker::bandPackets(const TraceBase& s, uint64_t begin, uint64_t end,
+                               std::span<const FireBand> bands, std::span<BandExit> exits) {
     HWY_DYNAMIC_DISPATCH(walkBandPackets)(packetScene(s), begin, end, bands, exits);
 }
 

@@ -19,7 +19,7 @@
 namespace facetlight {
 
 // One photon's fate, for the renderer and photon maps that reuse the tracer.
-enum class PhotonOutcome : uint8_t { Missed, ReflectedAtEntry, Exited, Trapped };
+enum class PhotonOutcome : uint8_t { Missed, ReflectedAtEntry, Exited, Trapped, Absorbed };
 struct PhotonPath {
     PhotonOutcome outcome = PhotonOutcome::Missed;
     float wavelengthNm = 0;

@@ -9,8 +9,10 @@
 
 #include "intersect/convex_intersector.h"
 #include "intersect/embree_intersector.h"
+#include "optics/absorption.h"
 #include "optics/birefringence.h"
 #include "optics/fresnel.h"
+#include "trace/fire_trace.h"
 #include "trace/photon_tracer.h"
 #include "trace/trace_base.h"
 #include "util/random.h"
@@ -33,6 +35,9 @@ class PhotonWalker {
         float nE = 0;      // a birefringent stone's extraordinary index (n is the ordinary one)
         PlaneWave wave;    // inside a birefringent stone: the ordinary or extraordinary wave it travels as
         bool coherent = false;  // near the optic axis instead: both waves in phase, one state at n_o (pol)
+        // Absorption per mesh unit (TraceBase::absorption): the photon's, or its ordinary wave's, and its
+        // extraordinary wave's in a birefringent trace; and the optical depth it has left, drawn at entry.
+        float absorption = 0, absorptionE = 0, depth = 0;
 
         // Index n (n_o in a birefringent stone) for a ray that carries one index: n_e is n plus the
         // birefringence at 589.3 nm, its own dispersion left out (docs/optics.md, "Birefringent stones").
@@ -40,7 +45,28 @@ class PhotonWalker {
             n = index;
             nE = index + s.birefringenceD();
         }
+        void setAbsorption(const TraceBase& s, float wavelengthNm) {
+            absorption = s.absorption(wavelengthNm);
+            absorptionE = s.birefringent() ? s.extraordinaryAbsorption(wavelengthNm) : 0.0f;
+        }
     };
+
+    // Beer-Lambert by the free path (docs/optics.md, "Absorption"): a photon that enters an absorbing stone
+    // draws once the optical depth it will cross, -ln(1 - u), exponentially distributed; each segment of
+    // length L uses up alpha L of it (depthLeft), and the photon is absorbed on the segment where it runs
+    // out. The chance to cross a segment is then exp(-alpha L) whatever came before, as Beer-Lambert says,
+    // with one draw and one logarithm per photon rather than per segment, and only add, sub and mul per
+    // segment (the same bits in every walk and SIMD target).
+    static float freePath(Rng& rng) { return float(-std::log1p(-rng.uniformDouble())); }
+    // Whether a photon with these coefficients draws a free path: not in a clear stone, nor at a wavelength
+    // the stone does not absorb.
+    static bool absorbing(const Photon& ph) { return ph.absorption > 0 || ph.absorptionE > 0; }
+
+    // Photon `ph` at the index and wavelength of one band of the fire trace.
+    static void setBand(const TraceBase& s, const FireBand& band, Photon& ph) {
+        ph.setIndex(s, band.index);
+        ph.setAbsorption(s, band.wavelengthNm);
+    }
 
     // Draws photon `index` and takes it to the stone; true when it is inside and has to be stepped on.
     template <class Intersector, class Visitor>
@@ -57,6 +83,7 @@ class PhotonWalker {
         }
         visit.wavelength(wavelength);
         if (s.birefringent()) ph.nE = s.extraordinaryIndex(wavelength);
+        ph.setAbsorption(s, wavelength);
         return enter(s, isect, ray, visit, ph);
     }
 
@@ -96,6 +123,7 @@ class PhotonWalker {
             }
             d = refractIn(d, normal, eta, cosI, fr.cosT);
         }
+        ph.depth = absorbing(ph) ? freePath(ph.rng) : 0.0f;
         visit.entered(hit.facet);
         ph.p = p;
         ph.d = d;
@@ -109,6 +137,13 @@ class PhotonWalker {
         if (!isect.leave(ph.p, ph.d, hit)) {
             visit.lost(ph.bounces);
             return false;
+        }
+        if (s.absorbs()) {
+            ph.depth = depthLeft(ph.depth, segmentAbsorption(s, ph), hit.t);
+            if (ph.depth < 0) {
+                visit.absorbed(ph.bounces);
+                return false;
+            }
         }
         if (s.birefringent() && !ph.coherent) return stepCrystalWave(s, hit, visit, ph);
         const Vec3f p = ph.p + ph.d * hit.t, d = ph.d;
@@ -143,6 +178,17 @@ class PhotonWalker {
             return false;
         }
         return true;
+    }
+
+    // The coefficient along the photon's present segment: its own, or in a birefringent stone its wave's:
+    // alpha_o for the ordinary wave (and near the axis, where both are ordinary-like), and for the
+    // extraordinary wave alpha_o cos^2 theta + alpha_e sin^2 theta, theta between its wave normal and the
+    // axis (docs/optics.md, "Absorption"; the walk-off between wave normal and ray, cos rho > 0.9999 for gem
+    // birefringences, is left out).
+    static float segmentAbsorption(const TraceBase& s, const Photon& ph) {
+        if (!s.birefringent() || ph.coherent || ph.wave.mode != WaveMode::Extraordinary) return ph.absorption;
+        const double c = dot(ph.wave.waveNormal, s.opticAxis());
+        return float(extraordinaryAbsorption(ph.absorption, ph.absorptionE, c * c));
     }
 
     // A view ray: a photon's path run backwards (reciprocity), from `eye` along `dir` (stone frame) at index
@@ -317,25 +363,26 @@ class PhotonWalker {
         }
         void trapped(uint32_t) {}
         void lost(uint32_t) {}
+        void absorbed(uint32_t) { outcome = PhotonOutcome::Absorbed; }
     };
 
-    // start() for one band of photon `index`, at index of refraction n: the light ray and every later draw
+    // start() for one band of photon `index`, at its index and wavelength: the light ray and every later draw
     // are the plain photon's (the wavelength draw skipped), so a band's draws part from another's only where
     // their choices differ.
     template <class Intersector, class Visitor>
-    static bool startBand(const TraceBase& s, const Intersector& isect, uint64_t index, float n,
+    static bool startBand(const TraceBase& s, const Intersector& isect, uint64_t index, const FireBand& band,
                           Visitor& visit, Photon& ph) {
         ph.rng = Rng(s.settings().seed, index);
         ph.bounces = 0;
         const LightRay ray = s.scene().light().sample(ph.rng);
         if (s.scene().dispersive()) ph.rng.uniform();  // start()'s wavelength
-        ph.setIndex(s, n);
+        setBand(s, band, ph);
         return enter(s, isect, ray, visit, ph);
     }
 
-    // Photon `index` at each index of refraction of `bands` in turn, one band at a time, into out[k] (the
+    // Photon `index` at each band of `bands` in turn, one band at a time, into out[k] (the
     // fire trace's reference walk; bandPackets() takes the same steps).
-    static void walkBands(const TraceBase& s, uint64_t index, std::span<const float> bands,
+    static void walkBands(const TraceBase& s, uint64_t index, std::span<const FireBand> bands,
                           std::span<BandExit> out) {
         if (s.scene().convex()) {
             walkBands(s, *s.scene().convex(), index, bands, out);
@@ -345,7 +392,7 @@ class PhotonWalker {
     }
     template <class Intersector>
     static void walkBands(const TraceBase& s, const Intersector& isect, uint64_t index,
-                          std::span<const float> bands, std::span<BandExit> out) {
+                          std::span<const FireBand> bands, std::span<BandExit> out) {
         for (size_t k = 0; k < bands.size(); ++k) {
             Photon ph;
             if (startBand(s, isect, index, bands[k], out[k], ph)) {
@@ -357,7 +404,7 @@ class PhotonWalker {
     // The bands of photons [begin, end): band k of photon i into exits[(i - begin) * bands.size() + k], as
     // walkBands() gives it. A convex stone's bands are walked a packet at a time, one (photon, band) per
     // lane, unless the stone is birefringent.
-    static void blockBands(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const float> bands,
+    static void blockBands(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const FireBand> bands,
                            std::span<BandExit> exits) {
         if (s.scene().convex() && !s.birefringent()) {
             bandPackets(s, begin, end, bands, exits);
@@ -386,7 +433,7 @@ class PhotonWalker {
     // target. Each photon takes exactly the steps walk() takes, so the tally has the same bits.
     static void packets(const TraceBase& s, uint64_t begin, uint64_t end, Tally& t);
     // The packet walk of blockBands(), on a convex stone. Neither walks a birefringent stone.
-    static void bandPackets(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const float> bands,
+    static void bandPackets(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const FireBand> bands,
                             std::span<BandExit> exits);
 
     // Photons [begin, end) into one thread's tally.
@@ -453,6 +500,7 @@ class PhotonWalker {
             ++st.trapped;
             ++st.lost;
         }
+        void absorbed(uint32_t) { ++st.absorbed; }
     };
     static_assert(kWeightScale == double(1ULL << 30), "weightSquareSum's shift assumes a 2^30 scale");
 
@@ -480,6 +528,10 @@ class PhotonWalker {
             out.bounces = bounces;
         }
         void lost(uint32_t bounces) { trapped(bounces); }
+        void absorbed(uint32_t bounces) {
+            out.outcome = PhotonOutcome::Absorbed;
+            out.bounces = bounces;
+        }
     };
 };
 

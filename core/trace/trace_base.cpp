@@ -31,6 +31,11 @@ TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
         // 550 nm over the girdle diameter.
         coherentSin2_ = 275.0 / (std::abs(d[2] - d[0]) * settings.sizeMm * 1e6);
     }
+    if (const std::optional<AbsorptionSpectrum>& a = material.absorption()) {
+        absorbs_ = a->absorbs();
+        mixedAbsorption_ = !birefringent_ && material.optic() == Optic::Uniaxial;
+        mmPerUnit_ = settings.sizeMm / scene.diameter();
+    }
     if (scene.light().collimated() && !scene.dispersive() && !polarized()) {
         // The same float operations as PhotonWalker::enter, so a photon's fate is bit for bit the same.
         const Vec3f d(scene.light().direction());
@@ -46,6 +51,21 @@ TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
 
 float TraceBase::extraordinaryIndex(double wavelengthNm) const {
     return float(scene_.material().principalIndices(scene_.dispersive() ? wavelengthNm : Material::kSodiumD)[2]);
+}
+
+float TraceBase::absorption(float wavelengthNm) const {
+    if (!absorbs_) return 0;
+    const AbsorptionSpectrum& a = *scene_.material().absorption();
+    const double o = a.ordinary(wavelengthNm);
+    // Unpolarised light meets the o and e coefficients in the ratio an isotropic set of fields would: two
+    // axes across c to one along it (an approximation, docs/optics.md).
+    const double alpha = mixedAbsorption_ ? (2 * o + a.extraordinary(wavelengthNm)) / 3 : o;
+    return float(alpha * mmPerUnit_);
+}
+
+float TraceBase::extraordinaryAbsorption(float wavelengthNm) const {
+    if (!absorbs_) return 0;
+    return float(scene_.material().absorption()->extraordinary(wavelengthNm) * mmPerUnit_);
 }
 
 }  // namespace facetlight

@@ -57,6 +57,15 @@ class TraceBase {
         return birefringent_ && 1 - c * c < coherentSin2_;
     }
 
+    // Absorption (docs/optics.md, "Absorption"): whether the material absorbs at all, and a photon's
+    // coefficient per mesh unit at a wavelength (the stone scaled to size_mm): alpha_o for an isotropic
+    // material and for the ordinary wave of a birefringent trace, whose extraordinary wave also takes
+    // extraordinaryAbsorption(); unpolarised through a uniaxial stone, the mixture 2/3 alpha_o + 1/3 alpha_e.
+    bool absorbs() const { return absorbs_; }
+    float absorption(float wavelengthNm) const;
+    float extraordinaryAbsorption(float wavelengthNm) const;
+    const Vec3& opticAxis() const { return opticAxis_; }
+
     // What the tallies need: whether a facet is on the crown side (table or crown), the world's vertical in
     // the stone's frame, the exit-angle bins, cos of the head-shadow half-angle (2 without a head cone) and
     // of each return cone.
@@ -73,6 +82,9 @@ class TraceBase {
     std::optional<Vec3f> polarizer_;  // the light's polariser axis, stone frame
     bool birefringent_ = false;
     Vec3 opticAxis_;
+    bool absorbs_ = false;
+    bool mixedAbsorption_ = false;  // unpolarised through a uniaxial stone
+    double mmPerUnit_ = 1;
     float birefringenceD_ = 0;
     double coherentSin2_ = 0;  // sin^2 of the half-angle of the cone around the axis where the waves stay in phase
     std::vector<uint8_t> crownSide_;  // 1 for table and crown facets

@@ -54,6 +54,11 @@ const Schema<TraceSettings>& traceSettingsSchema() {
             optionalNumber("n", inherited<TraceSettings>(&TraceSettings::constantIndex),
                            {.lo = 1, .hi = 10, .openLo = true},
                            {"--n", "A constant refractive index instead of the material's"}),
+            table("absorption", inherited<TraceSettings>(&TraceSettings::absorption), "AbsorptionSpectrum",
+                  &readAbsorption, &toJson,
+                  {"--absorption",
+                   "The material's absorption spectrum: JSON {\"wavelength_nm\": [...], \"ordinary_per_mm\": "
+                   "[...], \"extraordinary_per_mm\": [...]} inline, or a file holding it"}),
             boolean("dispersion", inherited<TraceSettings>(&TraceSettings::dispersion),
                     {"--no-dispersion", "Trace every photon at 589.3 nm"}),
             count("max_bounces", &TraceSettings::maxBounces, 1, 100000,
@@ -75,6 +80,14 @@ const Schema<TraceSettings>& traceSettingsSchema() {
         // The material's name matters only without an `n` to override it.
         [](const TraceSettings& s, const std::string& path) {
             if (!s.constantIndex) readChoice(s.material, fieldPath(path, "material"), materialChoices());
+            // An extraordinary spectrum needs a uniaxial material ("auto" and `n` are isotropic).
+            const bool uniaxial = !s.constantIndex && s.material != "auto" &&
+                                  Material::byName(s.material).optic() == Optic::Uniaxial;
+            if (s.absorption && !s.absorption->extraordinaryPerMm.empty() && !uniaxial) {
+                const std::string field = fieldPath(path, "absorption.extraordinary_per_mm");
+                throw Error(field, field + " needs a uniaxial material (got " +
+                                       (s.constantIndex ? std::string("a constant n") : s.material) + ")");
+            }
             if (s.light.polarizerDeg && s.polarization == PolarizationMode::Off) {
                 const std::string field = fieldPath(path, "light.polarizer_deg");
                 throw Error(field, field +

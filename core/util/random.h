@@ -30,6 +30,12 @@ class Rng {
     // The stream's position, for a packet of photons that draws from one stream per lane: the next
     // number is mix64(state() + kGamma).
     constexpr uint64_t state() const { return state_; }
+    // The stream at a position state() gave: a lane's stream drawn from one photon at a time.
+    static constexpr Rng resume(uint64_t state) {
+        Rng r(0, 0);
+        r.state_ = state;
+        return r;
+    }
     static constexpr uint64_t kGamma = 0x9e3779b97f4a7c15ULL;
     static constexpr uint64_t kStreamOffset = 0x632be59bd9b4e019ULL;
 

@@ -45,6 +45,7 @@ struct ViewRay {
     }
     void trapped(uint32_t) { seen = Seen::Trapped; }
     void lost(uint32_t) { seen = Seen::Trapped; }
+    void absorbed(uint32_t) { seen = Seen::Trapped; }  // dark, as trapped light
 };
 
 // The largest distance of a vertex from the stone's axis: the disc the face-up points are drawn on.

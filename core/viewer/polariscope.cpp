@@ -44,6 +44,7 @@ struct AnalyserCount {
     }
     void trapped(uint32_t) {}
     void lost(uint32_t) {}
+    void absorbed(uint32_t) {}
 };
 
 }  // namespace

@@ -67,7 +67,7 @@ SpotTally spotFire(const TraceBase& trace, const ViewerSettings& settings, RunCo
         for (int k = 0; k < settings.tilts; ++k) poses.emplace_back(settings.tiltDeg(k), settings.turnDeg(a));
     const Vec3 centre = stone.bounds.center();
     const double radius = sphereRadius(stone, centre) * 1.001;
-    const std::array<float, kFireBands> bands = fireBandIndices(scene);
+    const std::array<FireBand, kFireBands> bands = fireBands(scene);
     const double cosPupil = std::cos(std::atan(settings.pupilMm / 2 / settings.distanceMm) * 2);
     const uint64_t streams = mix64(trace.settings().seed ^ kSpotStreams);
 
@@ -91,7 +91,7 @@ SpotTally spotFire(const TraceBase& trace, const ViewerSettings& settings, RunCo
                 for (int b = 0; b < kFireBands; ++b) {
                     PhotonWalker::Photon ph;
                     ph.rng = rng;
-                    ph.setIndex(trace, bands[b]);
+                    PhotonWalker::setBand(trace, bands[b], ph);
                     if (PhotonWalker::enter(trace, scene, ray, exit[b], ph))
                         while (PhotonWalker::step(trace, scene, exit[b], ph)) {
                         }

@@ -73,6 +73,8 @@ std::vector<json> badValues(const FieldInfo& f) {
             return {"nope", 3};
         case FieldType::Vec3:
             return {json::array({0, 0}), json::array({0, "x", 0}), 2};
+        case FieldType::Table:
+            return {5, "x", json::array()};
         case FieldType::Object:
             break;
     }
@@ -194,6 +196,7 @@ TEST(SettingsSchema, JsonRoundTrip) {
     t.light = {LightModelKind::Point, {1, 2, -3}, 12.5, 30, SkyKind::Cosine, {4, 5, 60}, 45};
     t.fire = {true, 3, 400};
     t.sizeMm = 8;
+    t.absorption = AbsorptionSpectrum{{400, 700}, {0.5, 0.25}, {}};  // one spectrum: n makes it isotropic
     t.viewer = ViewerSettings::forSetUp(ViewerSetUp::Close);
     t.viewer.enabled = false;
     t.viewer.distanceMm = 300;
@@ -349,6 +352,10 @@ void expectOpenApiAgrees(const json& api, const FieldInfo& f, const std::string&
             break;
         case FieldType::Vec3:
             EXPECT_EQ(api.value("$ref", ""), "#/components/schemas/Vec3");
+            break;
+        case FieldType::Table:
+            EXPECT_EQ(api.value("nullable", false), true);
+            EXPECT_EQ(api.at("allOf").at(0).value("$ref", ""), "#/components/schemas/" + f.ref);
             break;
         case FieldType::Object: {
             EXPECT_EQ(api.value("type", ""), "object");

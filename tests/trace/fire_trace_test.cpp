@@ -214,6 +214,17 @@ TEST(FireTrace, PacketWalkReproducesTheOneByOneWalk) {
         s.polarization = PolarizationMode::On;
         s.light.polarizerDeg = 30;
     });
+    // Each band absorbs at its own wavelength: red little, blue much.
+    const AbsorptionSpectrum absorbing{{430, 700}, {0.1, 0.01}, {}};
+    brilliant("absorbing, collimated", [&](TraceSettings& s) { s.absorption = absorbing; });
+    brilliant("absorbing, hemisphere", [&](TraceSettings& s) {
+        s.absorption = absorbing;
+        s.light.model = LightModelKind::Hemisphere;
+    });
+    brilliant("absorbing, no dispersion", [&](TraceSettings& s) {
+        s.absorption = absorbing;
+        s.dispersion = false;
+    });
     cases.front().settings.photons = kPhotonBlock + 300;
     test::forEachSimdTarget([&] {
         for (const Case& c : cases) {

@@ -61,7 +61,7 @@ TraceSettings baseSettings(uint64_t photons) {
 }
 
 void expectConservation(const FacetStats& s) {
-    EXPECT_EQ(s.entered, s.exited + s.trapped);
+    EXPECT_EQ(s.entered, s.exited + s.trapped + s.absorbed);
     EXPECT_EQ(s.hit, s.entered + s.reflectedAtEntry);
     uint64_t entering = 0, reflected = 0, leaving = 0;
     for (const FacetCounts& f : s.facets) {
@@ -239,6 +239,9 @@ FacetStats tallyOfPaths(const TraceBase& trace) {
             case PhotonOutcome::Trapped:
                 ++stats.hit, ++stats.entered, ++stats.facets[path.entryFacet].entering, ++stats.trapped;
                 break;
+            case PhotonOutcome::Absorbed:
+                ++stats.hit, ++stats.entered, ++stats.facets[path.entryFacet].entering, ++stats.absorbed;
+                break;
             case PhotonOutcome::Exited: {
                 ++stats.hit, ++stats.entered, ++stats.facets[path.entryFacet].entering, ++stats.exited;
                 ++stats.facets[path.exitFacet].leaving;
@@ -268,7 +271,14 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
         SkyKind sky = SkyKind::Uniform;
         PolarizationMode polarization = PolarizationMode::Off;
         std::optional<double> polarizerDeg = std::nullopt;
+        bool absorbing = false;
+        std::string material = "diamond";
     };
+    // Absorbing more at the ends of the spectrum, differently for the extraordinary wave.
+    const AbsorptionSpectrum spectrum{{400, 550, 700}, {0.3, 0.05, 0.15}, {0.1, 0.25, 0.02}};
+    const AbsorptionSpectrum isotropic{spectrum.wavelengthNm, spectrum.ordinaryPerMm, {}};
+    const auto U = SkyKind::Uniform;
+    const auto On = PolarizationMode::On, Off = PolarizationMode::Off;
     for (const Case& c :
          {Case{"collimated", LightModelKind::Collimated, false, 0, 64},
           Case{"collimated, tilted, dispersion", LightModelKind::Collimated, true, 20, 64},
@@ -278,7 +288,48 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
           Case{"polarised, hemisphere, dispersion", LightModelKind::Hemisphere, true, 0, 64, SkyKind::Uniform,
                PolarizationMode::On},
           Case{"polarised, collimated through a polariser, tilted", LightModelKind::Collimated, false, 20, 64,
-               SkyKind::Uniform, PolarizationMode::On, 30.0}}) {
+               SkyKind::Uniform, PolarizationMode::On, 30.0},
+          Case{"absorbing, collimated", LightModelKind::Collimated, false, 0, 64, U, Off, {}, true},
+          Case{"absorbing, collimated, tilted, dispersion",
+               LightModelKind::Collimated,
+               true,
+               20,
+               64,
+               U,
+               Off,
+               {},
+               true},
+          Case{
+              "absorbing, hemisphere, dispersion", LightModelKind::Hemisphere, true, 0, 64, U, Off, {}, true},
+          Case{"absorbing, polarised, hemisphere, dispersion",
+               LightModelKind::Hemisphere,
+               true,
+               0,
+               64,
+               U,
+               On,
+               {},
+               true},
+          Case{"absorbing tourmaline, o/e mixture, collimated, dispersion",
+               LightModelKind::Collimated,
+               true,
+               10,
+               64,
+               U,
+               Off,
+               {},
+               true,
+               "tourmaline"},
+          Case{"absorbing tourmaline, birefringent, hemisphere",
+               LightModelKind::Hemisphere,
+               true,
+               0,
+               64,
+               U,
+               On,
+               {},
+               true,
+               "tourmaline"}}) {
         SCOPED_TRACE(c.what);
         TraceSettings settings = baseSettings(2 * kPhotonBlock + 1000);
         settings.light.model = c.light;
@@ -288,8 +339,11 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
         settings.maxBounces = c.maxBounces;
         settings.polarization = c.polarization;
         settings.light.polarizerDeg = c.polarizerDeg;
+        settings.material = c.material;
+        if (c.absorbing) settings.absorption = c.material == "diamond" ? isotropic : spectrum;
         const Scene scene(stone, settings);
         const TraceBase trace(scene, settings);
+        ASSERT_EQ(trace.absorbs(), c.absorbing);
         FacetStats traced(stone.facets.size());
         traceBlocks(trace, 0, blockCount(settings.photons), 1, traced);
         const FacetStats paths = tallyOfPaths(trace);
@@ -298,6 +352,7 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
         EXPECT_EQ(paths.reflectedAtEntry, traced.reflectedAtEntry);
         EXPECT_EQ(paths.exited, traced.exited);
         EXPECT_EQ(paths.trapped, traced.trapped);
+        EXPECT_EQ(paths.absorbed, traced.absorbed);
         EXPECT_EQ(paths.crownReturn, traced.crownReturn);
         EXPECT_EQ(paths.weightSum, traced.weightSum);
         EXPECT_EQ(paths.histogram[0], traced.histogram[0]);
@@ -309,7 +364,13 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
             internalReflections += traced.facets[f].internalReflections;
         }
         EXPECT_EQ(paths.facets[0].internalReflections, internalReflections);
-        EXPECT_GT(traced.trapped, 0u);
+        expectConservation(traced);
+        if (c.absorbing) {
+            EXPECT_GT(traced.absorbed, traced.hit / 20);
+        } else {
+            EXPECT_GT(traced.trapped, 0u);
+            EXPECT_EQ(traced.absorbed, 0u);
+        }
     }
 }
 
