@@ -985,7 +985,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const text = await page.textContent('[data-section="design"]');
     assert.match(text, /Double refraction\s*uniaxial, birefringence 0\.008; traced: each ray splits into its ordinary and extraordinary waves \(optic axis 30° from the table's normal, toward 45° from x\)/);
     assert.match(text, /Polarisation\s*on: each photon carries its polarisation through every facet/);
-    assert.match(await page.textContent('#view-result .lede'), /· polarised/);
+    assert.doesNotMatch(await page.textContent('#view-result .lede'), /unpolarised/, 'polarised is the default, not named');
     // The polariscope's animation with its verdict, and its chart.
     await page.waitForSelector('figure.viewer-polariscope img[src$="polariscope.webp"]');
     assert.match(await page.textContent('figure.viewer-polariscope figcaption'), /^Polariscope: (dark at .* doubly refracting|no blink)/);
@@ -995,6 +995,34 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.match(await page.textContent('figure.viewer-doubling figcaption'),
       /^Doubling: through the table 0\.0\d\d mm \(quartiles .*\), .* % of the girdle, .*′ through a 10× loupe; .* seen 30° from the optic axis$/);
     await shot('15b-result-polarised');
+    // The same stone unpolarised, compared: what polarisation changes in each figure, and each job's crystal optics.
+    const offRes = await fetch(`${baseUrl}/api/jobs`, {
+      method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ ...sent, polarization: 'off', viewer: { enabled: false }, polariscope: undefined, doubling: undefined }),
+    });
+    const offId = (await offRes.json()).id;
+    assert.equal(offRes.status, 202);
+    for (const jobId of [id, offId]) {  // the comparison reads finished jobs only
+      const deadline = Date.now() + JOB_TIMEOUT_MS;
+      while ((await (await fetch(`${baseUrl}/api/jobs/${jobId}`)).json()).state !== 'succeeded') {
+        assert.ok(Date.now() < deadline, `job ${jobId} did not finish`);
+        await new Promise((r) => setTimeout(r, 200));
+      }
+    }
+    await page.evaluate((ids) => { location.hash = `#/compare/${ids}`; }, `${id},${offId}`);
+    await page.waitForSelector('[data-section="crystal-compare"] table.polarization-effect', { timeout: JOB_TIMEOUT_MS });
+    const effect = await page.$('[data-section="crystal-compare"] table.polarization-effect');
+    assert.equal(await effect.getAttribute('data-on'), id);
+    assert.equal(await effect.getAttribute('data-off'), offId);
+    const rows = await effect.$$eval('tbody tr', (trs) => trs.map((tr) => tr.textContent));
+    assert.equal(rows.length, 7, rows.join(' | '));
+    assert.ok(rows.every((r) => /^[A-Z][^+−]*[+−][\d.]+ pts ± [\d.]+.*(real|within noise)$/.test(r)), rows.join(' | '));
+    const cards = await page.$$eval('.crystal-card', (cs) => cs.map((c) => [c.dataset.id, c.querySelector('.traced-as').textContent]));
+    assert.deepEqual(cards.map(([cid]) => cid).sort(), [id, offId].sort());
+    assert.match(cards.find(([cid]) => cid === id)[1], /^polarised · sapphire, n 1\.7\d\d · .*splits/);
+    assert.match(cards.find(([cid]) => cid === offId)[1], /^unpolarised · sapphire/);
+    assert.match(await page.textContent(`.crystal-card[data-id="${id}"]`), /Polariscope: .*Doubling: through the table/);
+    await shot('15c-compare-polarised-unpolarised');
   });
 
   test('a doubly refracting material is named on the result page with its birefringence', async () => {

@@ -172,33 +172,42 @@ TEST(AbsorbingTrace, AClearSpectrumChangesNoBit) {
     }
 }
 
-// An absorbing trace's bits, pinned: a change to the walk, the draws or the tallies shows here. The same for
-// any thread count.
+// An absorbing trace's bits, pinned, unpolarised and polarised: a change to the walk, the draws or the tallies
+// shows here. The same for any thread count.
 TEST(AbsorbingTrace, PinnedBits) {
     const Stone& stone = test::roundBrilliant();
-    TraceSettings s;
-    s.photons = 20'000;
-    s.seed = 29;
-    s.light.model = LightModelKind::Hemisphere;
-    s.absorption = AbsorptionSpectrum{{400, 550, 700}, {0.2, 0.05, 0.1}, {}};
-    FacetStats first;
-    for (int threads : {1, 3}) {
-        s.threads = threads;
-        const TraceResult r = test::traceStone(stone, s);
-        expectBalanced(r.stats);
-        if (threads == 1) {
-            first = r.stats;
-        } else {
-            EXPECT_TRUE(r.stats == first);
+    const struct {
+        PolarizationMode mode;
+        uint64_t exited, absorbed, crownReturn, weightSum;
+    } pins[] = {{PolarizationMode::Off, 3148, 6112, 2003, 1508724590447u},
+                {PolarizationMode::On, 3163, 6097, 1999, 1504300663063u}};
+    for (const auto& pin : pins) {
+        TraceSettings s;
+        s.photons = 20'000;
+        s.seed = 29;
+        s.polarization = pin.mode;
+        s.light.model = LightModelKind::Hemisphere;
+        s.absorption = AbsorptionSpectrum{{400, 550, 700}, {0.2, 0.05, 0.1}, {}};
+        FacetStats first;
+        for (int threads : {1, 3}) {
+            s.threads = threads;
+            const TraceResult r = test::traceStone(stone, s);
+            expectBalanced(r.stats);
+            if (threads == 1) {
+                first = r.stats;
+            } else {
+                EXPECT_TRUE(r.stats == first);
+            }
         }
+        const std::string mode(kPolarizationNames.name(pin.mode));
+        EXPECT_EQ(first.hit, 11775u) << mode;
+        EXPECT_EQ(first.entered, 9260u) << mode;
+        EXPECT_EQ(first.exited, pin.exited) << mode;
+        EXPECT_EQ(first.absorbed, pin.absorbed) << mode;
+        EXPECT_EQ(first.trapped, 0u) << mode;
+        EXPECT_EQ(first.crownReturn, pin.crownReturn) << mode;
+        EXPECT_EQ(first.weightSum, pin.weightSum) << mode;
     }
-    EXPECT_EQ(first.hit, 11775u);
-    EXPECT_EQ(first.entered, 9260u);
-    EXPECT_EQ(first.exited, 3148u);
-    EXPECT_EQ(first.absorbed, 6112u);
-    EXPECT_EQ(first.trapped, 0u);
-    EXPECT_EQ(first.crownReturn, 2003u);
-    EXPECT_EQ(first.weightSum, 1508724590447u);
 }
 
 }  // namespace

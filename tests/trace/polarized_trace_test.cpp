@@ -54,6 +54,7 @@ struct AnalyserTally {
     }
     void trapped(uint32_t) {}
     void lost(uint32_t) {}
+    void absorbed(uint32_t) {}
 };
 
 // The brilliant's report with `settings` at 1, 2 and 3 threads, which must agree bit for bit (timing and the

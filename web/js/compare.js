@@ -7,6 +7,7 @@ import { decimalsFor, fmtNumber, fmtPctErr, shortId } from './format.js';
 import { pictures, scaleEnd } from './heatmap.js';
 import { jobName } from './meshes.js';
 import { jobSummary } from './progress.js';
+import { crystalCompare } from './compare_crystal.js';
 import { viewerCompare } from './compare_viewer.js';
 import { regionTable } from './result.js';
 import { verdictCompare } from './verdict.js';
@@ -50,7 +51,7 @@ export async function showCompare(ids) {
   if (failed.length) {
     parts.push(h('p', { class: 'form-error', role: 'alert' }, failed.map((f) => `Job ${shortId(f.id)}: ${f.error}`).join('; ')));
   }
-  if (ok.length) parts.push(...[verdictCompare(ok, entryName), ranking(ok), compareCards(ok), viewerCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName)].filter(Boolean));
+  if (ok.length) parts.push(...[verdictCompare(ok, entryName), ranking(ok), compareCards(ok), viewerCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName), crystalCompare(ok, entryName)].filter(Boolean));
   body.replaceChildren(...parts);
 }
 

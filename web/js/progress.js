@@ -52,8 +52,8 @@ export function jobSummary(settings) {
   if (!settings) return '';
   const parts = [`${fmtInt(settings.photons)} photons`, settings.material === 'auto' ? 'its design\'s index or diamond' : humanize(settings.material || ''), lightText(settings)];
   if (settings.dispersion === false) parts.push('no dispersion');
-  if (settings.polarization === 'on') {
-    parts.push(settings.light && settings.light.polarizer_deg != null ? `polarised, polariser at ${settings.light.polarizer_deg}°` : 'polarised');
-  }
+  // Polarised is the default: a summary names the exceptions.
+  if (settings.polarization === 'off') parts.push('unpolarised');
+  else if (settings.light && settings.light.polarizer_deg != null) parts.push(`polariser at ${settings.light.polarizer_deg}°`);
   return parts.filter(Boolean).join(' · ');
 }

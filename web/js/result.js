@@ -169,13 +169,13 @@ export function scintillationText(tilt) {
 }
 
 // The polariscope's verdict: where the stone goes dark as it turns, or that it does not blink.
-function polariscopeText(p) {
+export function polariscopeText(p) {
   if (!p.blinks) return 'Polariscope: no blink as it turns (singly refracting, or seen along an optic axis)';
   return `Polariscope: dark at ${p.dark_angles_deg.map((a) => `${a}°`).join(', ')} of a turn: doubly refracting`;
 }
 
 // The doubling measured through the table, or why the stone shows one image.
-function doublingText(d) {
+export function doublingText(d) {
   if (!d.doubly_refracting) return `Doubling: none, ${d.traced_as}`;
   const t = d.table;
   return `Doubling: through the table ${t.median_mm.toFixed(3)} mm (quartiles ${t.quartiles_mm.map((q) => q.toFixed(3)).join('–')} mm), `
