@@ -366,6 +366,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const legible = await assertLegiblePictures('#result-body .pictures');
     const heatmapWidth = legible.find((p) => p.src.endsWith('heatmap.png')).width;
     assert.ok(heatmapWidth >= 1000, `the heat-map shown ${Math.round(heatmapWidth)} px wide`);
+    await page.waitForSelector('.pic-heatmap svg.heatmap-overlay');
     const overlay = await page.$eval('.pic-heatmap svg.heatmap-overlay', (el) => el.getBoundingClientRect().width);
     assert.ok(Math.abs(overlay - heatmapWidth) < 1, `the facets' shapes (${overlay} px) lie over the picture (${heatmapWidth} px)`);
 
@@ -394,7 +395,37 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(err, (stats.regions.table.share_stderr * 100).toFixed(decimals));
     assert.equal(shown, (stats.regions.table.share * 100).toFixed(decimals));
 
-    const rows = () => page.$$eval('table.facets tbody tr', (trs) => trs.map((tr) => Number(tr.dataset.facet)));
+    // Grouped by tier at first, each tier closed: its facets' sums, the share with its error.
+    const tierOf = (name) => name.replace(/_\d+$/, '');
+    const tierNames = [...new Set(stats.facets.map((f) => tierOf(f.name)))];
+    const tierRows = await page.$$eval('table.facets tr.tier-row', (trs) => trs.map((tr) => [tr.querySelector('.tier-toggle').dataset.tier, tr.textContent]));
+    assert.deepEqual(tierRows.map(([t]) => t).sort(), [...tierNames].sort());
+    assert.equal(await page.locator('table.facets tr[data-facet]').count(), 0, 'every tier closed');
+    const byTierShare = tierNames.map((t) => [t, stats.facets.filter((f) => tierOf(f.name) === t).reduce((s, f) => s + f.leaving_share, 0)])
+      .sort((a, b) => b[1] - a[1]);
+    assert.equal(tierRows[0][0], byTierShare[0][0], 'the tier sending most light out first');
+    const hit = stats.totals.hit;
+    const [topTier, topShare] = byTierShare[0];
+    const shareText = await page.textContent(`table.facets tr.tier-row:has(button[data-tier="${topTier}"]) .share-text`);
+    const [, sharePct, errPct] = shareText.match(/^([\d.]+) % ± ([\d.]+)$/) || [];
+    assert.ok(errPct, shareText);
+    assert.ok(Math.abs(Number(sharePct) - topShare * 100) < 0.06, `${shareText} vs ${topShare}`);
+    assert.ok(Math.abs(Number(errPct) - 100 * Math.sqrt(topShare * (1 - topShare) / hit)) < 0.06, `${shareText}: binomial error of ${hit}`);
+    // Opening a tier shows its facets, each share with its error.
+    const starTier = tierNames.find((t) => stats.facets.filter((f) => tierOf(f.name) === t).length > 1);
+    await page.click(`button.tier-toggle[data-tier="${starTier}"]`);
+    assert.equal(await page.getAttribute(`button.tier-toggle[data-tier="${starTier}"]`, 'aria-expanded'), 'true');
+    const opened = stats.facets.filter((f) => tierOf(f.name) === starTier);
+    assert.equal(await page.locator('table.facets tr[data-facet]').count(), opened.length);
+    assert.match(await page.textContent(`table.facets tr[data-facet="${opened[0].id}"] .share-text`), /^[\d.]+ % ± [\d.]+$/);
+    await page.click(`button.tier-toggle[data-tier="${starTier}"]`);
+    // Hovering a facet of a closed tier on the heat-map lights its tier.
+    const pavilionFacet = stats.facets.find((f) => f.region === 'pavilion');
+    await page.hover(`.pic-heatmap polygon[data-facet="${pavilionFacet.id}"]`);
+    assert.equal(await page.locator(`table.facets tr.tier-row.linked:has(button[data-tier="${tierOf(pavilionFacet.name)}"])`).count(), 1);
+    // Ungrouped, every facet in one sortable list.
+    await page.uncheck('.facet-grouping input');
+    const rows = () => page.$$eval('table.facets tr[data-facet]', (trs) => trs.map((tr) => Number(tr.dataset.facet)));
     assert.equal((await rows()).length, stats.facets.length);
     // Default order: most light leaving first.
     const byShare = [...stats.facets].sort((a, b) => b.leaving_share - a.leaving_share || a.id - b.id).map((f) => f.id);
@@ -433,18 +464,20 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.goto(`${baseUrl}/#/jobs/${jobIds.brilliant}`);
     await page.waitForSelector('#result-body .figures');
     await picturesLoaded('#result-body .pictures');
+    await page.check('.facet-grouping input');  // the report prints the facets by tier
     await page.emulateMedia({ media: 'print' });
     try {
       for (const sel of ['.site-header', '.site-footer', '.back-link', '.downloads', '#job-form', '#sweep-form']) {
         assert.equal(await page.locator(sel).first().isVisible(), false, `${sel} is printed`);
       }
-      const buttons = await page.$$eval('#main button:not(.sort)', (bs) => bs.filter((b) => b.offsetParent !== null).length);
+      const buttons = await page.$$eval('#main button:not(.sort):not(.tier-toggle)', (bs) => bs.filter((b) => b.offsetParent !== null).length);
       assert.equal(buttons, 0, 'no button is printed');
       for (const sel of ['[data-section="verdict"]', '.figures', '.pictures img >> nth=0', '#stone-title', 'table.regions', 'table.facets th']) {
         assert.equal(await page.locator(sel).first().isVisible(), true, `${sel} is missing from the print`);
       }
-      // The facet table's column titles print as text, not as buttons.
+      // The facet table's column titles and tiers print as text, not as buttons.
       assert.equal(await page.$eval('table.facets button.sort', (b) => getComputedStyle(b).borderTopStyle), 'none');
+      assert.equal(await page.$eval('table.facets button.tier-toggle', (b) => getComputedStyle(b).borderTopStyle), 'none');
       const pdf = await page.pdf({ format: 'A4', printBackground: true });
       fs.mkdirSync(screenshotDir, { recursive: true });
       fs.writeFileSync(path.join(screenshotDir, '05b-result-print.pdf'), pdf);
@@ -629,6 +662,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.setChecked('#f-tilt-series', false);
     await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
     await page.waitForSelector('[data-section="viewer"]');
+    await page.locator('[data-section="viewer"]').scrollIntoViewIfNeeded();  // its pictures load lazily
     const pics = await picturesLoaded('[data-section="viewer"]');
     assert.deepEqual(pics.map((p) => p.src.split('/').pop()), ['aset.png', 'tilt.webp', 'tilt.png']);
     // The browser decodes the animated WebP.
@@ -851,7 +885,8 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     });
     const { id } = await res.json();
     await page.goto(`${baseUrl}/#/sweeps/${id}`);
-    assert.match(await page.textContent('#sweep-tooltip'), /^Hover a point/, 'the last sweep\'s point is not shown');
+    // The last sweep's point is not shown once the new sweep's page is drawn.
+    await page.waitForFunction(() => /^Hover a point/.test(document.querySelector('#sweep-tooltip').textContent), null, { timeout: 5000 });
     const api = [];
     const shown = [];
     for (;;) {
