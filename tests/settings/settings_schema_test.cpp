@@ -265,7 +265,8 @@ TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
     doubling.add(&app, doublingSettingsSchema().fields(), doublingSettingsSchema().write(DoublingSettings{}),
                  "doubling");
     cli::SettingsFlags colour;  // the render command's
-    colour.add(&app, colourSettingsSchema().fields(), colourSettingsSchema().write(ColourSettings{}), "colour");
+    colour.add(&app, colourSettingsSchema().fields(), colourSettingsSchema().write(ColourSettings{}),
+               "colour");
     std::set<std::string> flags;
     forEachJobField([&](const std::string& path, const FieldInfo& f) {
         EXPECT_NE(app.get_option_no_throw(f.doc.flag), nullptr) << path;
