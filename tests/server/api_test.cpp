@@ -342,6 +342,30 @@ TEST_F(ServiceTest, TheDoublingIsLinkedServedAndItsFieldsChecked) {
     expectProblem(submit(bad), 422, "doubling.loupe");
 }
 
+TEST_F(ServiceTest, TheColourViewIsLinkedServedAndItsFieldsChecked) {
+    json job = smallJob();
+    job["absorption"] = {{"wavelength_nm", {400, 700}}, {"ordinary_per_mm", {0.05, 0.5}}};
+    job["colour"] = {{"picture_size", 32}, {"illuminant", "A"}};
+    const std::string id = submitOk(job);
+    const json done = waitFinished(id);
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    const std::string self = "/api/jobs/" + id;
+    EXPECT_EQ(done["links"]["colour"], self + "/colour.png");
+    auto p = client_->Get(self + "/colour.png");
+    ASSERT_TRUE(p && p->status == 200);
+    EXPECT_EQ(p->get_header_value("Content-Type"), "image/png");
+    const json stats = json::parse(client_->Get(self + "/stats")->body);
+    EXPECT_EQ(stats["colour"]["illuminant"], "A");
+    EXPECT_GT(stats["colour"]["pixels"].get<uint64_t>(), 0u);
+    EXPECT_LT(stats["colour"]["mean_colour"]["b"].get<double>(), 0);  // blue passes: a bluish stone
+
+    json bad = smallJob();
+    bad["colour"] = {{"illuminant", "D50"}};
+    expectProblem(submit(bad), 422, "colour.illuminant");
+    bad["colour"] = {{"wavelengths", 2}};
+    expectProblem(submit(bad), 422, "colour.wavelengths");
+}
+
 TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {
     json job = smallJob();
     job["render"] = {{"width", 24}, {"height", 24}, {"samples", 1}, {"map_photons", 2000}};
