@@ -140,13 +140,6 @@ HWY_INLINE void LeaveInto(const ConvexIntersector::Planes& p, PlaneLanes ox, Pla
     }
 }
 
-// The exit through every plane by the groups of ConvexIntersector::Cull. The ray leaves the hull at q, and
-// the stone no later; the groups whose test passes at q have every plane farther along the ray than q, so the
-// groups searched are those whose test fails there (a few), unless the exit found lies beyond q (an origin
-// outside the stone): then every group. The tests are in float; the bounds were widened by the margin, which
-// holds every rounding (o inside the hull, t and |d| bounded: q and each axis . q are within a few ulps of
-// the stone's coordinates) and that of the planes' searches (for a plane that q lies m inside,
-// num - t den > m, so its t exceeds q's by far more than its rounding).
 // The searches of LeaveCulled once the groups to search are known: `search`, then, when the exit found is
 // not proven nearer than the hull's exit tq, the others.
 HWY_INLINE void LeaveGroups(const ConvexIntersector::Cull& c, uint64_t search, bool proven, float tq,
@@ -169,6 +162,13 @@ HWY_INLINE void LeaveGroups(const ConvexIntersector::Cull& c, uint64_t search, b
     hit = {nearest, lowestFacetAt(best, hn::Set(df, nearest), bestFacet)};
 }
 
+// The exit through every plane by the groups of ConvexIntersector::Cull. The ray leaves the hull at q, and
+// the stone no later; the groups whose test passes at q have every plane farther along the ray than q, so the
+// groups searched are those whose test fails there (a few), unless the exit found lies beyond q (an origin
+// outside the stone): then every group. The tests are in float; the bounds were widened by the margin, which
+// holds every rounding (o inside the hull, t and |d| bounded: q and each axis . q are within a few ulps of
+// the stone's coordinates) and that of the planes' searches (for a plane that q lies m inside,
+// num - t den > m, so its t exceeds q's by far more than its rounding).
 HWY_INLINE void LeaveCulled(const ConvexIntersector::Cull& c, const Vec3f& o, const Vec3f& d,
                             SurfaceHit& hit) {
     const PlaneTag df;
