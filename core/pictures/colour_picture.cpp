@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "pictures/face_up_frame.h"
 #include "util/number_text.h"
 
 namespace facetlight {
@@ -63,26 +64,9 @@ Image colourPicture(const ColourView& v, const std::string& title) {
             for (int dy = 0; dy < s; ++dy)
                 for (int dx = 0; dx < s; ++dx) image.at(left + x * s + dx, top + y * s + dy) = c;
         }
-    const std::string summary = colourSummary(v);
-    const size_t cut = summary.find("; ");
-    const std::string lines[3] = {title, summary.substr(0, cut), summary.substr(cut + 2)};
-    for (int k = 0; k < 3; ++k) {
-        const double scale =
-            std::min(k == 0 ? 2.0 : 1.4, (width - 10) / std::max(1.0, textWidth(lines[k], 1)));
-        drawText(image, width / 2.0, k == 0 ? 6 : 14 + 14.0 * k, lines[k], scale, kInk, Align::Center);
-    }
-
-    // A scale bar of a round length about a quarter of the view.
-    const double span = 2 * v.halfWidthMm, pixelsPerMm = side / span;
-    double bar = 0.1;
-    for (double b : {0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0})
-        if (b <= 0.3 * span) bar = b;
+    drawTitleBlock(image, title, colourSummary(v), 1.4, 14);
     const double y0 = top + side + 10;
-    drawLine(image, {10, y0 + 8}, {10 + bar * pixelsPerMm, y0 + 8}, 3, kInk);
-    drawLine(image, {10, y0 + 2}, {10, y0 + 14}, 1.5, kInk);
-    drawLine(image, {10 + bar * pixelsPerMm, y0 + 2}, {10 + bar * pixelsPerMm, y0 + 14}, 1.5, kInk);
-    drawText(image, 18 + bar * pixelsPerMm, y0 + 1,
-             formatNumber("%g", bar) + " mm (stone " + formatNumber("%g", v.sizeMm) + " mm across)", 2, kInk);
+    drawScaleBar(image, y0, 2 * v.halfWidthMm, side / (2 * v.halfWidthMm), v.sizeMm);
     // The legend: the lighting, and the stone's mean colour as a swatch.
     const std::string light =
         "CIE illuminant " + std::string(kIlluminantNames.name(v.illuminant)) + " dome, head cone " +
