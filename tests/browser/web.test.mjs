@@ -1164,6 +1164,142 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await fillSmallJob();
   });
 
+  test('absorption and colour: the form sends a spectrum, its size and the colour view, shows the table\'s errors beside it, and the result and the comparison show the colours', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#f-mesh option[value="round_brilliant"]', { state: 'attached' });
+    await page.selectOption('#f-mesh', 'round_brilliant');
+    await fillSmallJob({ photons: '2000', material: 'diamond' });
+    await page.setChecked('#f-render', false);
+    // The size and the colour view's settings start from the server's defaults.
+    const defaults = await (await fetch(`${baseUrl}/api/defaults`)).json();
+    assert.equal(await page.inputValue('#f-size'), String(defaults.size_mm));
+    assert.equal(await page.inputValue('#f-colour-illuminant'), defaults.colour.illuminant);
+    assert.equal(await page.inputValue('#f-colour-size'), String(defaults.colour.picture_size));
+    assert.equal(await page.isDisabled('#f-colour-size'), true, 'the colour view\'s settings wait for its box');
+    // The extraordinary column is offered for a uniaxial material only.
+    assert.doesNotMatch(await page.textContent('#absorption-columns'), /extraordinary/);
+    await page.selectOption('#f-material', 'tourmaline');
+    assert.match(await page.textContent('#absorption-columns'), /α ordinary \(1\/mm\), α extraordinary/);
+    // A table that does not read is named beside it, by its line, once it is left.
+    await page.fill('#f-absorption', '400 0.3\n550 abc');
+    await page.press('#f-absorption', 'Tab');
+    assert.match(await page.textContent('#err-absorption'), /^Line 2: "abc" is not a number$/);
+    assert.equal(await page.getAttribute('#f-absorption', 'aria-invalid'), 'true');
+    // A pleochroic table: what 1 mm and the stone's 6.5 mm transmit, each wave, darker the longer the path.
+    await page.fill('#f-absorption', '400 0.30 0.05\n550 0.05 0.05\n700 0.15 0.40');
+    await page.press('#f-absorption', 'Tab');
+    assert.equal(await page.isHidden('#err-absorption'), true);
+    await page.waitForSelector('#absorption-swatches [data-mm="6.5"][data-wave="e"]');
+    const swatches = await page.$$eval('#absorption-swatches .swatch-item', (items) => items.map((i) => [i.dataset.mm, i.dataset.wave, i.dataset.srgb]));
+    assert.deepEqual(swatches.map(([mm, wave]) => `${mm} ${wave}`), ['1 o', '1 e', '6.5 o', '6.5 e']);
+    const lightness = (hex) => [1, 3, 5].reduce((s, k) => s + parseInt(hex.slice(k, k + 2), 16), 0);
+    for (const wave of ['o', 'e']) {
+      const [one, size] = ['1', '6.5'].map((mm) => swatches.find(([m, w]) => m === mm && w === wave)[2]);
+      assert.ok(lightness(size) < lightness(one), `${wave}: ${size} at 6.5 mm is not darker than ${one} at 1 mm`);
+    }
+    assert.notEqual(swatches[2][2], swatches[3][2], 'the two waves transmit different colours');
+    // A flat (grey) spectrum transmits a neutral grey under D65: exp(-0.5) = 0.607 of the light, sRGB 0.607 encoded.
+    await page.selectOption('#f-material', 'diamond');
+    await page.fill('#f-absorption', '400 0.5\n700 0.5');
+    await page.waitForFunction(() => document.querySelector('#absorption-swatches [data-mm="1"]')?.dataset.wave === 'both');
+    const grey = await page.getAttribute('#absorption-swatches [data-mm="1"]', 'data-srgb');
+    const channels = [1, 3, 5].map((k) => parseInt(grey.slice(k, k + 2), 16));
+    const expected = Math.round(255 * (1.055 * Math.exp(-0.5) ** (1 / 2.4) - 0.055));
+    for (const c of channels) assert.ok(Math.abs(c - expected) <= 1, `${grey} is not the grey ${expected}`);
+    await shot('16a-form-absorption');
+    // The server's refusal of a table (a wavelength below its range) stands beside the table.
+    const jobsBefore = (await (await fetch(`${baseUrl}/api/jobs`)).json()).total;
+    await page.fill('#f-absorption', '50 0.3\n550 0.05\n700 0.15');
+    await page.click('#submit-button');
+    await page.waitForSelector('#err-absorption:not([hidden])');
+    assert.match(await page.textContent('#err-absorption'), /absorption\.wavelength_nm/);
+    assert.equal(await page.isHidden('#form-error'), true);
+    assert.equal((await (await fetch(`${baseUrl}/api/jobs`)).json()).total, jobsBefore, 'nothing was submitted');
+    // A good table and the colour view: both sent.
+    await page.fill('#f-absorption', '# a pink stone\n400 0.30\n550 0.05\n700 0.15');
+    await page.fill('#f-size', '8');
+    await page.setChecked('#f-colour', true);
+    await page.fill('#f-colour-size', '48');
+    await page.fill('#f-colour-samples', '1');
+    await page.fill('#f-colour-wavelengths', '8');
+    await page.selectOption('#f-colour-illuminant', 'A');
+    const posted = page.waitForRequest((r) => r.method() === 'POST' && r.url().endsWith('/api/jobs'));
+    const formId = await submitAndGetId({ stay: true });
+    const sent = JSON.parse((await posted).postData());
+    assert.deepEqual(sent.absorption, { wavelength_nm: [400, 550, 700], ordinary_per_mm: [0.3, 0.05, 0.15] });
+    assert.equal(sent.size_mm, 8);
+    assert.deepEqual(sent.colour, { ...defaults.colour, illuminant: 'A', picture_size: 48, samples: 1, wavelengths: 8 });
+    await fetch(`${baseUrl}/api/jobs/${formId}/cancel`, { method: 'POST' });
+    await page.evaluate(() => { location.hash = '#/'; });
+    await page.setChecked('#f-colour', false);
+    await page.fill('#f-absorption', '');
+    // The same stone without the viewer's figures (quick), and a clear one, read on their pages and compared.
+    const post = async (job) => {
+      const res = await fetch(`${baseUrl}/api/jobs`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(job) });
+      const body = await res.json();
+      assert.equal(res.status, 202, JSON.stringify(body));
+      return body.id;
+    };
+    const quick = { ...sent, viewer: { enabled: false }, colour: { ...sent.colour, illuminant: 'D65' } };
+    const id = await post(quick);
+    const clearId = await post({ ...quick, absorption: null });
+    for (const jobId of [id, clearId]) {
+      const deadline = Date.now() + JOB_TIMEOUT_MS;
+      while ((await (await fetch(`${baseUrl}/api/jobs/${jobId}`)).json()).state !== 'succeeded') {
+        assert.ok(Date.now() < deadline, `job ${jobId} did not finish`);
+        await new Promise((r) => setTimeout(r, 200));
+      }
+    }
+    const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+    await page.evaluate((jobId) => { location.hash = `#/jobs/${jobId}`; }, id);
+    await page.waitForSelector('[data-section="colour"] img[src$="colour.png"]');
+    await page.$eval('[data-section="colour"]', (el) => el.scrollIntoView());
+    await picturesLoaded('[data-section="colour"]');
+    const [picture] = await shownPictures('[data-section="colour"]');
+    assert.ok(picture.width >= 400, `colour.png shown ${Math.round(picture.width)} px wide`);
+    assert.equal(picture.link, picture.src, 'colour.png opens at full size');
+    const c = stats.colour;
+    const rgb = `rgb(${[1, 3, 5].map((k) => parseInt(c.mean_colour.srgb.slice(k, k + 2), 16)).join(', ')})`;
+    assert.equal(await page.$eval('[data-section="colour"] .colour-mean .colour-swatch', (el) => getComputedStyle(el).backgroundColor), rgb);
+    assert.match(await page.textContent('[data-section="colour"] .colour-mean'), new RegExp(`${c.mean_colour.srgb}: L\\* ${c.mean_colour.L.toFixed(1)}`));
+    assert.match(await page.textContent('[data-section="colour"] .hint'), /at 8 mm under a dome of CIE illuminant D65/);
+    for (const key of ['L', 'a', 'b', 'chroma']) {
+      const [mean, spread] = await page.$$eval(`[data-section="colour"] tr[data-lab="${key}"] td`, (tds) => tds.map((td) => td.textContent));
+      assert.match(mean, /^-?\d+(\.\d+)? ± \d+(\.\d+)?$/, `${key} mean`);
+      assert.ok(Math.abs(parseFloat(mean) - c[key].mean) <= 0.5, `${key}: ${mean} against ${c[key].mean}`);
+      assert.match(spread, /^\d+(\.\d+)? ± \d+(\.\d+)?$/, `${key} spread`);
+    }
+    for (const key of ['windowed', 'extinct', 'saturated']) {
+      assert.match(await page.textContent(`[data-section="colour"] tr[data-share="${key}"] td`), /^\d+(\.\d+)? % ± \d+(\.\d+)?$/, key);
+    }
+    // The absorbed share among the figures, as the statistics say it.
+    assert.equal(await page.textContent('[data-figure="absorbed_share"] dt'), 'Absorbed');
+    const absorbed = await page.textContent('[data-figure="absorbed_share"] .figure-value');
+    assert.ok(Math.abs(parseFloat(absorbed) - 100 * stats.totals.absorbed_share) < 0.1, `${absorbed} against ${stats.totals.absorbed_share}`);
+    assert.match(await page.textContent('[data-figure="absorbed_share"] .figure-err'), /^± [\d.]+ pts$/);
+    await shot('16b-result-colour');
+    // A clear stone has no absorbed figure, but its colour all the same.
+    await page.evaluate((jobId) => { location.hash = `#/jobs/${jobId}`; }, clearId);
+    await page.waitForSelector('[data-section="colour"] .colour-mean');
+    assert.equal(await page.$('[data-figure="absorbed_share"]'), null, 'a clear stone absorbs nothing');
+    // Compared: both colours side by side, the clear stone named so in the absorbed row.
+    await page.evaluate((ids) => { location.hash = `#/compare/${ids}`; }, `${id},${clearId}`);
+    await page.waitForSelector('[data-section="colour-compare"] table.colour-compare-table');
+    const cell = (row, jobId) => page.textContent(`[data-section="colour-compare"] tr[data-colour-row="${row}"] td[data-id="${jobId}"]`);
+    const clearStats = await (await fetch(`${baseUrl}/api/jobs/${clearId}/stats`)).json();
+    for (const [jobId, s] of [[id, stats], [clearId, clearStats]]) {
+      assert.equal(await cell('mean', jobId), s.colour.mean_colour.srgb);
+      assert.ok(await page.$(`[data-section="colour-compare"] tr[data-colour-row="mean"] td[data-id="${jobId}"] .colour-swatch`));
+      for (const row of ['L', 'a', 'b', 'chroma', 'L-spread']) assert.match(await cell(row, jobId), /^-?[\d.]+ ± [\d.]+$/, row);
+      for (const row of ['windowed', 'extinct', 'saturated']) assert.match(await cell(row, jobId), /^[\d.]+ % ± [\d.]+$/, row);
+    }
+    assert.match(await cell('absorbed', id), /^[\d.]+ % ± [\d.]+$/);
+    assert.equal(await cell('absorbed', clearId), 'clear stone');
+    assert.ok(stats.colour.L.mean < clearStats.colour.L.mean, 'the absorbing stone is the darker');
+    assert.equal((await page.$$('[data-section="colour-compare"] .colour-card img[src$="colour.png"]')).length, 2);
+    await shot('16c-compare-colour');
+  });
+
   test('the home page fits a phone', async () => {
     await page.setViewportSize(PHONE);
     await page.goto(`${baseUrl}/#/`);

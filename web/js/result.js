@@ -1,8 +1,9 @@
 // One job's result: the figures, the pictures, the region and facet tables.
 import { api, jobUrl } from './api.js';
+import { ABSORBED_FIGURE, absorbs, colourSection } from './colour.js';
 import { FACET_COLUMNS, FIGURES, POLL_ACTIVE_MS, REGIONS } from './constants.js';
 import { designSection } from './design.js';
-import { $, h } from './dom.js';
+import { $, h, zoomable } from './dom.js';
 import { decimalsFor, fmtDuration, fmtInt, fmtNumber, fmtPct, fmtPctErr, fmtTime, humanize, shortId } from './format.js';
 import { fireSection } from './fire.js';
 import { linkFacet, pictures } from './heatmap.js';
@@ -241,12 +242,6 @@ export function doublingText(d) {
     + `through the whole crown ${d.crown.median_mm.toFixed(3)} mm; seen ${d.view_to_axis_deg.toFixed(0)}° from the optic axis`;
 }
 
-// A picture as a link to itself, which opens it at full size.
-function zoomable(src, alt) {
-  return h('a', { href: src, target: '_blank', rel: 'noopener', class: 'zoom', title: 'Open the picture at full size' },
-    h('img', { src, alt, loading: 'lazy' }));
-}
-
 // A job's viewer figures: the ASET picture with its shares, the tilt series' animation with its
 // scintillation and its chart, the polariscope's animation and chart, the doubling's face-up view; none when
 // the job asked for none. With `tiltRange` ([lo, hi] in percent, the comparison's common range) the chart is
@@ -310,10 +305,12 @@ function resultPage(job, stats) {
     h('section', { class: 'card', 'aria-labelledby': 'merit-title' },
       h('h2', { id: 'merit-title' }, 'Figures of merit'),
       h('p', { class: 'hint' }, `Shares of the photons that hit the stone, with one standard error, under the job's light (${lightText(job.settings)}).`),
-      h('dl', { class: 'figures' }, FIGURES.map((f, i) => figureCard(f, totals, i === 0)))),
+      h('dl', { class: 'figures' }, FIGURES.map((f, i) => figureCard(f, totals, i === 0)),
+        absorbs(stats) ? figureCard(ABSORBED_FIGURE, totals) : null)),
     h('section', { class: 'card', 'aria-labelledby': 'pictures-title' },
       h('h2', { id: 'pictures-title' }, 'Pictures'), pictures(job, name, stats)),
     viewerSection(job, stats),
+    colourSection(job, stats),
     fireSection(job, stats),
     designSection(job, stats),
     h('div', { class: 'result-grid' },
