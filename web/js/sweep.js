@@ -69,6 +69,11 @@ export function initSweepForm() {
   const sync = () => { for (const el of $('#s-axis-1').querySelectorAll('.field input')) el.disabled = !second.checked; };
   second.addEventListener('change', sync);
   sync();
+  // Constraints bound the search: typed only when there is one.
+  const maximize = $('#s-maximize');
+  const syncConstraints = () => { $('#s-constraints').disabled = !maximize.checked; };
+  maximize.addEventListener('change', syncConstraints);
+  syncConstraints();
   form.addEventListener('submit', submitSweep);
   $('#s-shape').addEventListener('change', syncSweepQuantities);
   // The meshes list changes when the user uploads one (web/js/meshes.js).
@@ -131,6 +136,23 @@ function axisFromForm(form, i) {
   return { name: form.elements[`name-${i}`].value.trim(), from: num('from'), to: num('to'), step: num('step') };
 }
 
+// The held parameters typed as "NAME=VALUE, ...": an object for sweep.set; throws naming the entry at fault.
+function parseHeld(text) {
+  const set = {};
+  for (const item of text.split(/[,;]/).map((s) => s.trim()).filter(Boolean)) {
+    const m = item.match(/^([A-Za-z_][\w:]*)\s*=\s*(\S+)$/);
+    if (!m || !Number.isFinite(Number(m[2]))) throw new Error(`"${item}" is not NAME=VALUE with a number`);
+    if (m[1] in set) throw new Error(`${m[1]} is held twice`);
+    set[m[1]] = Number(m[2]);
+  }
+  return set;
+}
+
+// The constraints typed as "NAME<=VALUE, ...": the server checks each (sweep.constraints[i]).
+function parseConstraints(text) {
+  return text.split(/[,;]/).map((s) => s.replace(/\s+/g, '')).filter(Boolean);
+}
+
 function clearSweepErrors() {
   for (const err of $('#sweep-form').querySelectorAll('.field-error')) clearFieldError(err.id.slice(4));
   $('#sweep-error').hidden = true;
@@ -143,7 +165,19 @@ async function submitSweep(ev) {
   const axes = [axisFromForm(form, 0)];
   if (form.elements.second.checked) axes.push(axisFromForm(form, 1));
   const sweep = { axes, figure: form.elements.figure.value };
-  if (form.elements.maximize.checked) sweep.maximize = form.elements.figure.value;
+  try {
+    const set = parseHeld(form.elements.set.value);
+    if (Object.keys(set).length) sweep.set = set;
+  } catch (e) {
+    showFieldError('sweep.set', e.message);
+    form.elements.set.focus();
+    return;
+  }
+  if (form.elements.maximize.checked) {
+    sweep.maximize = form.elements.figure.value;
+    const constraints = parseConstraints(form.elements.constraints.value);
+    if (constraints.length) sweep.constraints = constraints;
+  }
   const job = { mesh: form.elements.shape.value, photons: Number(form.elements.photons.value), sweep };
   if (form.elements.fire.checked) job.fire = { enabled: true };
   const threads = Number($('#f-threads').value);
@@ -160,7 +194,9 @@ async function submitSweep(ev) {
     location.hash = `#/sweeps/${created.id}`;
   } catch (e) {
     status.textContent = '';
-    const field = e.field === 'mesh' ? 'sweep-mesh' : e.field === 'photons' ? 'sweep-photons' : e.field;
+    // A held parameter's or a constraint's error is shown at its field, its entry named in the message.
+    const at = (e.field || '').match(/^sweep\.(set|constraints)\b/);
+    const field = e.field === 'mesh' ? 'sweep-mesh' : e.field === 'photons' ? 'sweep-photons' : at ? `sweep.${at[1]}` : e.field;
     if (!field || !showFieldError(field, e.message)) {
       const err = $('#sweep-error');
       err.textContent = e.message;
