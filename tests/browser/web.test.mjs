@@ -503,6 +503,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.selectOption('#stone3d-figure', 'internal_reflections');
     assert.equal(await page.getAttribute(view, 'data-figure'), 'internal_reflections');
     const after = await stoneCanvasPixels();
+    assert.equal(after.samples.length, before.samples.length, 'the canvas kept its size');
     const changed = after.samples.filter((v, i) => v !== before.samples[i]).length;
     assert.ok(changed > 0.05 * after.samples.length, `${changed} of ${after.samples.length} samples changed colour`);
     assert.equal(await page.textContent('.stone3d-legend-title'), 'Internal reflections');
@@ -527,6 +528,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const unturned = await stoneCanvasPixels();
     await page.keyboard.press('ArrowLeft');
     const turned = await stoneCanvasPixels();
+    assert.equal(turned.samples.length, unturned.samples.length, 'the canvas kept its size');
     assert.ok(turned.samples.some((v, i) => v !== unturned.samples[i]), 'the arrow key turned the stone');
   });
 

@@ -212,7 +212,9 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
         + '+ and − zoom, N and P pick the next and previous facet, Home goes back to the first view.'))),
   summary);
 
+  let sized = false;  // drawn only once the canvas has its box's size
   const render = () => {
+    if (!sized) return;
     renderer.render(scene, camera);
     root.dataset.triangles = String(renderer.info.render.triangles);
   };
@@ -337,6 +339,7 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
     renderer.setSize(width, height, false);
     camera.aspect = width / height;
     camera.updateProjectionMatrix();
+    sized = true;
     render();
   });
   resize.observe(stage);
