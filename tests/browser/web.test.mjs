@@ -22,8 +22,9 @@ const serverBinary = process.env.FACETLIGHT_SERVER || path.join(sourceDir, 'buil
 const screenshotDir = process.env.FACETLIGHT_SCREENSHOT_DIR || path.join(sourceDir, 'build/screenshots');
 const chromiumPath = process.env.FACETLIGHT_CHROMIUM || '/usr/bin/chromium';
 const JOB_TIMEOUT_MS = 240_000;
-// No GPU here: WebGL (the 3-D view) runs on SwiftShader, which Chromium offers as a fallback only when asked
-// since version 137 (--enable-unsafe-swiftshader; "unsafe" for pages from the web, not for our own page).
+// No GPU here: WebGL (the 3-D view) runs on SwiftShader. Chromium is withdrawing that automatic fallback unless
+// asked with --enable-unsafe-swiftshader ("unsafe" for pages from the web, not for our own page); Debian's
+// Chromium 156 headless draws with or without it.
 const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--disable-quic',
   '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'];
 const DESKTOP = { width: 1366, height: 900 };
