@@ -29,6 +29,8 @@ struct RenderOptions {
     SettingsFlags asetFlags, tiltFlags;
     bool firePicture = false;
     SettingsFlags firePictureFlags;
+    bool colour = false;
+    SettingsFlags colourFlags;
 };
 
 void run(RenderOptions& o) {
@@ -44,6 +46,10 @@ void run(RenderOptions& o) {
     if (o.firePicture || o.firePictureFlags.given()) {
         settings.firePicture.emplace();
         o.firePictureFlags.apply(firePictureSettingsSchema(), *settings.firePicture);
+    }
+    if (o.colour || o.colourFlags.given()) {
+        settings.colour.emplace();
+        o.colourFlags.apply(colourSettingsSchema(), *settings.colour);
     }
     if (o.tiltFlags.given()) {
         settings.tiltSeries.emplace();
@@ -70,6 +76,7 @@ void run(RenderOptions& o) {
 
     printStatsSummary(std::cout, result.stats);
     if (settings.aset) printAsetShares(std::cout, result.stats["aset"]);
+    if (settings.colour) printColourFigures(std::cout, result.stats["colour"]);
     if (settings.tiltSeries) {
         const nlohmann::json& t = result.stats["tilt_series"];
         std::printf("tilt series: %zu frames, scintillation %.2f%% +- %.2f per frame\n", t["frames"].size(),
@@ -100,6 +107,11 @@ void addRenderCommand(CLI::App& app) {
         "fire (docs/physics.md); any --fire-picture-* flag implies it");
     o->firePictureFlags.add(cmd, firePictureSettingsSchema().fields(), toJson(FirePictureSettings{}),
                             "fire_picture");
+    cmd->add_flag("--colour", o->colour,
+                  "Also write colour.png: the stone face-up in true colour under a CIE illuminant, absorbing "
+                  "at its size (docs/optics.md), and stats colour; any --colour-... flag implies it");
+    o->colourFlags.add(cmd, colourSettingsSchema().fields(), colourSettingsSchema().write(ColourSettings{}),
+                       "colour");
     cmd->add_option("--out", o->out, "Folder for the pictures and statistics (created if missing)")
         ->capture_default_str();
     cmd->callback([o] { run(*o); });

@@ -48,6 +48,18 @@ inline void printStatsSummary(std::ostream& out, const nlohmann::json& stats) {
                 .c_str());
         out << line;
     }
+    // A stone whose material absorbs (settings.absorption, docs/optics.md "Absorption"): how much of the
+    // light it keeps, which the figures above have lost.
+    const auto settings = stats.find("settings");
+    if (settings != stats.end() && settings->contains("absorption") &&
+        !settings->at("absorption").is_null()) {
+        char line[128];
+        std::snprintf(line, sizeof line, "  %-28s %s\n", "absorbed inside the stone",
+                      shareText(totals.at("absorbed_share").get<double>(),
+                                totals.at("absorbed_share_stderr").get<double>())
+                          .c_str());
+        out << line;
+    }
 }
 
 }  // namespace facetlight::cli

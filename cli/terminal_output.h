@@ -40,6 +40,31 @@ inline void printAsetShares(std::ostream& out, const nlohmann::json& aset) {
     }
 }
 
+// The colour view's figures ("colour" in docs/stats-schema.md): CIELAB mean and spread, the area's shares.
+inline void printColourFigures(std::ostream& out, const nlohmann::json& c) {
+    out << "Face-up colour under " << c["illuminant"].get<std::string>() << " at "
+        << c["size_mm"].get<double>() << " mm (" << c["pixels"].get<uint64_t>() << " pixels, "
+        << c["rays"].get<uint64_t>() << " view rays):\n";
+    for (const char* f : {"L", "a", "b", "chroma"}) {
+        const nlohmann::json& v = c[f];
+        char line[128];
+        std::snprintf(line, sizeof line, "  %-8s %7.2f +- %.2f   spread %6.2f +- %.2f\n", f,
+                      v["mean"].get<double>(), v["mean_stderr"].get<double>(), v["spread"].get<double>(),
+                      v["spread_stderr"].get<double>());
+        out << line;
+    }
+    const nlohmann::json& m = c["mean_colour"];
+    char line[128];
+    std::snprintf(line, sizeof line, "  mean colour L* %.2f a* %.2f b* %.2f (%s)\n", m["L"].get<double>(),
+                  m["a"].get<double>(), m["b"].get<double>(), m["srgb"].get<std::string>().c_str());
+    out << line;
+    for (const char* f : {"windowed", "extinct", "saturated"}) {
+        std::snprintf(line, sizeof line, "  %-9s %6.2f%% +- %.2f\n", f, 100 * c[f]["share"].get<double>(),
+                      100 * c[f]["stderr"].get<double>());
+        out << line;
+    }
+}
+
 // A stone's trade proportions, one per line ("-" where one does not apply), as `info` and `cut` print them
 // (scripts/make-meshes reads the figure after the label).
 inline void printProportions(const Proportions& p) {

@@ -9,6 +9,7 @@
 #include <map>
 #include <utility>
 
+#include "colour_tables.h"
 #include "http_server.h"
 #include "job_status.h"
 #include "optics/light_model.h"
@@ -59,6 +60,7 @@ std::vector<Route> Api::routes() {
         {"GET", "/healthz"},
         {"GET", "/api/openapi.json"},
         {"GET", "/api/defaults"},
+        {"GET", "/api/colour/cie"},
         {"GET", "/api/jobs"},
         {"POST", "/api/jobs"},
         {"POST", "/api/jobs/estimate"},
@@ -450,6 +452,7 @@ void Api::install(httplib::Server& server, bool accessLog) {
          [](const Request&, Response& res) { res.set_content(std::string(openApiDocument()), kJsonType); }},
         {"GET /api/defaults",
          [this](const Request&, Response& res) { sendJson(res, 200, jobDefaults(queue_.cores())); }},
+        {"GET /api/colour/cie", [](const Request&, Response& res) { sendJson(res, 200, cieTablesJson()); }},
         {"GET /api/jobs", [this](const Request& req, Response& res) { listJobs(req, res); }},
         {"GET /api/jobs/{id}", [this](const Request& req, Response& res) { getJob(req, res); }},
         {"DELETE /api/jobs/{id}", [this](const Request& req, Response& res) { deleteJob(req, res); }},

@@ -53,6 +53,7 @@ nlohmann::json jobDefaults(int defaultThreads) {
     spec.settings.aset = AsetSettings{};
     spec.settings.tiltSeries = TiltSeriesSettings{};
     spec.settings.firePicture = FirePictureSettings{};
+    spec.settings.colour = ColourSettings{};
     nlohmann::json j = toJson(spec);
     j.erase("mesh");
     return j;

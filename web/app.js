@@ -3,6 +3,7 @@
 // (never as HTML): uploaded file names are untrusted.
 // This module routes between the views and starts the page.
 import { followApiLinksWithToken } from './js/api.js';
+import { initColourFields } from './js/colour.js';
 import { showCompare } from './js/compare.js';
 import { JOBS_PER_PAGE } from './js/constants.js';
 import { $, clearFieldError, h } from './js/dom.js';
@@ -75,6 +76,7 @@ async function start() {
   });
   window.addEventListener('hashchange', route);
   syncFormControls();
+  initColourFields();
   initSweepForm();
   route();
   const [health] = await Promise.all([refreshHealth(), loadFormDefaults()]);

@@ -9,7 +9,9 @@
 //
 // The exit search skips the girdle of a round stone where it cannot be the answer (Girdle below): the shipped
 // brilliant's 64 girdle facets are more than half its planes, and a ray leaves through them only near the
-// girdle. The answer stays bit for bit that of the search over every plane.
+// girdle. A stone of many planes without such a girdle (briolettes, checkerboards, step cuts of 200 facets)
+// has its planes searched in groups instead (Cull below), only the groups that may hold the exit. Either
+// way the answer stays bit for bit that of the search over every plane.
 #include <cstdint>
 #include <vector>
 
@@ -60,9 +62,33 @@ class ConvexIntersector {
     };
     const Girdle* girdle() const { return girdle_.facets.count ? &girdle_ : nullptr; }
 
+    // The planes of a stone without a girdle to skip, in groups of nearby normals (k-means), each group in
+    // facet order, and a hull: the stone widened by a margin m (1e-4 of its coordinates and size, as the
+    // girdle's) along each group's axis and the six axis directions (axis_h . x < hullBound_h). A ray from
+    // inside leaves the hull at some q, and the stone no later; a group g whose every plane lies farther than
+    // q along the ray may be skipped, which holds when axis_g . q < skipBelow_g: the least axis_g . x over
+    // the points x of the hull widened by m that lie less than m inside a plane of g (a linear programme over
+    // the hull's vertices and edges, solved once per stone). m is far above the rounding of q and of the
+    // planes' searches, so the answer stays bit for bit the exit through every plane (convex_search-inl.h,
+    // LeaveCulled). Absent (no groups) for stones of fewer than kMinPlanes planes, or with a girdle.
+    struct Cull {
+        static constexpr size_t kMinPlanes = 96;
+        static constexpr size_t kMaxGroups = 64, kMaxRows = 80;  // a bit set of groups; 64 + 6 rows, padded
+        std::vector<Planes> groups;
+        size_t rows = 0;  // groups, then the six axis directions; the arrays are padded to kPadding
+        std::vector<float> ax, ay, az, hullBound, skipBelow;  // skipBelow = -inf on the six rows
+        float maxT = 0;  // rays longer than this (or of a length far from 1) search every group
+    };
+    const Cull* cull() const { return cull_.groups.empty() ? nullptr : &cull_; }
+
+    // Whether intersectors built from now on use the Cull (true, the default): false gives the search over
+    // every plane, for benchmarks and tests to compare. The girdle skip stays either way.
+    static void setCulling(bool on);
+
   private:
     Planes planes_;
     Girdle girdle_;
+    Cull cull_;
     const ConvexKernels* kernels_;
 };
 

@@ -119,8 +119,97 @@ HWY_INLINE void takeNearer(const SurfaceHit& h, SurfaceHit& best) {
     if (h.t < best.t || (h.t == best.t && h.facet < best.facet)) best = h;
 }
 
-// ConvexIntersector::leave: the exit through every plane, the girdle's searched only where they may be it.
+// The nearest exit through the planes of `p` merged into each lane's (best, bestFacet), the lowest facet on
+// ties whatever the order of the calls: after any sequence of them the lanes hold what one search over all
+// their planes would.
+HWY_INLINE void LeaveInto(const ConvexIntersector::Planes& p, PlaneLanes ox, PlaneLanes oy, PlaneLanes oz,
+                          PlaneLanes dx, PlaneLanes dy, PlaneLanes dz, PlaneLanes& best,
+                          hn::Vec<PlaneIndexTag>& bestFacet) {
+    const PlaneTag df;
+    const PlaneIndexTag di;
+    const PlaneLanes zero(0.0f);
+    for (size_t i = 0; i < p.count; i += hn::Lanes(df)) {
+        const PlaneCrossing<PlaneLanes> c = crossings(p, i, ox, oy, oz, dx, dy, dz);
+        const PlaneLanes t = leavingT(c);
+        const auto facet = facetsAt(p, i);
+        const auto better = hn::And(
+            zero < c.den,
+            hn::Or(t < best, hn::And(hn::Eq(t.v, best.v), hn::RebindMask(df, hn::Lt(facet, bestFacet)))));
+        best = select(better, t, best);
+        bestFacet = hn::IfThenElse(hn::RebindMask(di, better), facet, bestFacet);
+    }
+}
+
+// The searches of LeaveCulled once the groups to search are known: `search`, then, when the exit found is
+// not proven nearer than the hull's exit tq, the others.
+HWY_INLINE void LeaveGroups(const ConvexIntersector::Cull& c, uint64_t search, bool proven, float tq,
+                            const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
+    const PlaneTag df;
+    const PlaneIndexTag di;
+    const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z);
+    PlaneLanes best(kInf);
+    auto bestFacet = hn::Zero(di);
+    for (uint64_t left = search; left; left &= left - 1)
+        LeaveInto(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, best, bestFacet);
+    float nearest = hn::GetLane(hn::MinOfLanes(df, best.v));
+    if (!(proven && nearest <= tq)) {
+        const size_t groups = c.groups.size();
+        const uint64_t all = groups == 64 ? ~uint64_t(0) : (uint64_t(1) << groups) - 1;
+        for (uint64_t left = all & ~search; left; left &= left - 1)
+            LeaveInto(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, best, bestFacet);
+        nearest = hn::GetLane(hn::MinOfLanes(df, best.v));
+    }
+    hit = {nearest, lowestFacetAt(best, hn::Set(df, nearest), bestFacet)};
+}
+
+// The exit through every plane by the groups of ConvexIntersector::Cull. The ray leaves the hull at q, and
+// the stone no later; the groups whose test passes at q have every plane farther along the ray than q, so the
+// groups searched are those whose test fails there (a few), unless the exit found lies beyond q (an origin
+// outside the stone): then every group. The tests are in float; the bounds were widened by the margin, which
+// holds every rounding (o inside the hull, t and |d| bounded: q and each axis . q are within a few ulps of
+// the stone's coordinates) and that of the planes' searches (for a plane that q lies m inside,
+// num - t den > m, so its t exceeds q's by far more than its rounding).
+HWY_INLINE void LeaveCulled(const ConvexIntersector::Cull& c, const Vec3f& o, const Vec3f& d,
+                            SurfaceHit& hit) {
+    const PlaneTag df;
+    const size_t lanes = hn::Lanes(df), groups = c.groups.size();
+    const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z), zero(0.0f);
+    PlaneLanes hullT(kInf);
+    auto inside = hn::FirstN(df, lanes);
+    for (size_t i = 0; i < c.rows; i += lanes) {
+        const PlaneLanes ax = PlaneLanes::load(&c.ax[i]), ay = PlaneLanes::load(&c.ay[i]),
+                         az = PlaneLanes::load(&c.az[i]);
+        const PlaneLanes den = dot3(dx, dy, dz, ax, ay, az),
+                         num = PlaneLanes::load(&c.hullBound[i]) - dot3(ox, oy, oz, ax, ay, az),
+                         t = num / den;
+        hullT = select(hn::And(zero < den, t < hullT), t, hullT);
+        inside = hn::And(inside, zero < num);
+    }
+    const float tq = hn::GetLane(hn::MinOfLanes(df, hullT.v)), length2 = dot(d, d);
+    uint64_t search = groups == 64 ? ~uint64_t(0) : (uint64_t(1) << groups) - 1;
+    const bool proven = hn::AllTrue(df, inside) && tq < c.maxT && 0.25f < length2 && length2 < 4.0f;
+    if (proven) {
+        const PlaneLanes qx(o.x + d.x * tq), qy(o.y + d.y * tq), qz(o.z + d.z * tq);
+        for (size_t i = 0; i < groups; i += lanes) {
+            const PlaneLanes along = dot3(PlaneLanes::load(&c.ax[i]), PlaneLanes::load(&c.ay[i]),
+                                          PlaneLanes::load(&c.az[i]), qx, qy, qz);
+            uint8_t bits[8] = {};
+            hn::StoreMaskBits(df, along < PlaneLanes::load(&c.skipBelow[i]), bits);
+            uint64_t word = 0;
+            for (size_t b = 0; b < (lanes + 7) / 8; ++b) word |= uint64_t(bits[b]) << (8 * b);
+            search &= ~(word << i);
+        }
+    }
+    LeaveGroups(c, search, proven, tq, o, d, hit);
+}
+
+// ConvexIntersector::leave: the exit through every plane, the girdle's searched only where they may be it, or
+// by the groups of the Cull.
 HWY_INLINE bool LeaveStone(const ConvexIntersector& convex, const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
+    if (const ConvexIntersector::Cull* c = convex.cull()) {
+        LeaveCulled(*c, o, d, hit);
+        return hit.t < kInf;
+    }
     const ConvexIntersector::Girdle* g = convex.girdle();
     if (!g) {
         LeaveRay(convex.planes(), o, d, hit);
@@ -240,11 +329,62 @@ HWY_INLINE void LeavePlanes(const ConvexIntersector::Planes& p, Floats ox, Float
     facetOut = hn::GatherIndex(di, reinterpret_cast<const int32_t*>(p.facet.data()), nearest);
 }
 
+// LeaveCulled for each lane's ray in `live`: the hull's exit and the groups' tests for the packet, a row at a
+// time (the same operations on each ray as LeaveCulled's), then each ray's groups one ray at a time: a
+// packet's rays go every way, so they share few groups.
+HWY_INLINE void LeaveEachCulled(const ConvexIntersector::Cull& c, FloatMask live, Floats ox, Floats oy,
+                                Floats oz, Floats dx, Floats dy, Floats dz, Floats& tOut, Facets& facetOut) {
+    constexpr size_t kMax = HWY_LANES(float);
+    const FloatTag df;
+    const Floats zero(0.0f);
+    Floats hullT(kInf);
+    FloatMask inside = live;
+    for (size_t r = 0; r < c.rows; ++r) {
+        const Floats ax(c.ax[r]), ay(c.ay[r]), az(c.az[r]);
+        const Floats den = dot3(dx, dy, dz, ax, ay, az),
+                     num = Floats(c.hullBound[r]) - dot3(ox, oy, oz, ax, ay, az), t = num / den;
+        hullT = select(hn::And(zero < den, t < hullT), t, hullT);
+        inside = hn::And(inside, zero < num);
+    }
+    const Floats length2 = dot3(dx, dy, dz, dx, dy, dz);
+    const FloatMask proven = hn::And(hn::And(inside, hullT < Floats(c.maxT)),
+                                     hn::And(Floats(0.25f) < length2, length2 < Floats(4.0f)));
+    const Floats qx = ox + dx * hullT, qy = oy + dy * hullT, qz = oz + dz * hullT;
+    uint64_t skip[kMax] = {};
+    for (size_t g = 0; g < c.groups.size(); ++g) {
+        const Floats along = dot3(Floats(c.ax[g]), Floats(c.ay[g]), Floats(c.az[g]), qx, qy, qz);
+        uint8_t bits[8] = {};
+        hn::StoreMaskBits(df, hn::And(proven, along < Floats(c.skipBelow[g])), bits);
+        for (size_t k = 0; k < hn::Lanes(df); ++k) skip[k] |= uint64_t((bits[k / 8] >> (k % 8)) & 1) << g;
+    }
+    alignas(64) float t[kMax] = {}, tq[kMax], px[kMax], py[kMax], pz[kMax], vx[kMax], vy[kMax], vz[kMax];
+    alignas(64) int32_t facet[kMax] = {};
+    uint8_t liveBits[8] = {}, provenBits[8] = {};
+    hullT.store(tq), ox.store(px), oy.store(py), oz.store(pz), dx.store(vx), dy.store(vy), dz.store(vz);
+    hn::StoreMaskBits(df, live, liveBits);
+    hn::StoreMaskBits(df, proven, provenBits);
+    const size_t groups = c.groups.size();
+    const uint64_t all = groups == 64 ? ~uint64_t(0) : (uint64_t(1) << groups) - 1;
+    for (size_t k = 0; k < hn::Lanes(df); ++k) {
+        if (!((liveBits[k / 8] >> (k % 8)) & 1)) continue;
+        SurfaceHit hit;
+        LeaveGroups(c, all & ~skip[k], (provenBits[k / 8] >> (k % 8)) & 1, tq[k], {px[k], py[k], pz[k]},
+                    {vx[k], vy[k], vz[k]}, hit);
+        t[k] = hit.t, facet[k] = int32_t(hit.facet);
+    }
+    tOut = Floats::load(t);
+    facetOut = hn::LoadU(IndexTag(), facet);
+}
+
 // LeaveStone for each lane's ray in `live`. The girdle's planes are searched one ray at a time for the few
 // rays that leave near the girdle: a packet's rays go every way, so the packet as a whole rarely could skip
 // a plane.
 HWY_INLINE void LeavePacket(const ConvexIntersector& convex, FloatMask live, Floats ox, Floats oy, Floats oz,
                             Floats dx, Floats dy, Floats dz, Floats& tOut, Facets& facetOut) {
+    if (const ConvexIntersector::Cull* c = convex.cull()) {
+        LeaveEachCulled(*c, live, ox, oy, oz, dx, dy, dz, tOut, facetOut);
+        return;
+    }
     const ConvexIntersector::Girdle* g = convex.girdle();
     LeavePlanes(g ? g->others : convex.planes(), ox, oy, oz, dx, dy, dz, tOut, facetOut);
     if (!g) return;

@@ -1,20 +1,15 @@
 #pragma once
-// Colour from wavelengths: the CIE 1931 2-degree colour matching functions (the CIE's table every 10 nm,
-// interpolated), XYZ to linear sRGB (IEC 61966-2-1) and the sRGB transfer curve.
+// Colour from wavelengths for the renderer and the tracer: the visible range photons are drawn from, its
+// bands of equal colour-matching weight and a photon's colour (the tables themselves in colour/cie.h).
 #include <vector>
 
+#include "colour/cie.h"
 #include "geometry/geometry.h"
 
 namespace facetlight {
 
 // The visible range the tracer draws photon wavelengths from.
 constexpr double kMinWavelength = 380, kMaxWavelength = 780;
-
-// x-bar, y-bar, z-bar at a wavelength; 0 outside 380-780 nm.
-Vec3 cieXyz(double wavelengthNm);
-Vec3 xyzToLinearSrgb(const Vec3& xyz);
-// Linear [0, 1] to the sRGB-encoded [0, 1] value (clamped).
-double srgbEncode(double linear);
 
 // The visible range cut into `count` bands of equal colour-matching weight (x + y + z), each with the linear
 // sRGB colour of its share of an equal-energy white, white-balanced so that the colours of all bands add up

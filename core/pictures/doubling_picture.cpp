@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pictures/face_up_frame.h"
 #include "util/number_text.h"
 
 namespace facetlight {
@@ -74,28 +75,9 @@ Image doublingPicture(const Doubling& d, const std::string& title) {
             for (int dy = 0; dy < s; ++dy)
                 for (int dx = 0; dx < s; ++dx) image.at(left + x * s + dx, top + y * s + dy) = c;
         }
-    // The title, then the summary at its "; " on two lines, each as large as fits.
-    const std::string summary = doublingSummary(d);
-    const size_t cut = summary.find("; ");
-    const std::string lines[3] = {title, summary.substr(0, cut),
-                                  cut == std::string::npos ? "" : summary.substr(cut + 2)};
-    for (int k = 0; k < 3; ++k) {
-        const double scale =
-            std::min(k == 0 ? 2.0 : 1.5, (width - 10) / std::max(1.0, textWidth(lines[k], 1)));
-        drawText(image, width / 2.0, k == 0 ? 6 : 14 + 16.0 * k, lines[k], scale, kInk, Align::Center);
-    }
-
-    // A scale bar of a round length about a quarter of the view.
-    const double span = 2 * d.halfWidthMm, pixelsPerMm = side / span;
-    double bar = 0.1;
-    for (double b : {0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0})
-        if (b <= 0.3 * span) bar = b;
+    drawTitleBlock(image, title, doublingSummary(d), 1.5, 16);
     const double y0 = top + side + 10;
-    drawLine(image, {10, y0 + 8}, {10 + bar * pixelsPerMm, y0 + 8}, 3, kInk);
-    drawLine(image, {10, y0 + 2}, {10, y0 + 14}, 1.5, kInk);
-    drawLine(image, {10 + bar * pixelsPerMm, y0 + 2}, {10 + bar * pixelsPerMm, y0 + 14}, 1.5, kInk);
-    drawText(image, 18 + bar * pixelsPerMm, y0 + 1,
-             formatNumber("%g", bar) + " mm (stone " + formatNumber("%g", d.sizeMm) + " mm across)", 2, kInk);
+    drawScaleBar(image, y0, 2 * d.halfWidthMm, side / (2 * d.halfWidthMm), d.sizeMm);
     const std::pair<Rgb, std::string> legend[3] = {
         {kOrdinary, "pavilion edges seen through the ordinary wave (n_o " + formatNumber("%.4f", d.nO) + ")"},
         {kExtraordinary,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "colour/colour_space.h"
 #include "optics/spectrum.h"
 #include "render/camera.h"
 #include "render/detail/sample_tracer.h"

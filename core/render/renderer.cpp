@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "colour/colour_space.h"
 #include "optics/spectrum.h"
 #include "render/detail/sample_tracer.h"
 #include "util/error.h"

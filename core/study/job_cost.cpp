@@ -148,6 +148,20 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
         parts.push_back({"doubling", "doubling.picture_size", count(px) + " pixels x 3 view rays",
                          3 * px * rates.asetRay});
     }
+    if (s.colour) {
+        // Each pixel `samples` paths, each a view ray at every one of `wavelengths`, at the ASET view's rate.
+        const ColourSettings& c = *s.colour;
+        const ColourSettings usual;
+        const double px = double(c.pictureSize) * double(c.pictureSize);
+        parts.push_back(
+            {"colour",
+             costliest({{"colour.picture_size", px, double(usual.pictureSize) * usual.pictureSize},
+                        {"colour.samples", double(c.samples), double(usual.samples)},
+                        {"colour.wavelengths", double(c.wavelengths), double(usual.wavelengths)}}),
+             count(px) + " pixels x " + std::to_string(c.samples) + " paths x " +
+                 std::to_string(c.wavelengths) + " wavelengths",
+             px * c.samples * c.wavelengths * rates.asetRay});
+    }
     if (s.render) {
         const RenderSettings& r = *s.render;
         const RenderSettings usual;

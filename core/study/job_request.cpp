@@ -40,7 +40,7 @@ JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
     if (j.contains("name")) spec.name = settings::readText(j["name"], "name");
     nlohmann::json trace = j;
     for (const char* key : {"mesh", "name", "render", "aset", "tilt_series", "fire_picture", "polariscope",
-                            "doubling", "sweep", "cut"})
+                            "doubling", "colour", "sweep", "cut"})
         trace.erase(key);
     if (const auto r = j.find("render"); r != j.end()) {
         if (r->is_object()) {
@@ -63,6 +63,7 @@ JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
     if (j.contains("polariscope"))
         spec.settings.polariscope = polariscopeSettingsSchema().read(j["polariscope"], "polariscope");
     if (j.contains("doubling")) spec.settings.doubling = doublingSettingsSchema().read(j["doubling"], "doubling");
+    if (j.contains("colour")) spec.settings.colour = colourSettingsSchema().read(j["colour"], "colour");
     traceSettingsSchema().read(spec.settings.trace, trace);
     if (const auto c = j.find("cut"); c != j.end() && !c->is_null()) {
         if (!c->is_object()) throw Error("cut", "cut must be an object of the shape's parameters");
@@ -121,6 +122,7 @@ nlohmann::json toJson(const JobRequest& spec) {
     if (spec.settings.firePicture) j["fire_picture"] = toJson(*spec.settings.firePicture);
     if (spec.settings.polariscope) j["polariscope"] = polariscopeSettingsSchema().write(*spec.settings.polariscope);
     if (spec.settings.doubling) j["doubling"] = doublingSettingsSchema().write(*spec.settings.doubling);
+    if (spec.settings.colour) j["colour"] = colourSettingsSchema().write(*spec.settings.colour);
     if (spec.settings.sweep) j["sweep"] = toJson(*spec.settings.sweep);
     if (!spec.cut.empty()) j["cut"] = spec.cut;
     return j;

@@ -22,7 +22,7 @@ struct ResultFile {
 };
 
 // In the order they are written: stats.json last, so that its presence says a folder is complete.
-inline constexpr std::array<ResultFile, 22> kResultFiles{{
+inline constexpr std::array<ResultFile, 23> kResultFiles{{
     {"best.obj", "text/plain", "best.obj", "best_obj", "sweep.maximize"},
     // The best design as GemCad .asc (docs/gemcad.md): a design's tiers as tweaked, a mesh's facet planes.
     {"best.asc", "text/plain", "best.asc", "best_asc", "sweep.maximize"},
@@ -49,6 +49,8 @@ inline constexpr std::array<ResultFile, 22> kResultFiles{{
     {"polariscope.webp", "image/webp", "polariscope.webp", "polariscope_animation", "polariscope"},
     // The stone face-up with its pavilion's edges doubled (docs/optics.md, "The doubling").
     {"doubling.png", "image/png", "doubling.png", "doubling", "doubling"},
+    // The stone face-up in true colour (docs/optics.md, "The colour a viewer sees").
+    {"colour.png", "image/png", "colour.png", "colour", "colour"},
     // The faceting diagram: crown, profile and pavilion with the cutting sheet's tiers (docs/gemcad.md).
     {"diagram.png", "image/png", "diagram.png", "diagram", ""},
     {"stats.json", "application/json", "stats", "stats", ""},

@@ -8,6 +8,7 @@
 #include "photonmap/photon_map.h"
 #include "pictures/angular_plot.h"
 #include "pictures/aset_picture.h"
+#include "pictures/colour_picture.h"
 #include "pictures/design_diagram.h"
 #include "pictures/doubling_picture.h"
 #include "pictures/heatmap.h"
@@ -49,13 +50,17 @@ uint64_t studyUnits(const StudySettings& settings, RunPhase phase) {
         case RunPhase::Tracing:
             return settings.trace.photons;
         case RunPhase::Viewing:
-            // The stone's view rays and lamp photons, and as many again for the reference it is judged against;
-            // the polariscope's photons; the doubling's pixels.
+            // The stone's view rays and lamp photons, and as many again for the reference it is judged
+            // against; the polariscope's photons; the doubling's and the colour view's pixels.
             return (settings.trace.viewer.enabled ? 2 * viewerUnits(settings.trace.viewer) : 0) +
-                   (settings.polariscope ? uint64_t(settings.polariscope->angles) * settings.polariscope->photons
-                                         : 0) +
-                   (settings.doubling ? uint64_t(settings.doubling->pictureSize) * settings.doubling->pictureSize
-                                      : 0);
+                   (settings.polariscope
+                        ? uint64_t(settings.polariscope->angles) * settings.polariscope->photons
+                        : 0) +
+                   (settings.doubling
+                        ? uint64_t(settings.doubling->pictureSize) * settings.doubling->pictureSize
+                        : 0) +
+                   (settings.colour ? uint64_t(settings.colour->pictureSize) * settings.colour->pictureSize
+                                    : 0);
         case RunPhase::PhotonMap:
             return settings.render ? settings.render->mapPhotons : 0;
         case RunPhase::Rendering:
@@ -133,9 +138,9 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
             result.file("heatmap_fire.png") = encodePng(fireHeatmap(stone, *traced.fire));
         }
     }
-    if (settings.trace.viewer.enabled || settings.polariscope || settings.doubling) {
-        // Rank 0 alone: the viewer's rays, the polariscope's photons and the doubling's rays are a small
-        // fraction of a trace's.
+    if (settings.trace.viewer.enabled || settings.polariscope || settings.doubling || settings.colour) {
+        // Rank 0 alone: the viewer's rays, the polariscope's photons and the doubling's and colour view's
+        // rays are a small fraction of a trace's.
         enterPhase(control, RunPhase::Viewing, comm.isRoot() ? studyUnits(settings, RunPhase::Viewing) : 0);
         if (comm.isRoot() && settings.trace.viewer.enabled)
             result.stats["viewer"] = viewerReport(stone, settings.trace, &control);
@@ -151,6 +156,12 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
             const Doubling d = doubling(stone, settings.trace, *settings.doubling, &control);
             result.stats["doubling"] = toJson(d);
             result.file("doubling.png") = encodePng(doublingPicture(d, doublingTitle(stone.name, settings.trace)));
+        }
+        if (comm.isRoot() && settings.colour && !control.cancelled()) {
+            const ColourView v = colourView(stone, settings.trace, *settings.colour, &control);
+            if (v.cancelled) throw Canceled();
+            result.stats["colour"] = toJson(v);
+            result.file("colour.png") = encodePng(colourPicture(v, colourTitle(stone.name, settings.trace)));
         }
         if (anyRank(comm, control.cancelled())) throw Canceled();
     }

@@ -15,6 +15,7 @@
 #include "trace/trace_settings.h"
 #include "util/distributed.h"
 #include "util/run_control.h"
+#include "viewer/colour_view.h"
 #include "viewer/doubling.h"
 #include "viewer/polariscope.h"
 
@@ -37,6 +38,9 @@ struct StudySettings {
     // The stone face-up through a loupe, its pavilion's edges doubled by a doubly refracting stone
     // (docs/optics.md, "The doubling"): doubling.png and stats "doubling".
     std::optional<DoublingSettings> doubling;
+    // The stone face-up in true colour under a dome of a CIE illuminant, absorbing along every path inside
+    // (docs/optics.md, "The colour a viewer sees"): colour.png and stats "colour".
+    std::optional<ColourSettings> colour;
     // A sweep of the job's shape (docs/sweeps.md) instead of one trace: runSweepJob, not runStudy.
     std::optional<SweepRequest> sweep;
 };

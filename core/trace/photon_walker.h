@@ -139,10 +139,15 @@ class PhotonWalker {
             return false;
         }
         if (s.absorbs()) {
-            ph.depth = depthLeft(ph.depth, segmentAbsorption(s, ph), hit.t);
-            if (ph.depth < 0) {
-                visit.absorbed(ph.bounces);
-                return false;
+            if constexpr (requires { visit.attenuated(0.0f); }) {
+                // A weighted view ray (viewer/colour_view.cpp) keeps going and adds up alpha L instead.
+                visit.attenuated(segmentAbsorption(s, ph) * hit.t);
+            } else {
+                ph.depth = depthLeft(ph.depth, segmentAbsorption(s, ph), hit.t);
+                if (ph.depth < 0) {
+                    visit.absorbed(ph.bounces);
+                    return false;
+                }
             }
         }
         if (s.birefringent() && !ph.coherent) return stepCrystalWave(s, hit, visit, ph);

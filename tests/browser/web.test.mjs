@@ -385,6 +385,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const legible = await assertLegiblePictures('#result-body .pictures');
     const heatmapWidth = legible.find((p) => p.src.endsWith('heatmap.png')).width;
     assert.ok(heatmapWidth >= 1000, `the heat-map shown ${Math.round(heatmapWidth)} px wide`);
+    await page.waitForSelector('.pic-heatmap svg.heatmap-overlay');
     const overlay = await page.$eval('.pic-heatmap svg.heatmap-overlay', (el) => el.getBoundingClientRect().width);
     assert.ok(Math.abs(overlay - heatmapWidth) < 1, `the facets' shapes (${overlay} px) lie over the picture (${heatmapWidth} px)`);
 
@@ -413,7 +414,37 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(err, (stats.regions.table.share_stderr * 100).toFixed(decimals));
     assert.equal(shown, (stats.regions.table.share * 100).toFixed(decimals));
 
-    const rows = () => page.$$eval('table.facets tbody tr', (trs) => trs.map((tr) => Number(tr.dataset.facet)));
+    // Grouped by tier at first, each tier closed: its facets' sums, the share with its error.
+    const tierOf = (name) => name.replace(/_\d+$/, '');
+    const tierNames = [...new Set(stats.facets.map((f) => tierOf(f.name)))];
+    const tierRows = await page.$$eval('table.facets tr.tier-row', (trs) => trs.map((tr) => [tr.querySelector('.tier-toggle').dataset.tier, tr.textContent]));
+    assert.deepEqual(tierRows.map(([t]) => t).sort(), [...tierNames].sort());
+    assert.equal(await page.locator('table.facets tr[data-facet]').count(), 0, 'every tier closed');
+    const byTierShare = tierNames.map((t) => [t, stats.facets.filter((f) => tierOf(f.name) === t).reduce((s, f) => s + f.leaving_share, 0)])
+      .sort((a, b) => b[1] - a[1]);
+    assert.equal(tierRows[0][0], byTierShare[0][0], 'the tier sending most light out first');
+    const hit = stats.totals.hit;
+    const [topTier, topShare] = byTierShare[0];
+    const shareText = await page.textContent(`table.facets tr.tier-row:has(button[data-tier="${topTier}"]) .share-text`);
+    const [, sharePct, errPct] = shareText.match(/^([\d.]+) % ± ([\d.]+)$/) || [];
+    assert.ok(errPct, shareText);
+    assert.ok(Math.abs(Number(sharePct) - topShare * 100) < 0.06, `${shareText} vs ${topShare}`);
+    assert.ok(Math.abs(Number(errPct) - 100 * Math.sqrt(topShare * (1 - topShare) / hit)) < 0.06, `${shareText}: binomial error of ${hit}`);
+    // Opening a tier shows its facets, each share with its error.
+    const starTier = tierNames.find((t) => stats.facets.filter((f) => tierOf(f.name) === t).length > 1);
+    await page.click(`button.tier-toggle[data-tier="${starTier}"]`);
+    assert.equal(await page.getAttribute(`button.tier-toggle[data-tier="${starTier}"]`, 'aria-expanded'), 'true');
+    const opened = stats.facets.filter((f) => tierOf(f.name) === starTier);
+    assert.equal(await page.locator('table.facets tr[data-facet]').count(), opened.length);
+    assert.match(await page.textContent(`table.facets tr[data-facet="${opened[0].id}"] .share-text`), /^[\d.]+ % ± [\d.]+$/);
+    await page.click(`button.tier-toggle[data-tier="${starTier}"]`);
+    // Hovering a facet of a closed tier on the heat-map lights its tier.
+    const pavilionFacet = stats.facets.find((f) => f.region === 'pavilion');
+    await page.hover(`.pic-heatmap polygon[data-facet="${pavilionFacet.id}"]`);
+    assert.equal(await page.locator(`table.facets tr.tier-row.linked:has(button[data-tier="${tierOf(pavilionFacet.name)}"])`).count(), 1);
+    // Ungrouped, every facet in one sortable list.
+    await page.uncheck('.facet-grouping input');
+    const rows = () => page.$$eval('table.facets tr[data-facet]', (trs) => trs.map((tr) => Number(tr.dataset.facet)));
     assert.equal((await rows()).length, stats.facets.length);
     // Default order: most light leaving first.
     const byShare = [...stats.facets].sort((a, b) => b.leaving_share - a.leaving_share || a.id - b.id).map((f) => f.id);
@@ -452,18 +483,20 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.goto(`${baseUrl}/#/jobs/${jobIds.brilliant}`);
     await page.waitForSelector('#result-body .figures');
     await picturesLoaded('#result-body .pictures');
+    await page.check('.facet-grouping input');  // the report prints the facets by tier
     await page.emulateMedia({ media: 'print' });
     try {
       for (const sel of ['.site-header', '.site-footer', '.back-link', '.downloads', '#job-form', '#sweep-form']) {
         assert.equal(await page.locator(sel).first().isVisible(), false, `${sel} is printed`);
       }
-      const buttons = await page.$$eval('#main button:not(.sort)', (bs) => bs.filter((b) => b.offsetParent !== null).length);
+      const buttons = await page.$$eval('#main button:not(.sort):not(.tier-toggle)', (bs) => bs.filter((b) => b.offsetParent !== null).length);
       assert.equal(buttons, 0, 'no button is printed');
       for (const sel of ['[data-section="verdict"]', '.figures', '.pictures img >> nth=0', '#stone-title', 'table.regions', 'table.facets th']) {
         assert.equal(await page.locator(sel).first().isVisible(), true, `${sel} is missing from the print`);
       }
-      // The facet table's column titles print as text, not as buttons.
+      // The facet table's column titles and tiers print as text, not as buttons.
       assert.equal(await page.$eval('table.facets button.sort', (b) => getComputedStyle(b).borderTopStyle), 'none');
+      assert.equal(await page.$eval('table.facets button.tier-toggle', (b) => getComputedStyle(b).borderTopStyle), 'none');
       const pdf = await page.pdf({ format: 'A4', printBackground: true });
       fs.mkdirSync(screenshotDir, { recursive: true });
       fs.writeFileSync(path.join(screenshotDir, '05b-result-print.pdf'), pdf);
@@ -720,6 +753,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.setChecked('#f-tilt-series', false);
     await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
     await page.waitForSelector('[data-section="viewer"]');
+    await page.locator('[data-section="viewer"]').scrollIntoViewIfNeeded();  // its pictures load lazily
     const pics = await picturesLoaded('[data-section="viewer"]');
     assert.deepEqual(pics.map((p) => p.src.split('/').pop()), ['aset.png', 'tilt.webp', 'tilt.png']);
     // The browser decodes the animated WebP.
@@ -942,7 +976,8 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     });
     const { id } = await res.json();
     await page.goto(`${baseUrl}/#/sweeps/${id}`);
-    assert.match(await page.textContent('#sweep-tooltip'), /^Hover a point/, 'the last sweep\'s point is not shown');
+    // The last sweep's point is not shown once the new sweep's page is drawn.
+    await page.waitForFunction(() => /^Hover a point/.test(document.querySelector('#sweep-tooltip').textContent), null, { timeout: 5000 });
     const api = [];
     const shown = [];
     for (;;) {
@@ -1218,6 +1253,142 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
       page.off('request', count);
     }
     await fillSmallJob();
+  });
+
+  test('absorption and colour: the form sends a spectrum, its size and the colour view, shows the table\'s errors beside it, and the result and the comparison show the colours', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#f-mesh option[value="round_brilliant"]', { state: 'attached' });
+    await page.selectOption('#f-mesh', 'round_brilliant');
+    await fillSmallJob({ photons: '2000', material: 'diamond' });
+    await page.setChecked('#f-render', false);
+    // The size and the colour view's settings start from the server's defaults.
+    const defaults = await (await fetch(`${baseUrl}/api/defaults`)).json();
+    assert.equal(await page.inputValue('#f-size'), String(defaults.size_mm));
+    assert.equal(await page.inputValue('#f-colour-illuminant'), defaults.colour.illuminant);
+    assert.equal(await page.inputValue('#f-colour-size'), String(defaults.colour.picture_size));
+    assert.equal(await page.isDisabled('#f-colour-size'), true, 'the colour view\'s settings wait for its box');
+    // The extraordinary column is offered for a uniaxial material only.
+    assert.doesNotMatch(await page.textContent('#absorption-columns'), /extraordinary/);
+    await page.selectOption('#f-material', 'tourmaline');
+    assert.match(await page.textContent('#absorption-columns'), /α ordinary \(1\/mm\), α extraordinary/);
+    // A table that does not read is named beside it, by its line, once it is left.
+    await page.fill('#f-absorption', '400 0.3\n550 abc');
+    await page.press('#f-absorption', 'Tab');
+    assert.match(await page.textContent('#err-absorption'), /^Line 2: "abc" is not a number$/);
+    assert.equal(await page.getAttribute('#f-absorption', 'aria-invalid'), 'true');
+    // A pleochroic table: what 1 mm and the stone's 6.5 mm transmit, each wave, darker the longer the path.
+    await page.fill('#f-absorption', '400 0.30 0.05\n550 0.05 0.05\n700 0.15 0.40');
+    await page.press('#f-absorption', 'Tab');
+    assert.equal(await page.isHidden('#err-absorption'), true);
+    await page.waitForSelector('#absorption-swatches [data-mm="6.5"][data-wave="e"]');
+    const swatches = await page.$$eval('#absorption-swatches .swatch-item', (items) => items.map((i) => [i.dataset.mm, i.dataset.wave, i.dataset.srgb]));
+    assert.deepEqual(swatches.map(([mm, wave]) => `${mm} ${wave}`), ['1 o', '1 e', '6.5 o', '6.5 e']);
+    const lightness = (hex) => [1, 3, 5].reduce((s, k) => s + parseInt(hex.slice(k, k + 2), 16), 0);
+    for (const wave of ['o', 'e']) {
+      const [one, size] = ['1', '6.5'].map((mm) => swatches.find(([m, w]) => m === mm && w === wave)[2]);
+      assert.ok(lightness(size) < lightness(one), `${wave}: ${size} at 6.5 mm is not darker than ${one} at 1 mm`);
+    }
+    assert.notEqual(swatches[2][2], swatches[3][2], 'the two waves transmit different colours');
+    // A flat (grey) spectrum transmits a neutral grey under D65: exp(-0.5) = 0.607 of the light, sRGB 0.607 encoded.
+    await page.selectOption('#f-material', 'diamond');
+    await page.fill('#f-absorption', '400 0.5\n700 0.5');
+    await page.waitForFunction(() => document.querySelector('#absorption-swatches [data-mm="1"]')?.dataset.wave === 'both');
+    const grey = await page.getAttribute('#absorption-swatches [data-mm="1"]', 'data-srgb');
+    const channels = [1, 3, 5].map((k) => parseInt(grey.slice(k, k + 2), 16));
+    const expected = Math.round(255 * (1.055 * Math.exp(-0.5) ** (1 / 2.4) - 0.055));
+    for (const c of channels) assert.ok(Math.abs(c - expected) <= 1, `${grey} is not the grey ${expected}`);
+    await shot('16a-form-absorption');
+    // The server's refusal of a table (a wavelength below its range) stands beside the table.
+    const jobsBefore = (await (await fetch(`${baseUrl}/api/jobs`)).json()).total;
+    await page.fill('#f-absorption', '50 0.3\n550 0.05\n700 0.15');
+    await page.click('#submit-button');
+    await page.waitForSelector('#err-absorption:not([hidden])');
+    assert.match(await page.textContent('#err-absorption'), /absorption\.wavelength_nm/);
+    assert.equal(await page.isHidden('#form-error'), true);
+    assert.equal((await (await fetch(`${baseUrl}/api/jobs`)).json()).total, jobsBefore, 'nothing was submitted');
+    // A good table and the colour view: both sent.
+    await page.fill('#f-absorption', '# a pink stone\n400 0.30\n550 0.05\n700 0.15');
+    await page.fill('#f-size', '8');
+    await page.setChecked('#f-colour', true);
+    await page.fill('#f-colour-size', '48');
+    await page.fill('#f-colour-samples', '1');
+    await page.fill('#f-colour-wavelengths', '8');
+    await page.selectOption('#f-colour-illuminant', 'A');
+    const posted = page.waitForRequest((r) => r.method() === 'POST' && r.url().endsWith('/api/jobs'));
+    const formId = await submitAndGetId({ stay: true });
+    const sent = JSON.parse((await posted).postData());
+    assert.deepEqual(sent.absorption, { wavelength_nm: [400, 550, 700], ordinary_per_mm: [0.3, 0.05, 0.15] });
+    assert.equal(sent.size_mm, 8);
+    assert.deepEqual(sent.colour, { ...defaults.colour, illuminant: 'A', picture_size: 48, samples: 1, wavelengths: 8 });
+    await fetch(`${baseUrl}/api/jobs/${formId}/cancel`, { method: 'POST' });
+    await page.evaluate(() => { location.hash = '#/'; });
+    await page.setChecked('#f-colour', false);
+    await page.fill('#f-absorption', '');
+    // The same stone without the viewer's figures (quick), and a clear one, read on their pages and compared.
+    const post = async (job) => {
+      const res = await fetch(`${baseUrl}/api/jobs`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(job) });
+      const body = await res.json();
+      assert.equal(res.status, 202, JSON.stringify(body));
+      return body.id;
+    };
+    const quick = { ...sent, viewer: { enabled: false }, colour: { ...sent.colour, illuminant: 'D65' } };
+    const id = await post(quick);
+    const clearId = await post({ ...quick, absorption: null });
+    for (const jobId of [id, clearId]) {
+      const deadline = Date.now() + JOB_TIMEOUT_MS;
+      while ((await (await fetch(`${baseUrl}/api/jobs/${jobId}`)).json()).state !== 'succeeded') {
+        assert.ok(Date.now() < deadline, `job ${jobId} did not finish`);
+        await new Promise((r) => setTimeout(r, 200));
+      }
+    }
+    const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+    await page.evaluate((jobId) => { location.hash = `#/jobs/${jobId}`; }, id);
+    await page.waitForSelector('[data-section="colour"] img[src$="colour.png"]');
+    await page.$eval('[data-section="colour"]', (el) => el.scrollIntoView());
+    await picturesLoaded('[data-section="colour"]');
+    const [picture] = await shownPictures('[data-section="colour"]');
+    assert.ok(picture.width >= 400, `colour.png shown ${Math.round(picture.width)} px wide`);
+    assert.equal(picture.link, picture.src, 'colour.png opens at full size');
+    const c = stats.colour;
+    const rgb = `rgb(${[1, 3, 5].map((k) => parseInt(c.mean_colour.srgb.slice(k, k + 2), 16)).join(', ')})`;
+    assert.equal(await page.$eval('[data-section="colour"] .colour-mean .colour-swatch', (el) => getComputedStyle(el).backgroundColor), rgb);
+    assert.match(await page.textContent('[data-section="colour"] .colour-mean'), new RegExp(`${c.mean_colour.srgb}: L\\* ${c.mean_colour.L.toFixed(1)}`));
+    assert.match(await page.textContent('[data-section="colour"] .hint'), /at 8 mm under a dome of CIE illuminant D65/);
+    for (const key of ['L', 'a', 'b', 'chroma']) {
+      const [mean, spread] = await page.$$eval(`[data-section="colour"] tr[data-lab="${key}"] td`, (tds) => tds.map((td) => td.textContent));
+      assert.match(mean, /^-?\d+(\.\d+)? ± \d+(\.\d+)?$/, `${key} mean`);
+      assert.ok(Math.abs(parseFloat(mean) - c[key].mean) <= 0.5, `${key}: ${mean} against ${c[key].mean}`);
+      assert.match(spread, /^\d+(\.\d+)? ± \d+(\.\d+)?$/, `${key} spread`);
+    }
+    for (const key of ['windowed', 'extinct', 'saturated']) {
+      assert.match(await page.textContent(`[data-section="colour"] tr[data-share="${key}"] td`), /^\d+(\.\d+)? % ± \d+(\.\d+)?$/, key);
+    }
+    // The absorbed share among the figures, as the statistics say it.
+    assert.equal(await page.textContent('[data-figure="absorbed_share"] dt'), 'Absorbed');
+    const absorbed = await page.textContent('[data-figure="absorbed_share"] .figure-value');
+    assert.ok(Math.abs(parseFloat(absorbed) - 100 * stats.totals.absorbed_share) < 0.1, `${absorbed} against ${stats.totals.absorbed_share}`);
+    assert.match(await page.textContent('[data-figure="absorbed_share"] .figure-err'), /^± [\d.]+ pts$/);
+    await shot('16b-result-colour');
+    // A clear stone has no absorbed figure, but its colour all the same.
+    await page.evaluate((jobId) => { location.hash = `#/jobs/${jobId}`; }, clearId);
+    await page.waitForSelector('[data-section="colour"] .colour-mean');
+    assert.equal(await page.$('[data-figure="absorbed_share"]'), null, 'a clear stone absorbs nothing');
+    // Compared: both colours side by side, the clear stone named so in the absorbed row.
+    await page.evaluate((ids) => { location.hash = `#/compare/${ids}`; }, `${id},${clearId}`);
+    await page.waitForSelector('[data-section="colour-compare"] table.colour-compare-table');
+    const cell = (row, jobId) => page.textContent(`[data-section="colour-compare"] tr[data-colour-row="${row}"] td[data-id="${jobId}"]`);
+    const clearStats = await (await fetch(`${baseUrl}/api/jobs/${clearId}/stats`)).json();
+    for (const [jobId, s] of [[id, stats], [clearId, clearStats]]) {
+      assert.equal(await cell('mean', jobId), s.colour.mean_colour.srgb);
+      assert.ok(await page.$(`[data-section="colour-compare"] tr[data-colour-row="mean"] td[data-id="${jobId}"] .colour-swatch`));
+      for (const row of ['L', 'a', 'b', 'chroma', 'L-spread']) assert.match(await cell(row, jobId), /^-?[\d.]+ ± [\d.]+$/, row);
+      for (const row of ['windowed', 'extinct', 'saturated']) assert.match(await cell(row, jobId), /^[\d.]+ % ± [\d.]+$/, row);
+    }
+    assert.match(await cell('absorbed', id), /^[\d.]+ % ± [\d.]+$/);
+    assert.equal(await cell('absorbed', clearId), 'clear stone');
+    assert.ok(stats.colour.L.mean < clearStats.colour.L.mean, 'the absorbing stone is the darker');
+    assert.equal((await page.$$('[data-section="colour-compare"] .colour-card img[src$="colour.png"]')).length, 2);
+    await shot('16c-compare-colour');
   });
 
   test('the home page fits a phone', async () => {

@@ -13,6 +13,7 @@
 #define STBI_ONLY_PNG
 #include <stb/stb_image.h>
 
+#include "colour/colour_space.h"
 #include "image/image.h"
 #include "optics/spectrum.h"
 #include "scene/scene.h"

@@ -191,11 +191,12 @@ TEST_F(ServiceTest, DefaultsAreWhatAJobThatLeavesThemOutGets) {
     const json defaults = json::parse(r->body);
     EXPECT_EQ(defaults["threads"], 2);  // the service's cores
     EXPECT_FALSE(defaults.contains("mesh"));
-    for (const char* part : {"render", "aset", "tilt_series", "fire_picture"})
+    for (const char* part : {"render", "aset", "tilt_series", "fire_picture", "colour"})
         EXPECT_TRUE(defaults[part].is_object()) << part;
     const json job = {
         {"mesh", "round_brilliant"}, {"photons", defaults["photons"]}, {"render", true},
-        {"aset", json::object()},    {"tilt_series", json::object()},  {"fire_picture", json::object()}};
+        {"aset", json::object()},    {"tilt_series", json::object()},  {"fire_picture", json::object()},
+        {"colour", json::object()}};
     auto s = submit(job);
     ASSERT_TRUE(s);
     ASSERT_EQ(s->status, 202) << s->body;
@@ -208,6 +209,35 @@ TEST_F(ServiceTest, DefaultsAreWhatAJobThatLeavesThemOutGets) {
     settings.erase("name");
     EXPECT_EQ(settings, defaults);
     EXPECT_EQ(waitFinished(status["id"])["state"], "canceled");
+}
+
+// The page's absorption swatch sums the colour view's own tables: summed over the rows as the document says,
+// a transmittance of 1 gives each illuminant's white, and D65's white is sRGB white.
+TEST_F(ServiceTest, CieTablesGiveTheIlluminantsWhite) {
+    auto r = client_->Get("/api/colour/cie");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200);
+    const json t = json::parse(r->body);
+    ASSERT_EQ(t["wavelength_nm"].size(), 81u);
+    EXPECT_EQ(t["wavelength_nm"][34], 550);
+    EXPECT_DOUBLE_EQ(t["xyz_bar"][34][1].get<double>(), 0.9949501);  // y-bar at 550 nm, CIE 015:2018
+    for (const char* name : {"D65", "A"}) {
+        const json& power = t["illuminants"][name];
+        ASSERT_EQ(power.size(), 81u) << name;
+        double xyz[3] = {0, 0, 0}, norm = 0;
+        for (size_t i = 0; i < power.size(); ++i) {
+            for (int c = 0; c < 3; ++c) xyz[c] += power[i].get<double>() * t["xyz_bar"][i][c].get<double>();
+            norm += power[i].get<double>() * t["xyz_bar"][i][1].get<double>();
+        }
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(xyz[c] / norm, t["white_xyz"][name][c].get<double>(), 1e-12) << name;
+    }
+    for (int row = 0; row < 3; ++row) {
+        double v = 0;
+        for (int c = 0; c < 3; ++c)
+            v += t["xyz_to_linear_srgb"][row][c].get<double>() * t["white_xyz"]["D65"][c].get<double>();
+        EXPECT_NEAR(v, 1, 2e-3) << row;
+    }
 }
 
 TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
@@ -390,6 +420,30 @@ TEST_F(ServiceTest, TheDoublingIsLinkedServedAndItsFieldsChecked) {
     expectProblem(submit(bad), 422, "doubling.picture_size");
     bad["doubling"] = {{"loupe", "ten"}};
     expectProblem(submit(bad), 422, "doubling.loupe");
+}
+
+TEST_F(ServiceTest, TheColourViewIsLinkedServedAndItsFieldsChecked) {
+    json job = smallJob();
+    job["absorption"] = {{"wavelength_nm", {400, 700}}, {"ordinary_per_mm", {0.05, 0.5}}};
+    job["colour"] = {{"picture_size", 32}, {"illuminant", "A"}};
+    const std::string id = submitOk(job);
+    const json done = waitFinished(id);
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    const std::string self = "/api/jobs/" + id;
+    EXPECT_EQ(done["links"]["colour"], self + "/colour.png");
+    auto p = client_->Get(self + "/colour.png");
+    ASSERT_TRUE(p && p->status == 200);
+    EXPECT_EQ(p->get_header_value("Content-Type"), "image/png");
+    const json stats = json::parse(client_->Get(self + "/stats")->body);
+    EXPECT_EQ(stats["colour"]["illuminant"], "A");
+    EXPECT_GT(stats["colour"]["pixels"].get<uint64_t>(), 0u);
+    EXPECT_LT(stats["colour"]["mean_colour"]["b"].get<double>(), 0);  // blue passes: a bluish stone
+
+    json bad = smallJob();
+    bad["colour"] = {{"illuminant", "D50"}};
+    expectProblem(submit(bad), 422, "colour.illuminant");
+    bad["colour"] = {{"wavelengths", 2}};
+    expectProblem(submit(bad), 422, "colour.wavelengths");
 }
 
 TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {

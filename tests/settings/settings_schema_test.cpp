@@ -49,6 +49,7 @@ void forEachJobField(const std::function<void(const std::string&, const FieldInf
     forEachField(firePictureSettingsSchema().fields(), "fire_picture", visit);
     forEachField(polariscopeSettingsSchema().fields(), "polariscope", visit);
     forEachField(doublingSettingsSchema().fields(), "doubling", visit);
+    forEachField(colourSettingsSchema().fields(), "colour", visit);
 }
 
 json::json_pointer pointer(const std::string& path) {
@@ -217,6 +218,7 @@ TEST(SettingsSchema, JsonRoundTrip) {
     spec.settings.firePicture = FirePictureSettings{7, 35, 2.5, 0.1};
     spec.settings.polariscope = PolariscopeSettings{12, 5000, 64};
     spec.settings.doubling = DoublingSettings{96, 15, 5};
+    spec.settings.colour = ColourSettings{64, 3, 8, Illuminant::A, 20, 0.5, 25, 30};
     const json written = toJson(spec);
     const JobRequest back = JobRequest::fromJson(written);
     EXPECT_EQ(toJson(back), written);
@@ -262,6 +264,9 @@ TEST(SettingsSchema, EveryFieldHasItsCliFlag) {
     cli::SettingsFlags doubling;  // the doubling command's
     doubling.add(&app, doublingSettingsSchema().fields(), doublingSettingsSchema().write(DoublingSettings{}),
                  "doubling");
+    cli::SettingsFlags colour;  // the render command's
+    colour.add(&app, colourSettingsSchema().fields(), colourSettingsSchema().write(ColourSettings{}),
+               "colour");
     std::set<std::string> flags;
     forEachJobField([&](const std::string& path, const FieldInfo& f) {
         EXPECT_NE(app.get_option_no_throw(f.doc.flag), nullptr) << path;
@@ -407,6 +412,10 @@ TEST(SettingsSchema, OpenApiAgreesWithTheTables) {
     doubling.fields = &doublingSettingsSchema().fields();
     keys.insert("doubling");
     expectOpenApiAgrees(properties["doubling"], doubling, "doubling");
+    FieldInfo colour = settings::describe("colour", FieldType::Object);
+    colour.fields = &colourSettingsSchema().fields();
+    keys.insert("colour");
+    expectOpenApiAgrees(properties["colour"], colour, "colour");
     EXPECT_EQ(documented, keys);
 }
 

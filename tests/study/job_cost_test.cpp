@@ -150,6 +150,17 @@ TEST(JobCost, TheDoublingCostsThreeViewRaysAPixel) {
     EXPECT_NEAR(partSeconds(cost, "doubling"), 3 * 2000.0 * 2000.0 * 1e-6 * kCostSafetyFactor, 1e-9);
 }
 
+TEST(JobCost, TheColourViewCostsItsRaysAPixel) {
+    StudySettings s;
+    s.trace.photons = 1000;
+    s.trace.viewer.enabled = false;
+    s.colour = ColourSettings{1000, 8, 20};
+    const JobCost cost = estimateJobCost(s, unitRates(), 1);
+    EXPECT_EQ(cost.largest().name, "colour");
+    EXPECT_EQ(cost.largest().field, "colour.picture_size");
+    EXPECT_NEAR(partSeconds(cost, "colour"), 1000.0 * 1000.0 * 8 * 20 * 1e-6 * kCostSafetyFactor, 1e-9);
+}
+
 // The detail of a refused job names its largest part, its size and the field that makes it large.
 TEST(JobCost, TheLargestPartIsNamedWithItsSizeAndField) {
     const CostRates rates = unitRates();

@@ -19,6 +19,7 @@
 #include "optics/material.h"
 #include "stone/stone.h"
 #include "support/fixtures.h"
+#include "support/many_facet_stones.h"
 #include "support/simd_targets.h"
 #include "util/error.h"
 #include "util/random.h"
@@ -542,6 +543,78 @@ TEST(ConvexIntersector, GirdleSkipGivesTheExitThroughEveryPlane) {
                          hit.facet != every.facet;
             }
             EXPECT_EQ(wrong, 0u) << "of " << rays.size();
+        });
+    }
+}
+
+// Stones of many facets and no round girdle search their planes in groups (ConvexIntersector::Cull) and get,
+// bit for bit, the exit through every plane, on every target: the rays of testRays (walks, points on facets,
+// ties through edges and vertices, points a rounding error outside, odd lengths, zero and NaN) and rays
+// from random points inside and on the surface in random directions.
+TEST(ConvexIntersector, CullGivesTheExitThroughEveryPlane) {
+    for (const Stone& stone : {test::briolette(), test::checkerboard(), test::stepCut217()}) {
+        SCOPED_TRACE(stone.name);
+        EXPECT_GE(stone.facets.size(), 217u);
+        const ConvexIntersector convex(stone);
+        ASSERT_FALSE(convex.girdle());
+        ASSERT_TRUE(convex.cull());
+        std::printf("%s: %zu facets in %zu groups\n", stone.name.c_str(), stone.facets.size(),
+                    convex.cull()->groups.size());
+        std::vector<std::pair<Vec3f, Vec3f>> rays = testRays(stone, convex);
+        Rng rng(5, 9);
+        const Vec3f center(stone.bounds.center());
+        for (int i = 0; i < 100'000; ++i) {
+            const Facet& f = stone.facets[size_t(rng.uniform() * float(stone.facets.size()))];
+            const Vec3 a = stone.vertices[f.outline[0]], b = stone.vertices[f.outline[1]],
+                       c = stone.vertices[f.outline[2]];
+            const double u = rng.uniform(), v = rng.uniform() * (1 - u);
+            const Vec3f onSurface(a + (b - a) * u + (c - a) * v);
+            const Vec3f inside = center + (onSurface - center) * rng.uniform();
+            const Vec3f d =
+                normalize(Vec3f(2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1));
+            rays.push_back({i % 2 ? inside : onSurface, d});
+        }
+        forEachSimdTarget([&] {
+            const ConvexIntersector onTarget(stone);
+            size_t wrong = 0;
+            for (const auto& [o, d] : rays) {
+                SurfaceHit hit;
+                const bool found = onTarget.leave(o, d, hit);
+                const SurfaceHit every = exitOverEveryPlane(stone, o, d);
+                wrong += found != (every.t < INFINITY) ||
+                         std::bit_cast<uint32_t>(hit.t) != std::bit_cast<uint32_t>(every.t) ||
+                         hit.facet != every.facet;
+            }
+            EXPECT_EQ(wrong, 0u) << "of " << rays.size();
+        });
+    }
+}
+
+// The whole trace of each many-facet stone (the packet walk, whose exits the Cull finds one ray at a time)
+// tallies the same with the Cull as with the search over every plane, on every target; and the one-photon
+// walk reproduces the tally.
+TEST(PhotonTracer, CullKeepsTheTally) {
+    TraceSettings settings = baseSettings(2 * kPhotonBlock + 1000);
+    settings.light.model = LightModelKind::Hemisphere;
+    settings.dispersion = true;
+    for (const Stone& stone : {test::briolette(), test::checkerboard(), test::stepCut217()}) {
+        SCOPED_TRACE(stone.name);
+        forEachSimdTarget([&] {
+            ConvexIntersector::setCulling(false);
+            const TraceResult every = test::traceStone(stone, settings);
+            ConvexIntersector::setCulling(true);
+            const Scene scene(stone, settings);
+            ASSERT_TRUE(scene.convex()->cull());
+            const TraceBase base(scene, settings);
+            const TraceResult culled = trace(base);
+            EXPECT_GT(culled.stats.exited, 0u);
+            EXPECT_TRUE(culled.stats == every.stats);
+            const FacetStats paths = tallyOfPaths(base);
+            EXPECT_EQ(paths.exited, culled.stats.exited);
+            for (size_t f = 0; f < stone.facets.size(); ++f) {
+                EXPECT_EQ(paths.facets[f].leaving, culled.stats.facets[f].leaving) << f;
+                EXPECT_EQ(paths.facets[f].reflected, culled.stats.facets[f].reflected) << f;
+            }
         });
     }
 }

@@ -1,5 +1,6 @@
 // Several jobs side by side: a ranking by crown return and a table of the figures.
 import { api, jobUrl } from './api.js';
+import { colourCompare } from './compare_colour.js';
 import { FIGURES } from './constants.js';
 import { $, h } from './dom.js';
 import { fireCompare } from './fire.js';
@@ -51,7 +52,7 @@ export async function showCompare(ids) {
   if (failed.length) {
     parts.push(h('p', { class: 'form-error', role: 'alert' }, failed.map((f) => `Job ${shortId(f.id)}: ${f.error}`).join('; ')));
   }
-  if (ok.length) parts.push(...[verdictCompare(ok, entryName), ranking(ok), compareCards(ok), viewerCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName), crystalCompare(ok, entryName)].filter(Boolean));
+  if (ok.length) parts.push(...[verdictCompare(ok, entryName), ranking(ok), compareCards(ok), viewerCompare(ok, entryName), colourCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName), crystalCompare(ok, entryName)].filter(Boolean));
   body.replaceChildren(...parts);
 }
 

@@ -24,6 +24,12 @@ export function h(tag, attrs = {}, ...children) {
   return el;
 }
 
+// A picture as a link to itself, which opens it at full size.
+export function zoomable(src, alt) {
+  return h('a', { href: src, target: '_blank', rel: 'noopener', class: 'zoom', title: 'Open the picture at full size' },
+    h('img', { src, alt, loading: 'lazy' }));
+}
+
 const SVG_NS = 'http://www.w3.org/2000/svg';
 export function svg(tag, attrs = {}, ...children) {
   const el = document.createElementNS(SVG_NS, tag);
@@ -41,7 +47,7 @@ export function showFieldError(field, message) {
   err.hidden = false;
   const wrapper = err.closest('.field');
   if (wrapper) wrapper.classList.add('invalid');
-  const input = wrapper && wrapper.querySelector('input, select');
+  const input = wrapper && wrapper.querySelector('input, select, textarea');
   if (input) input.setAttribute('aria-invalid', 'true');
   const details = err.closest('details');
   if (details) details.open = true;
@@ -56,7 +62,7 @@ export function clearFieldError(field) {
   const wrapper = err.closest('.field');
   if (wrapper) {
     wrapper.classList.remove('invalid');
-    const input = wrapper.querySelector('input, select');
+    const input = wrapper.querySelector('input, select, textarea');
     if (input) input.removeAttribute('aria-invalid');
   }
 }

@@ -1,6 +1,7 @@
 // The job form: its defaults from the server, reading it into a job, its estimate as it is edited, showing the
 // server's field errors, submitting.
 import { api } from './api.js';
+import { readAbsorption, syncAbsorptionField, syncColourControls } from './colour.js';
 import { ESTIMATE_DELAY_MS } from './constants.js';
 import { readCut } from './cut_fields.js';
 import { $, clearFieldError, fieldError, showFieldError } from './dom.js';
@@ -33,6 +34,8 @@ export async function loadFormDefaults() {
     else input.value = String(value);
   }
   syncFormControls();
+  syncColourControls();
+  syncAbsorptionField();
 }
 
 function clearFormErrors() {
@@ -78,6 +81,9 @@ function buildJob(form) {
   job.material = form.elements.material.value;
   job.dispersion = form.elements.dispersion.checked;
   job.polarization = form.elements.polarization.value;
+  job.size_mm = readNumber(form, 'size_mm', errors);
+  const absorption = readAbsorption(form, errors);
+  if (absorption) job.absorption = absorption;
   if (!$('#optic-axis-fields').hidden) {
     job.optic_axis = {
       tilt_deg: readNumber(form, 'optic_axis.tilt_deg', errors),
@@ -87,6 +93,12 @@ function buildJob(form) {
   if (form.elements['fire.enabled'].checked) job.fire = { enabled: true };
   if (form.elements.polariscope.checked) job.polariscope = {};
   if (form.elements.doubling.checked) job.doubling = {};
+  if (form.elements.colour.checked) {
+    job.colour = { illuminant: form.elements['colour.illuminant'].value };
+    for (const key of ['picture_size', 'samples', 'wavelengths', 'head_cone_deg', 'ground', 'extinct_below_l', 'saturated_above_c']) {
+      job.colour[key] = readNumber(form, `colour.${key}`, errors);
+    }
+  }
   job.max_bounces = readNumber(form, 'max_bounces', errors);
   if (form.elements.render.checked) {
     job.render = {
@@ -110,10 +122,21 @@ function buildJob(form) {
   return { job, errors };
 }
 
+// The form's field a server's field stands under: itself, else the nearest part of its path that has one
+// (absorption.wavelength_nm[2] under the absorption table).
+function shownField(field) {
+  for (let f = field; f; f = f.replace(/(\[\d+\]|\.[^.[]*)$/, '')) {
+    if (fieldError(f)) return f;
+    if (!/[.[]/.test(f)) break;
+  }
+  return field;
+}
+
 function reportError(e) {
-  if (e.field && showFieldError(e.field, e.message)) {
+  const field = e.field && shownField(e.field);
+  if (field && showFieldError(field, e.message)) {
     // An error about the cut as a whole (`cut`) stands under the shape's fields, which it names.
-    const input = fieldError(e.field).closest('.field, .cut-fields').querySelector('input, select');
+    const input = fieldError(field).closest('.field, .cut-fields').querySelector('input, select, textarea');
     if (input) input.focus();
     return;
   }
@@ -179,7 +202,7 @@ export async function submitJob(event) {
   const { job, errors } = buildJob(form);
   if (errors.length) {
     for (const [field, message] of errors) showFieldError(field, message);
-    const first = fieldError(errors[0][0]).closest('.field').querySelector('input, select');
+    const first = fieldError(errors[0][0]).closest('.field').querySelector('input, select, textarea');
     if (first) first.focus();
     status.textContent = '';
     return;

@@ -8,7 +8,7 @@ import { fmtNumber, fmtPctErr, humanize } from './format.js';
 export function linkFacet(root, id) {
   for (const el of root.querySelectorAll('.linked')) el.classList.remove('linked');
   if (id === null) return;
-  for (const el of root.querySelectorAll(`[data-facet="${id}"]`)) el.classList.add('linked');
+  for (const el of root.querySelectorAll(`[data-facet="${id}"], [data-facets~="${id}"]`)) el.classList.add('linked');
 }
 
 // Matplotlib's viridis (van der Walt & Smith, 2015) as core/colormap.h draws it: Matt Zucker's degree-6

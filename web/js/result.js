@@ -1,8 +1,9 @@
 // One job's result: the figures, the pictures, the region and facet tables.
 import { api, jobUrl } from './api.js';
+import { ABSORBED_FIGURE, absorbs, colourSection } from './colour.js';
 import { FACET_COLUMNS, FIGURES, POLL_ACTIVE_MS, REGIONS } from './constants.js';
 import { designSection } from './design.js';
-import { $, h } from './dom.js';
+import { $, h, zoomable } from './dom.js';
 import { decimalsFor, fmtDuration, fmtInt, fmtNumber, fmtPct, fmtPctErr, fmtTime, humanize, shortId } from './format.js';
 import { fireSection } from './fire.js';
 import { linkFacet, pictures } from './heatmap.js';
@@ -11,7 +12,8 @@ import { jobSummary, lightText, progressBar, stateBadge } from './progress.js';
 import { tiltChartSvg } from './tilt.js';
 import { verdictCard } from './verdict.js';
 
-export const resultView = { id: '', timer: 0, stats: null, sort: { key: 'leaving_share', dir: -1 } };
+// The facet table's order, whether it groups facets by tier, and the tiers opened (all closed at first).
+export const resultView = { id: '', timer: 0, stats: null, sort: { key: 'leaving_share', dir: -1 }, grouped: true, open: new Set() };
 
 export async function showResult(id) {
   clearTimeout(resultView.timer);
@@ -76,18 +78,80 @@ export function regionTable(regions, caption, compact = false) {
       h('td', { class: 'bar-cell' }, h('span', { class: `bar region-${r}`, style: `width:${(regions[r].share / max) * 100}%` })))))));
 }
 
-function facetTable(facets) {
+// A facet's tier: its name without its number (star_3 -> star, GemCad's P1_2 -> P1); the table is its own.
+function tierOf(name) {
+  return String(name).replace(/_\d+$/, '');
+}
+
+// The facets of each tier summed, in the order of their first facet: the counts and shares add up, and the
+// share's standard error is the binomial one of the summed share over the `hit` photons it is a share of.
+function tiers(facets, hit) {
+  const byName = new Map();
+  for (const f of facets) {
+    const name = tierOf(f.name);
+    if (!byName.has(name)) byName.set(name, { name, facets: [] });
+    byName.get(name).facets.push(f);
+  }
+  return [...byName.values()].map((t) => {
+    const sum = (k) => t.facets.reduce((s, f) => s + (f[k] || 0), 0);
+    const share = sum('leaving_share');
+    const regions = new Set(t.facets.map((f) => f.region));
+    return {
+      ...t, id: Math.min(...t.facets.map((f) => f.id)), region: regions.size === 1 ? t.facets[0].region : 'mixed',
+      area: sum('area'), entering: sum('entering'), reflected: sum('reflected'), internal_reflections: sum('internal_reflections'),
+      leaving: sum('leaving'), leaving_share: share,
+      leaving_share_stderr: hit > 0 ? Math.sqrt(Math.max(0, share * (1 - share)) / hit) : undefined,
+    };
+  });
+}
+
+function compareBy(col, dir) {
+  return (a, b) => {
+    const x = a[col.key];
+    const y = b[col.key];
+    const c = col.numeric ? x - y : String(x).localeCompare(String(y), 'en', { numeric: true });
+    return c * dir || a.id - b.id;
+  };
+}
+
+// `hit`: the photons the shares are of (totals.hit), for the tiers' standard errors.
+function facetTable(facets, hit) {
   const wrap = h('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-labelledby': 'facet-caption' });
-  const draw = () => {
+  const maxShare = Math.max(1e-12, ...facets.map((f) => f.leaving_share));
+  const cells = (f, isTier) => FACET_COLUMNS.map((c) => {
+    if (c.key === 'leaving_share') {
+      return h('td', { class: 'num share-cell' },
+        isTier ? null : h('span', { class: 'mini-track', 'aria-hidden': 'true' },
+          h('span', { class: `bar mini region-${f.region}`, style: `width:${(f.leaving_share / maxShare) * 100}%` })),
+        h('span', { class: 'share-text' }, Number.isFinite(f.leaving_share_stderr) ? fmtPctErr(f.leaving_share, f.leaving_share_stderr) : fmtPct(f.leaving_share)));
+    }
+    if (c.key === 'region') {
+      return h('td', {}, f.region === 'mixed' ? 'mixed' : [h('span', { class: `swatch region-${f.region}`, 'aria-hidden': 'true' }), humanize(f.region)]);
+    }
+    if (isTier && c.key === 'id') return h('td', { class: 'num muted' }, `${f.facets.length}×`);
+    if (isTier && c.key === 'name') {
+      const open = resultView.open.has(f.name);
+      return h('td', {}, h('button', {
+        type: 'button', class: 'tier-toggle', 'aria-expanded': String(open), 'data-tier': f.name,
+        onclick: () => {
+          if (open) resultView.open.delete(f.name);
+          else resultView.open.add(f.name);
+          draw();
+          wrap.querySelector(`button.tier-toggle[data-tier="${CSS.escape(f.name)}"]`).focus();
+        },
+      }, h('span', { 'aria-hidden': 'true' }, open ? '▾ ' : '▸ '), humanize(f.name)));
+    }
+    const v = f[c.key];
+    return h('td', { class: c.numeric ? 'num' : '' }, c.format ? c.format(v) : String(v ?? ''));
+  });
+  const facetRow = (f) => h('tr', {
+    'data-facet': f.id, 'data-region': f.region,
+    onmouseenter: (e) => linkFacet(e.currentTarget.closest('.result') || document, f.id),
+    onmouseleave: (e) => linkFacet(e.currentTarget.closest('.result') || document, null),
+  }, cells(f, false));
+  function draw() {
     const { key, dir } = resultView.sort;
     const col = FACET_COLUMNS.find((c) => c.key === key);
-    const sorted = [...facets].sort((a, b) => {
-      const x = a[key];
-      const y = b[key];
-      const c = col.numeric ? x - y : String(x).localeCompare(String(y), 'en', { numeric: true });
-      return c * dir || a.id - b.id;
-    });
-    const maxShare = Math.max(1e-12, ...facets.map((f) => f.leaving_share));
     const head = h('tr', {}, FACET_COLUMNS.map((c) => {
       const active = c.key === key;
       const sortState = active ? (dir > 0 ? 'ascending' : 'descending') : 'none';
@@ -101,27 +165,22 @@ function facetTable(facets) {
           },
         }, c.label, h('span', { class: 'sort-mark', 'aria-hidden': 'true' }, active ? (dir > 0 ? ' ▲' : ' ▼') : ' ↕')));
     }));
-    const rows = sorted.map((f) => h('tr', {
-      'data-facet': f.id, 'data-region': f.region,
-      onmouseenter: (e) => linkFacet(e.currentTarget.closest('.result') || document, f.id),
-      onmouseleave: (e) => linkFacet(e.currentTarget.closest('.result') || document, null),
-    }, FACET_COLUMNS.map((c) => {
-      if (c.key === 'leaving_share') {
-        return h('td', { class: 'num share-cell' },
-          h('span', { class: 'mini-track', 'aria-hidden': 'true' },
-            h('span', { class: `bar mini region-${f.region}`, style: `width:${(f.leaving_share / maxShare) * 100}%` })),
-          h('span', { class: 'share-text' }, fmtPct(f.leaving_share, f.leaving_share_stderr)));
-      }
-      if (c.key === 'region') {
-        return h('td', {}, h('span', { class: `swatch region-${f.region}`, 'aria-hidden': 'true' }), humanize(f.region));
-      }
-      const v = f[c.key];
-      return h('td', { class: c.numeric ? 'num' : '' }, c.format ? c.format(v) : String(v ?? ''));
-    })));
-    wrap.replaceChildren(h('table', { class: 'data facets' },
-      h('caption', { id: 'facet-caption' }, `Facets (${facets.length}) — sorted by ${FACET_COLUMNS.find((c) => c.key === key).label.toLowerCase()}, ${dir > 0 ? 'ascending' : 'descending'}`),
-      h('thead', {}, head), h('tbody', {}, rows)));
-  };
+    const order = compareBy(col, dir);
+    // Grouped, each tier is a body of its own: its sums, then (when opened) its facets, tiers and facets alike in
+    // the table's order; a tier row lights when a facet of it is pointed at on the heat-map.
+    const bodies = resultView.grouped
+      ? tiers(facets, hit).sort(order).map((t) => h('tbody', { class: 'tier', 'data-tier': t.name },
+        h('tr', { class: 'tier-row', 'data-facets': t.facets.map((f) => f.id).join(' '), 'data-region': t.region }, cells(t, true)),
+        resultView.open.has(t.name) ? [...t.facets].sort(order).map(facetRow) : null))
+      : [h('tbody', {}, [...facets].sort(order).map(facetRow))];
+    const grouping = h('label', { class: 'facet-grouping' }, h('input', {
+      type: 'checkbox', checked: resultView.grouped,
+      onchange: (e) => { resultView.grouped = e.target.checked; draw(); wrap.querySelector('.facet-grouping input').focus(); },
+    }), ' Group by tier');
+    wrap.replaceChildren(grouping, h('table', { class: `data facets${resultView.grouped ? ' grouped' : ''}` },
+      h('caption', { id: 'facet-caption' }, `Facets (${facets.length}${resultView.grouped ? ` in ${tiers(facets, hit).length} tiers` : ''}) — sorted by ${col.label.toLowerCase()}, ${dir > 0 ? 'ascending' : 'descending'}; shares ± one standard error`),
+      h('thead', {}, head), bodies));
+  }
   draw();
   return wrap;
 }
@@ -181,12 +240,6 @@ export function doublingText(d) {
   return `Doubling: through the table ${t.median_mm.toFixed(3)} mm (quartiles ${t.quartiles_mm.map((q) => q.toFixed(3)).join('–')} mm), `
     + `${(100 * t.median_share_of_diameter).toFixed(2)} % of the girdle, ${t.median_arcmin.toFixed(1)}′ through a ${d.loupe}× loupe; `
     + `through the whole crown ${d.crown.median_mm.toFixed(3)} mm; seen ${d.view_to_axis_deg.toFixed(0)}° from the optic axis`;
-}
-
-// A picture as a link to itself, which opens it at full size.
-function zoomable(src, alt) {
-  return h('a', { href: src, target: '_blank', rel: 'noopener', class: 'zoom', title: 'Open the picture at full size' },
-    h('img', { src, alt, loading: 'lazy' }));
 }
 
 // A job's viewer figures: the ASET picture with its shares, the tilt series' animation with its
@@ -263,11 +316,13 @@ function resultPage(job, stats) {
     h('section', { class: 'card', 'aria-labelledby': 'merit-title' },
       h('h2', { id: 'merit-title' }, 'Figures of merit'),
       h('p', { class: 'hint' }, `Shares of the photons that hit the stone, with one standard error, under the job's light (${lightText(job.settings)}).`),
-      h('dl', { class: 'figures' }, FIGURES.map((f, i) => figureCard(f, totals, i === 0)))),
+      h('dl', { class: 'figures' }, FIGURES.map((f, i) => figureCard(f, totals, i === 0)),
+        absorbs(stats) ? figureCard(ABSORBED_FIGURE, totals) : null)),
     h('section', { class: 'card', 'aria-labelledby': 'pictures-title' },
       h('h2', { id: 'pictures-title' }, 'Pictures'), pictures(job, name, stats)),
     stone3dSection(job, stats),
     viewerSection(job, stats),
+    colourSection(job, stats),
     fireSection(job, stats),
     designSection(job, stats),
     h('div', { class: 'result-grid' },
@@ -287,5 +342,5 @@ function resultPage(job, stats) {
           h('dt', {}, 'Speed'), h('dd', {}, `${fmtInt(timing.photons_per_second)} photons/s`))),
       h('section', { class: 'card', 'aria-labelledby': 'stone-title' },
         h('h2', { id: 'stone-title' }, 'The stone'), cutList(job), proportionList(stats.mesh))),
-    h('section', { class: 'card', 'aria-labelledby': 'facet-caption' }, facetTable(stats.facets || [])));
+    h('section', { class: 'card', 'aria-labelledby': 'facet-caption' }, facetTable(stats.facets || [], stats.totals ? stats.totals.hit : 0)));
 }

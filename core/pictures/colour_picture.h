@@ -1,0 +1,16 @@
+#pragma once
+// colour.png: the stone face-up in true colour (viewer/colour_view.h) with its title, a scale bar in mm and a
+// legend of the illuminant, the stone's size and its colour figures.
+#include <string>
+
+#include "image/image.h"
+#include "viewer/colour_view.h"
+
+namespace facetlight {
+
+std::string colourTitle(const std::string& stoneName, const TraceSettings& settings);
+// "L* 62.1 +- 0.3 (spread 14.2), a* ..., windowed 3.1 %": the figures in one line.
+std::string colourSummary(const ColourView& view);
+Image colourPicture(const ColourView& view, const std::string& title);
+
+}  // namespace facetlight

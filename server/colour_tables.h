@@ -1,0 +1,12 @@
+#pragma once
+// The CIE tables the colour view sums over (core/colour), for a client that shows a colour of its own (the
+// page's absorption swatches): the server's numbers, not a copy of them.
+#include <nlohmann/json.hpp>
+
+namespace facetlight::server {
+
+// GET /api/colour/cie: the 5 nm rows of 380-780 nm with x-bar, y-bar, z-bar and the relative power of each
+// illuminant, each illuminant's white (Y = 1) and the XYZ to linear sRGB matrix.
+nlohmann::json cieTablesJson();
+
+}  // namespace facetlight::server
