@@ -554,6 +554,9 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(shown, (table.leaving_share * 100).toFixed(decimals));
     assert.equal(err, (table.leaving_share_stderr * 100).toFixed(decimals));
     assert.equal(await page.textContent('.stone3d-numbers dd[data-figure="entering"]'), table.entering.toLocaleString('en-US'));
+    // Its row of the facet table lights up (its tier's row while the table is grouped by tier).
+    const rows = `table.facets tr.linked[data-facet="${table.id}"], table.facets tr.linked[data-facets~="${table.id}"]`;
+    assert.equal(await page.locator(rows).count(), 1, 'the table\'s row lights up');
     await shot('05c-result-3d');
     // The keyboard: N picks the next facet, an arrow key turns the stone.
     await canvas.focus();

@@ -6,13 +6,13 @@
 import { api } from './api.js';
 import { h } from './dom.js';
 import { fmtInt, fmtNumber, fmtPctErr, humanize } from './format.js';
-import { scaleEnd, viridis } from './heatmap.js';
+import { linkFacet, scaleEnd, viridis } from './heatmap.js';
 
 const THREE_URL = '/vendor/three/build/three.module.js';
 const CONTROLS_URL = '/vendor/three/examples/jsm/controls/OrbitControls.js';
 const BACKGROUND = 0xf4f5f7;
 const EDGE = 0x1a1a1a;
-const HIGHLIGHT = 0xff1f6b;  // the picked facet's outline: apart from every viridis colour
+const HIGHLIGHT = 0xd6246e;  // the picked facet's outline, as the heat-map's: apart from every viridis colour
 const VIEW_FROM_VERTICAL_DEG = 35;  // the first view: from above at an angle, the table facing the viewer
 const TURN_STEP = Math.PI / 24;  // a key press turns the stone 7.5 degrees
 const ZOOM_STEP = 1.15;
@@ -109,13 +109,20 @@ export async function showStone3d(root, job, stats) {
     return;
   }
   if (!root.isConnected) return;
+  const ids = new Set((stats.facets || []).map((f) => f.id));
+  if (!geometry.facets.some((f) => ids.has(f.id))) {
+    say('The stone\'s shape (stone.json) names none of the statistics\' facets.');
+    return;
+  }
   let renderer;
   try {
+    // The drawing kept after it is shown: "Save image as" and the browser tests read it back.
     renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
   } catch {
     say('The 3-D view needs WebGL, which this browser does not offer.');
     return;
   }
+  dispose(active);  // one shown meanwhile, by a quicker call
   active = buildView(THREE, OrbitControls, renderer, root, job, stats, geometry);
 }
 
@@ -254,9 +261,11 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
     render();
   };
 
-  // Shows facet `index` (into `facets`; null: none) beside the view and outlines it.
+  // Shows facet `index` (into `facets`; null: none) beside the view and outlines it; its row of the facet table
+  // and its shape on the heat-map light up.
   const pick = (index) => {
     picked = index;
+    linkFacet(root.closest('.result') || root, index === null ? null : facets[index].id);
     if (index === null) {
       highlight.visible = false;
       veil.visible = false;
