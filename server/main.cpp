@@ -30,6 +30,11 @@ int main(int argc, char** argv) {
     app.add_option("--meshes", config.meshesDir, "Folder of shipped meshes (.obj, .stl, .asc, .gem)")
         ->capture_default_str();
     app.add_option("--web", config.webDir, "Folder of the web page served at /")->capture_default_str();
+    app.add_option(
+           "--three-js", config.threeDir,
+           "Folder of three.js (Debian's libjs-three) for the page's 3-D view, served at /vendor/three/ "
+           "(empty: none)")
+        ->capture_default_str();
     auto& l = config.limits;
     app.add_option("--max-photons", l.maxPhotons, "Most photons per job (trace, and photon map)")
         ->capture_default_str()

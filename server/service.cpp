@@ -4,6 +4,7 @@
 #include <iostream>
 #include <thread>
 
+#include "script_folder.h"
 #include "util/number_text.h"
 
 namespace facetlight::server {
@@ -40,12 +41,19 @@ Service::Service(ServiceConfig config) : config_(std::move(config)), http_(confi
         // scripts.
         http_.set_file_extension_and_mimetype_mapping("js", "text/javascript");
         http_.set_file_extension_and_mimetype_mapping("mjs", "text/javascript");
-        if (!http_.set_mount_point("/", config_.webDir.string())) {
+        if (!http_.set_mount_point("/", config_.webDir.string(), {{"Cache-Control", kStaticCacheControl}})) {
             std::cerr << "facetlight-server: cannot serve " << config_.webDir << "\n";
         }
     } else if (!config_.webDir.empty()) {
         std::cerr << "facetlight-server: no web page folder at " << config_.webDir
                   << "; serving the API only\n";
+    }
+    // Only .js files under build/ and examples/jsm/, where OrbitControls imports
+    // '../../../build/three.module.js'.
+    const ScriptFolder three{"/vendor/three/", config_.threeDir, {"build", "examples/jsm"}};
+    if (!config_.threeDir.empty() && !serveScripts(http_, three)) {
+        std::cerr << "facetlight-server: no three.js at " << config_.threeDir
+                  << " (Debian's libjs-three, --three-js): the page's 3-D view is off\n";
     }
     // A full or read-only disk does not keep the service from starting: it says why here and in /healthz.
     if (!readOnly.empty()) {

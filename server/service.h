@@ -26,6 +26,9 @@ struct ServiceConfig {
     std::filesystem::path dataDir = "data";
     std::filesystem::path meshesDir = "meshes";
     std::filesystem::path webDir = "web";
+    // Debian's libjs-three, served at /vendor/three/ for the page's 3-D view (script_folder.h); missing: the
+    // page says the view needs it.
+    std::filesystem::path threeDir = "/usr/share/javascript/three";
     ServiceLimits limits;
     ConnectionLimits http;  // threads, per-peer connections, request deadline
     int cores = 0;          // 0: std::thread::hardware_concurrency()

@@ -1,5 +1,6 @@
 #include "stone/stone_json.h"
 
+#include <cmath>
 #include <string>
 
 #include "stone/proportions.h"
@@ -11,6 +12,14 @@ namespace {
 nlohmann::json optionalNumber(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
 
 nlohmann::json vec3Json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+// `v` to `decimals` places, written as short decimals (dividing by an exact power of ten gives the double
+// nearest the decimal).
+nlohmann::json roundedJson(const Vec3& v, int decimals) {
+    const double scale = std::pow(10.0, decimals);
+    const auto r = [scale](double x) { return std::round(x * scale) / scale; };
+    return nlohmann::json::array({r(v.x), r(v.y), r(v.z)});
+}
 
 }  // namespace
 
@@ -74,6 +83,25 @@ nlohmann::json stoneJson(const Stone& stone) {
                           {"centroid", vec3Json(f.centroid)}});
     j["facets"] = std::move(facets);
     return j;
+}
+
+nlohmann::json stoneGeometryJson(const Stone& stone, double mmPerUnit) {
+    nlohmann::json facets = nlohmann::json::array();
+    for (const Facet& f : stone.facets) {
+        // To 10 nm: far below any cutter's tolerance, and the file stays small.
+        nlohmann::json corners = nlohmann::json::array();
+        for (uint32_t v : f.outline) corners.push_back(roundedJson(stone.vertices[v] * mmPerUnit, 5));
+        facets.push_back({{"id", f.id},
+                          {"name", f.name},
+                          {"region", regionName(f.region)},
+                          {"normal", roundedJson(f.normal, 9)},
+                          {"vertices", std::move(corners)}});
+    }
+    return {{"name", stone.name},
+            {"units", "mm"},
+            {"mm_per_unit", mmPerUnit},
+            {"frame", "the stone's: girdle plane z = 0, table up (+z), centred on the z axis"},
+            {"facets", std::move(facets)}};
 }
 
 }  // namespace facetlight

@@ -16,5 +16,9 @@ nlohmann::json frameJson(const StoneFrame& frame);
 nlohmann::json stoneSummaryJson(const Stone& stone);
 // The summary plus `facets`: id, name, region, area, normal, centroid.
 nlohmann::json stoneJson(const Stone& stone);
+// The stone as traced, for a 3-D view (`stone.json`, docs/stats-schema.md): in the stone's frame and in mm
+// (`mmPerUnit`: the trace's scale, size_mm over the girdle diameter), each facet's id, name, region, outward
+// normal and its outline's corners, counter-clockwise seen from outside.
+nlohmann::json stoneGeometryJson(const Stone& stone, double mmPerUnit);
 
 }  // namespace facetlight

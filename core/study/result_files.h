@@ -22,7 +22,7 @@ struct ResultFile {
 };
 
 // In the order they are written: stats.json last, so that its presence says a folder is complete.
-inline constexpr std::array<ResultFile, 22> kResultFiles{{
+inline constexpr std::array<ResultFile, 23> kResultFiles{{
     {"best.obj", "text/plain", "best.obj", "best_obj", "sweep.maximize"},
     // The best design as GemCad .asc (docs/gemcad.md): a design's tiers as tweaked, a mesh's facet planes.
     {"best.asc", "text/plain", "best.asc", "best_asc", "sweep.maximize"},
@@ -37,6 +37,8 @@ inline constexpr std::array<ResultFile, 22> kResultFiles{{
     {"heatmap.png", "image/png", "heatmap.png", "heatmap", "render"},
     // heatmap.png's facets in pixels (docs/stats-schema.md); the heat-map comes with every study.
     {"heatmap.json", "application/json", "heatmap.json", "heatmap_layout", "render"},
+    // The stone as traced, facet by facet in mm, for the page's 3-D view (docs/stats-schema.md).
+    {"stone.json", "application/json", "stone.json", "stone", ""},
     {"heatmap_fire.png", "image/png", "heatmap_fire.png", "heatmap_fire", "fire"},
     {"angular.png", "image/png", "angular.png", "angular", "render"},
     {"aset.png", "image/png", "aset.png", "aset", "aset"},

@@ -20,6 +20,7 @@
 #include "render/renderer.h"
 #include "render/tilt_series.h"
 #include "scene/scene.h"
+#include "stone/stone_json.h"
 #include "trace/distributed_trace.h"
 #include "trace/photon_tracer.h"
 #include "util/error.h"
@@ -130,6 +131,8 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
         result.file("stats.csv") = csv.str();
         result.file("heatmap.png") = encodePng(facetHeatmap(stone, traced.stats));
         result.file("heatmap.json") = toJson(heatmapLayout(stone), stone).dump();
+        // At the trace's scale, as the trace's mm (absorption, the viewer's distances) are.
+        result.file("stone.json") = stoneGeometryJson(stone, settings.trace.sizeMm / scene.diameter()).dump();
         if (facts.size) result.file("diagram.png") = encodePng(designDiagram(stone, facts.sheet, *facts.size));
         if (traced.fire) {
             result.file("heatmap_fire.png") = encodePng(fireHeatmap(stone, *traced.fire));

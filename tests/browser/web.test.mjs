@@ -22,6 +22,11 @@ const serverBinary = process.env.FACETLIGHT_SERVER || path.join(sourceDir, 'buil
 const screenshotDir = process.env.FACETLIGHT_SCREENSHOT_DIR || path.join(sourceDir, 'build/screenshots');
 const chromiumPath = process.env.FACETLIGHT_CHROMIUM || '/usr/bin/chromium';
 const JOB_TIMEOUT_MS = 240_000;
+// No GPU here: WebGL (the 3-D view) runs on SwiftShader. Chromium is withdrawing that automatic fallback unless
+// asked with --enable-unsafe-swiftshader ("unsafe" for pages from the web, not for our own page); Debian's
+// Chromium 156 headless draws with or without it.
+const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--disable-quic',
+  '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'];
 const DESKTOP = { width: 1366, height: 900 };
 const PHONE = { width: 390, height: 844 };
 
@@ -175,6 +180,21 @@ async function chartTextsCutOff() {
   });
 }
 
+// The 3-D view's canvas, sampled every 5th pixel: how many differ from the background, and the samples.
+async function stoneCanvasPixels() {
+  return page.$eval('canvas.stone3d-canvas', (c) => {
+    const copy = document.createElement('canvas');
+    copy.width = c.width;
+    copy.height = c.height;
+    const g = copy.getContext('2d');
+    g.drawImage(c, 0, 0);
+    const px = g.getImageData(0, 0, c.width, c.height).data;
+    const samples = [];
+    for (let i = 0; i < px.length; i += 4 * 5) samples.push((px[i] << 16) | (px[i + 1] << 8) | px[i + 2]);
+    return { samples, drawn: samples.filter((v) => v !== 0xf4f5f7).length };
+  });
+}
+
 async function noHorizontalOverflow() {
   return page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth + 1);
 }
@@ -224,8 +244,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
       executablePath: chromiumPath,
       headless: true,
       viewport: DESKTOP,
-      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-        '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+      args: CHROMIUM_ARGS,
     });
     page = browser.pages()[0] || await browser.newPage();
     page.setDefaultTimeout(30_000);
@@ -487,6 +506,81 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
       await page.emulateMedia({ media: 'screen' });
     }
     assert.equal(await page.locator('.site-header').isVisible(), true);
+  });
+
+  test('the 3-D view draws the stone, colours it by the chosen figure and names a facet clicked, with its numbers', async () => {
+    const id = jobIds.brilliant;
+    await page.goto(`${baseUrl}/#/jobs/${id}`);
+    const view = '[data-section="stone3d"] .stone3d';
+    await page.waitForSelector(`${view}[data-triangles]`);
+    const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+    const stone = await (await fetch(`${baseUrl}/api/jobs/${id}/stone.json`)).json();
+    assert.equal(stone.units, 'mm');
+    assert.deepEqual(stone.facets.map((f) => f.id), stats.facets.map((f) => f.id));
+    // three drew every facet: a polygon of n corners is n - 2 triangles.
+    const triangles = stone.facets.reduce((n, f) => n + f.vertices.length - 2, 0);
+    assert.equal(Number(await page.getAttribute(view, 'data-triangles')), triangles);
+    const before = await stoneCanvasPixels();
+    assert.ok(before.drawn > 0.25 * before.samples.length, `${before.drawn} of ${before.samples.length} samples drawn`);
+    // A text alternative, and the view takes the keyboard's focus.
+    const canvas = page.locator('canvas.stone3d-canvas');
+    assert.match(await canvas.getAttribute('aria-label'), /in 3-D, coloured by light leaving/);
+    assert.match(await page.textContent('#stone3d-summary'), new RegExp(`${stats.facets.length} facets coloured by light leaving`));
+    assert.equal(await canvas.getAttribute('tabindex'), '0');
+    // The legend: the viridis ramp with its scale, and the table beyond it.
+    assert.equal(await page.$$eval('.stone3d-ticks span', (s) => s.length), 5);
+    const table = stats.facets.find((f) => f.region === 'table');
+    const beyond = await page.textContent('.stone3d-beyond');
+    assert.ok(beyond.includes(`${table.name.replace(/_/g, ' ')} ${(100 * table.leaving_share).toFixed(2)} %`), beyond);
+
+    // Another figure: other colours, its legend and the text alternative follow.
+    await page.selectOption('#stone3d-figure', 'internal_reflections');
+    assert.equal(await page.getAttribute(view, 'data-figure'), 'internal_reflections');
+    const after = await stoneCanvasPixels();
+    assert.equal(after.samples.length, before.samples.length, 'the canvas kept its size');
+    const changed = after.samples.filter((v, i) => v !== before.samples[i]).length;
+    assert.ok(changed > 0.05 * after.samples.length, `${changed} of ${after.samples.length} samples changed colour`);
+    assert.equal(await page.textContent('.stone3d-legend-title'), 'Internal reflections');
+    await page.selectOption('#stone3d-figure', 'leaving_share');
+
+    // Seen from above at an angle, the canvas's centre is the table: a click names it with its numbers.
+    await canvas.click();  // at its centre, scrolled into view
+    await page.waitForSelector(`${view}[data-picked="${table.id}"]`);
+    assert.equal(await page.textContent('.stone3d-readout h3'), table.name.replace(/_/g, ' '));
+    const share = await page.textContent('.stone3d-numbers dd[data-figure="leaving_share"]');
+    const [, shown, err] = share.match(/^(\d+(?:\.\d+)?) % ± (\d+(?:\.\d+)?)$/) || [];
+    assert.ok(err, share);
+    const decimals = (err.split('.')[1] || '').length;
+    assert.equal(shown, (table.leaving_share * 100).toFixed(decimals));
+    assert.equal(err, (table.leaving_share_stderr * 100).toFixed(decimals));
+    assert.equal(await page.textContent('.stone3d-numbers dd[data-figure="entering"]'), table.entering.toLocaleString('en-US'));
+    // Its row of the facet table lights up (its tier's row while the table is grouped by tier).
+    const rows = `table.facets tr.linked[data-facet="${table.id}"], table.facets tr.linked[data-facets~="${table.id}"]`;
+    assert.equal(await page.locator(rows).count(), 1, 'the table\'s row lights up');
+    await shot('05c-result-3d');
+    // The keyboard: N picks the next facet, an arrow key turns the stone.
+    await canvas.focus();
+    await page.keyboard.press('n');
+    await page.waitForSelector(`${view}[data-picked="${stone.facets[(stone.facets.findIndex((f) => f.id === table.id) + 1) % stone.facets.length].id}"]`);
+    const unturned = await stoneCanvasPixels();
+    await page.keyboard.press('ArrowLeft');
+    const turned = await stoneCanvasPixels();
+    assert.equal(turned.samples.length, unturned.samples.length, 'the canvas kept its size');
+    assert.ok(turned.samples.some((v, i) => v !== unturned.samples[i]), 'the arrow key turned the stone');
+  });
+
+  test('without three.js on the server the result page works and says the 3-D view needs libjs-three', async () => {
+    await page.route('**/vendor/three/**', (route) => route.fulfill({ status: 404, body: '' }));
+    try {
+      await page.goto(`${baseUrl}/#/jobs/${jobIds.brilliant}`);
+      await page.reload();
+      await page.waitForSelector('#result-body .figures');
+      await page.waitForSelector('[data-section="stone3d"] .stone3d-missing');
+      assert.match(await page.textContent('[data-section="stone3d"] .stone3d-missing'), /needs three\.js from Debian's libjs-three/);
+      assert.equal(await page.locator('canvas.stone3d-canvas').count(), 0);
+    } finally {
+      await page.unroute('**/vendor/three/**');
+    }
   });
 
   test('compare two finished jobs, ranked by crown return, with their pictures', async () => {
@@ -1388,8 +1482,7 @@ describe('a server that asks for a token', { timeout: 600_000 }, () => {
       executablePath: chromiumPath,
       headless: true,
       viewport: DESKTOP,
-      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-        '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+      args: CHROMIUM_ARGS,
     });
     tab = context.pages()[0] || await context.newPage();
     tab.setDefaultTimeout(30_000);

@@ -56,6 +56,11 @@ for png in render heatmap angular; do
     png_size "$work/$png.png" >/dev/null || fail "$png.png is not a PNG"
 done
 [ "$(png_size "$work/render.png")" = "64x48" ] || fail "render.png is $(png_size "$work/render.png")"
+# the stone in 3-D for the page: a facet for each of the statistics' facets, by the same ids
+curl -sf "$base/api/jobs/$id/stone.json" -o "$work/stone.json" || fail "no stone.json"
+python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); t=json.load(open(sys.argv[2]))
+assert s["units"] == "mm" and [f["id"] for f in s["facets"]] == [f["id"] for f in t["facets"]]' \
+    "$work/stone.json" "$work/stats.json" || fail "stone.json does not match the statistics' facets"
 # a plain curl -d sends a form's content type, which any site's page may send too: 415 (issue 31)
 expect_status 415 -d '{"mesh":"round_brilliant","photons":1000}' "$base/api/jobs"
 id_small="$(submit '{"mesh":"round_brilliant","photons":1000}')"

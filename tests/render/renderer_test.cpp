@@ -148,6 +148,53 @@ TEST(Study, StatisticsOnlyWithoutRender) {
     EXPECT_FALSE(result.file("heatmap.png").empty());
 }
 
+// stone.json, the page's 3-D view: the stone as traced, facet for facet as the statistics number them, each
+// outline a polygon on its facet's plane, turned outward, in mm at the job's size_mm.
+TEST(Study, StoneJsonIsTheStoneAsTracedInMm) {
+    StudySettings s;
+    s.trace = smallTrace(1);
+    s.trace.viewer.enabled = false;
+    s.trace.sizeMm = 8;
+    RunControl control;
+    const Stone& stone = roundBrilliant();
+    const StudyResult result = runStudy(stone, s, control);
+    const nlohmann::json geometry = nlohmann::json::parse(result.file("stone.json"));
+    EXPECT_EQ(geometry["units"], "mm");
+    const double mm = 8 / stone.proportions.diameter;
+    EXPECT_DOUBLE_EQ(geometry["mm_per_unit"].get<double>(), mm);
+    const nlohmann::json& facets = geometry["facets"];
+    const nlohmann::json& stats = result.stats["facets"];
+    ASSERT_EQ(facets.size(), stats.size());
+    ASSERT_EQ(facets.size(), stone.facets.size());
+    double radius = 0;
+    for (size_t i = 0; i < facets.size(); ++i) {
+        const nlohmann::json& f = facets[i];
+        SCOPED_TRACE(f.dump());
+        EXPECT_EQ(f["id"], stats[i]["id"]);
+        EXPECT_EQ(f["name"], stats[i]["name"]);
+        EXPECT_EQ(f["region"], stats[i]["region"]);
+        const Facet& facet = stone.facets.at(f["id"].get<size_t>());
+        const nlohmann::json& corners = f["vertices"];
+        ASSERT_GE(corners.size(), 3u);
+        std::vector<Vec3> p;
+        for (const nlohmann::json& c : corners) p.push_back({c[0], c[1], c[2]});
+        Vec3 newell{};  // the polygon's own normal (Newell's method): which way round it goes
+        for (size_t k = 0; k < p.size(); ++k) {
+            const Vec3& a = p[k];
+            const Vec3& b = p[(k + 1) % p.size()];
+            newell += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+            // On the facet's plane scaled to mm, to the file's 10 nm.
+            EXPECT_NEAR(dot(facet.normal, a), facet.offset * mm, 2e-5);
+            radius = std::max(radius, std::hypot(a.x, a.y));
+        }
+        EXPECT_GT(dot(normalize(newell), facet.normal), 1 - 1e-6);
+        EXPECT_NEAR(f["normal"][2].get<double>(), facet.normal.z, 1e-9);
+    }
+    // The girdle is size_mm across (a round's 16 girdle corners reach the circle the diameter is measured
+    // on).
+    EXPECT_NEAR(2 * radius, 8, 0.01);
+}
+
 TEST(Study, CancelThrowsCanceled) {
     StudySettings s;
     s.trace = smallTrace(1);

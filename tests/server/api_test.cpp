@@ -52,6 +52,7 @@ class ServiceTest : public ::testing::Test {
         config.dataDir = dir_ / "data";
         config.meshesDir = dir_ / "meshes";
         config.webDir = "";
+        config.threeDir = threeDir_;
         config.limits = limits;
         config.cores = 2;
         config.accessLog = false;
@@ -68,6 +69,7 @@ class ServiceTest : public ::testing::Test {
         listener_.join();
         service_.reset();
     }
+    fs::path threeDir_;  // the folder served at /vendor/three/; none unless a test makes one
     httplib::Result submit(const json& job) { return client_->Post("/api/jobs", job.dump(), kJson); }
     std::string submitOk(const json& job) {
         auto r = submit(job);
@@ -311,6 +313,16 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     size_t drawn = 0;
     for (const json& f : statsDoc["facets"]) drawn += f["region"] != "girdle";
     EXPECT_EQ(map["facets"].size(), drawn);
+    // The stone in 3-D for the page: every facet the statistics count, by the same ids, in mm.
+    EXPECT_EQ(done["links"]["stone"], "/api/jobs/" + id + "/stone.json");
+    auto stone = client_->Get("/api/jobs/" + id + "/stone.json");
+    ASSERT_TRUE(stone && stone->status == 200);
+    EXPECT_EQ(stone->get_header_value("Content-Type"), "application/json");
+    const json geometry = json::parse(stone->body);
+    EXPECT_EQ(geometry["units"], "mm");
+    ASSERT_EQ(geometry["facets"].size(), statsDoc["facets"].size());
+    for (size_t i = 0; i < geometry["facets"].size(); ++i)
+        EXPECT_EQ(geometry["facets"][i]["id"], statsDoc["facets"][i]["id"]);
     auto png = client_->Get("/api/jobs/" + id + "/render.png");
     const auto be32 = [&](size_t at) {
         uint32_t v = 0;
@@ -319,6 +331,44 @@ TEST_F(ServiceTest, JobRunsToSuccessWithResults) {
     };
     EXPECT_EQ(be32(16), 32u);  // IHDR width
     EXPECT_EQ(be32(20), 24u);  // IHDR height
+}
+
+// The page's three.js (Debian's libjs-three) at /vendor/three/: its modules under build/ and examples/jsm/ as
+// JavaScript, nothing else of the folder, nothing outside it, no listing.
+TEST_F(ServiceTest, ServesThreeJsModulesAndNothingElse) {
+    stopService();
+    threeDir_ = dir_ / "three";
+    const auto write = [](const fs::path& path, const std::string& text) {
+        fs::create_directories(path.parent_path());
+        std::ofstream(path) << text;
+    };
+    write(threeDir_ / "build/three.module.js", "export const REVISION = '111';\n");
+    write(threeDir_ / "examples/jsm/controls/OrbitControls.js",
+          "import * as T from '../../../build/three.module.js';\n");
+    write(threeDir_ / "build/package.json", "{}");
+    write(threeDir_ / "three.module.js", "// outside the served subfolders\n");
+    write(threeDir_ / "examples/jsm/.hidden.js", "// a dot file\n");
+    write(dir_ / "secret.js", "// outside the folder\n");
+    start();
+    auto three = client_->Get("/vendor/three/build/three.module.js");
+    ASSERT_TRUE(three);
+    EXPECT_EQ(three->status, 200);
+    EXPECT_EQ(three->body, "export const REVISION = '111';\n");
+    EXPECT_EQ(three->get_header_value("Content-Type"), "text/javascript");
+    EXPECT_EQ(three->get_header_value("Cache-Control"), "no-cache");
+    auto controls = client_->Get("/vendor/three/examples/jsm/controls/OrbitControls.js");
+    ASSERT_TRUE(controls);
+    EXPECT_EQ(controls->status, 200);
+    for (const char* path :
+         {"/vendor/three/build/package.json", "/vendor/three/three.module.js", "/vendor/three/build/",
+          "/vendor/three/build", "/vendor/three/examples/jsm/.hidden.js", "/vendor/three/build/missing.js",
+          "/vendor/three/build/../../secret.js", "/vendor/three/build/%2e%2e/%2e%2e/secret.js",
+          "/vendor/three/build//three.module.js", "/vendor/three/build/./three.module.js"}) {
+        auto r = client_->Get(path);
+        ASSERT_TRUE(r) << path;
+        EXPECT_EQ(r->status, 404) << path << r->body;
+        EXPECT_EQ(r->body.find("outside"), std::string::npos) << path;
+    }
 }
 
 TEST_F(ServiceTest, FireIsMeasuredLinkedAndServed) {

@@ -289,6 +289,17 @@ function viewerSection(job, stats) {
     h('div', { class: 'viewer-grid' }, figures));
 }
 
+// The stone in 3-D: stone3d.js (and three.js with it) is loaded only here, so the page works without either.
+function stone3dSection(job, stats) {
+  if (!job.links || !job.links.stone) return null;
+  const body = h('div', { class: 'stone3d' }, h('p', { class: 'hint' }, 'Loading the 3-D view…'));
+  import('./stone3d.js').then((m) => m.showStone3d(body, job, stats)).catch((e) => {
+    body.replaceChildren(h('p', { class: 'hint stone3d-missing', role: 'status' }, `The 3-D view could not be loaded: ${e.message}`));
+  });
+  return h('section', { class: 'card', 'aria-labelledby': 'stone3d-title', 'data-section': 'stone3d' },
+    h('h2', { id: 'stone3d-title' }, '3-D view'), body);
+}
+
 function resultPage(job, stats) {
   const name = jobName(job);
   const totals = stats.totals || {};
@@ -309,6 +320,7 @@ function resultPage(job, stats) {
         absorbs(stats) ? figureCard(ABSORBED_FIGURE, totals) : null)),
     h('section', { class: 'card', 'aria-labelledby': 'pictures-title' },
       h('h2', { id: 'pictures-title' }, 'Pictures'), pictures(job, name, stats)),
+    stone3dSection(job, stats),
     viewerSection(job, stats),
     colourSection(job, stats),
     fireSection(job, stats),
