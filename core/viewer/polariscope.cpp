@@ -58,6 +58,10 @@ const settings::Schema<PolariscopeSettings>& polariscopeSettingsSchema() {
               {"--polariscope-photons", "Polariscope: photons per position"}),
         count("picture_size", &PolariscopeSettings::pictureSize, 0, 1024,
               {"--polariscope-picture", "Polariscope: pixels across the view from above (0: none)"}),
+        choice("lamp", &PolariscopeSettings::lamp, kPolariscopeLampNames,
+               {"--polariscope-lamp",
+                "Polariscope: the light below the lower filter, a parallel beam straight up (collimated) or a "
+                "diffusing light box (diffuse: the same radiance from every direction below)"}),
     });
     return schema;
 }
@@ -83,8 +87,16 @@ Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const
             TraceSettings s = settings;
             s.polarization = PolarizationMode::On;
             s.light = LightSettings{};
-            s.light.direction = {0, 0, 1};
-            s.light.polarizerDeg = polarizer;
+            if (p.lamp == PolariscopeLamp::Collimated) {
+                s.light.direction = {0, 0, 1};
+                s.light.polarizerDeg = polarizer;
+            } else {
+                // The uniform dome turned upside down (the world turned half a turn about x): its light comes
+                // from below. The polariser's axis is given in that world, whose y is the stone's -y.
+                s.light.model = LightModelKind::Hemisphere;
+                s.light.tiltDeg = 180;
+                s.light.polarizerDeg = std::fmod(180.0 - polarizer, 180.0);
+            }
             s.fire.enabled = false;
             const Scene scene(stone, s);
             const TraceBase trace(scene, s);

@@ -11,15 +11,23 @@
 #include "settings/settings_schema.h"
 #include "stone/stone.h"
 #include "trace/trace_settings.h"
+#include "util/name_table.h"
 #include "util/run_control.h"
 
 namespace facetlight {
+
+// The light below the lower polariser: a parallel beam straight up, or a diffusing light box (a Lambertian
+// emitter: the same radiance from every direction of the lower hemisphere), as most polariscopes have.
+enum class PolariscopeLamp { Collimated, Diffuse };
+inline constexpr NameTable<PolariscopeLamp, 2> kPolariscopeLampNames{
+    {{{PolariscopeLamp::Collimated, "collimated"}, {PolariscopeLamp::Diffuse, "diffuse"}}}};
 
 // A job's `polariscope` (JSON, described once in polariscopeSettingsSchema()).
 struct PolariscopeSettings {
     int angles = 36;           // turntable positions over half a turn (the view repeats every 180 deg)
     uint64_t photons = 20000;  // per position
     int pictureSize = 160;     // pixels across each position's view from above (0: no pictures)
+    PolariscopeLamp lamp = PolariscopeLamp::Collimated;
 };
 
 const settings::Schema<PolariscopeSettings>& polariscopeSettingsSchema();
@@ -44,7 +52,7 @@ struct Polariscope {
     bool blinks = false;
 };
 
-// `settings` gives the stone's material, optic axis, seed and threads; the instrument sets the rest: collimated
+// `settings` gives the stone's material, optic axis, seed and threads; the instrument sets the rest: the lamp's
 // light travelling up, a polariser at -angle (the stone turned by angle), the analyser crossed above it, and
 // polarisation on. Photon i of each position draws from Rng(seed, i) and the analyser from a stream of its own,
 // so the readings are the same at any thread count. Adds each position's photons to control->done() (the caller

@@ -1138,6 +1138,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.fill('#f-axis-tilt', '30');
     await page.fill('#f-axis-azimuth', '45');
     await page.setChecked('#f-polariscope', true);
+    await page.selectOption('#f-polariscope-lamp', 'diffuse');
     await page.setChecked('#f-doubling', true);
     await shot('15a-form-polarised');
     const posted = page.waitForRequest((r) => r.method() === 'POST' && r.url().endsWith('/api/jobs'));
@@ -1145,7 +1146,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const sent = JSON.parse((await posted).postData());
     assert.equal(sent.polarization, 'on');
     assert.deepEqual(sent.optic_axis, { tilt_deg: 30, azimuth_deg: 45 });
-    assert.deepEqual(sent.polariscope, {}, 'the polariscope box asks for one with its defaults');
+    assert.deepEqual(sent.polariscope, { lamp: 'diffuse' }, 'the polariscope box asks for one with its defaults and the lamp chosen');
     assert.deepEqual(sent.doubling, {}, 'the doubling box asks for one with its defaults');
     const formJob = await (await fetch(`${baseUrl}/api/jobs/${formId}`)).json();
     assert.equal(formJob.settings.polarization, 'on');
@@ -1155,6 +1156,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.selectOption('#f-polarization', 'off');
     await page.selectOption('#f-material', 'auto');
     await page.setChecked('#f-polariscope', false);
+    await page.selectOption('#f-polariscope-lamp', 'collimated');
     await page.setChecked('#f-doubling', false);
     // The same stone without the viewer's figures (quick), its result page read.
     const res = await fetch(`${baseUrl}/api/jobs`, {

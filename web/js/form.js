@@ -91,7 +91,9 @@ function buildJob(form) {
     };
   }
   if (form.elements['fire.enabled'].checked) job.fire = { enabled: true };
-  if (form.elements.polariscope.checked) job.polariscope = {};
+  if (form.elements.polariscope.checked) {
+    job.polariscope = form.elements.polariscope_lamp.value === 'collimated' ? {} : { lamp: form.elements.polariscope_lamp.value };
+  }
   if (form.elements.doubling.checked) job.doubling = {};
   if (form.elements.colour.checked) {
     job.colour = { illuminant: form.elements['colour.illuminant'].value };
