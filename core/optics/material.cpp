@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "optics/gem_spectra.h"
 #include "util/error.h"
 #include "util/excerpt.h"
 
@@ -60,6 +61,9 @@ constexpr Fit uniaxial(std::string_view name, Dispersion o, Dispersion e, double
 // Malitson & Dodge (1972), synthetic sapphire; ruby is the same corundum.
 constexpr Dispersion kCorundumO = sellmeier({1.4313493, 0.65054713, 5.3414021}, {0.0726631, 0.1193242, 18.028251});
 constexpr Dispersion kCorundumE = sellmeier({1.5039759, 0.55069141, 6.5927379}, {0.0740288, 0.1216529, 20.072248});
+// Ghosh, Opt. Commun. 163, 95 (1999): alpha quartz; amethyst is the same quartz.
+constexpr Dispersion kQuartzO = ghosh(1.28604141, 1.07044083, 1.00585997e-2, 1.10202242, 100);
+constexpr Dispersion kQuartzE = ghosh(1.28851804, 1.09509924, 1.02101864e-2, 1.15662475, 100);
 
 // Coefficients and sources as tabulated in docs/optics.md.
 const std::vector<Fit>& fits() {
@@ -78,9 +82,8 @@ const std::vector<Fit>& fits() {
                   sellmeierC2({1.03961212, 0.231792344, 1.01046945}, {0.00600069867, 0.0200179144, 103.560653}),
                   2.51),
         uniaxial("ruby", kCorundumO, kCorundumE, 4.00),
-        // Ghosh, Opt. Commun. 163, 95 (1999): alpha quartz and calcite.
-        uniaxial("quartz", ghosh(1.28604141, 1.07044083, 1.00585997e-2, 1.10202242, 100),
-                 ghosh(1.28851804, 1.09509924, 1.02101864e-2, 1.15662475, 100), 2.65),
+        // Ghosh 1999: alpha quartz (above) and calcite.
+        uniaxial("quartz", kQuartzO, kQuartzE, 2.65),
         uniaxial("calcite", ghosh(1.73358749, 0.96464345, 1.94325203e-2, 1.82831454, 120),
                  ghosh(1.35859695, 0.82427830, 1.06689543e-2, 0.14429128, 120), 2.71),
         // Wang et al., Laser Photonics Rev. 7, 831 (2013): 6H-SiC, the moissanite polytype.
@@ -94,6 +97,13 @@ const std::vector<Fit>& fits() {
         // Mineralogy; each with its gem's dispersion (GIA).
         {"peridot", Optic::Biaxial, {cauchy(1.635, 0.020), cauchy(1.651, 0.020), cauchy(1.670, 0.020)}, 3.22},
         {"topaz", Optic::Biaxial, {cauchy(1.606, 0.014), cauchy(1.609, 0.014), cauchy(1.616, 0.014)}, 3.53},
+        // Coloured (spectra: optics/gem_spectra.cpp). Emerald: beryl, Cauchy through GIA's emerald (1.583,
+        // 1.577, dispersion 0.014, SG 2.72). Alexandrite: chrysoberyl, Cauchy through the Handbook of
+        // Mineralogy's 1.746 / 1.748 / 1.756 and GIA's dispersion 0.015 and SG 3.73.
+        uniaxial("blue_sapphire", kCorundumO, kCorundumE, 4.00),
+        uniaxial("emerald", cauchy(1.583, 0.014), cauchy(1.577, 0.014), 2.72),
+        uniaxial("amethyst", kQuartzO, kQuartzE, 2.65),
+        {"alexandrite", Optic::Biaxial, {cauchy(1.746, 0.015), cauchy(1.748, 0.015), cauchy(1.756, 0.015)}, 3.73},
     };
     return kFits;
 }
@@ -108,6 +118,7 @@ Material Material::byName(std::string_view name) {
         m.optic_ = fit.optic;
         m.axes_ = fit.axes;
         m.density_ = fit.densityGcm3;
+        m.absorption_ = gemSpectrum(name);
         return m;
     }
     std::string known;

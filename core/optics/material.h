@@ -50,7 +50,8 @@ class Material {
     // g/cm^3, for weights; none for a constant index (an `n` or a design file's index names no material).
     std::optional<double> densityGcm3() const { return density_ > 0 ? std::optional(density_) : std::nullopt; }
 
-    // Beer-Lambert absorption (docs/optics.md, "Absorption"): none (clear), or a spectrum a job gives.
+    // Beer-Lambert absorption (docs/optics.md, "Absorption"): none (clear), a coloured material's published
+    // spectrum (optics/gem_spectra.h), or a spectrum a job gives in its place.
     const std::optional<AbsorptionSpectrum>& absorption() const { return absorption_; }
     Material withAbsorption(std::optional<AbsorptionSpectrum> spectrum) const {
         Material m = *this;

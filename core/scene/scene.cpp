@@ -31,7 +31,8 @@ MaterialChoice chooseIndex(const SceneSettings& settings, const Stone& stone) {
 
 MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone) {
     MaterialChoice choice = chooseIndex(settings, stone);
-    choice.material = choice.material.withAbsorption(settings.absorption);
+    // A job's table replaces the material's own spectrum (docs/optics.md, "Coloured materials").
+    if (settings.absorption) choice.material = choice.material.withAbsorption(settings.absorption);
     return choice;
 }
 

@@ -76,9 +76,10 @@ TEST(Material, RejectsUnknownNamesAndBadIndices) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("diamond"), std::string::npos) << "lists the known names";
     }
-    EXPECT_EQ(materialNames(),
-              (std::vector<std::string>{"diamond", "cubic_zirconia", "sapphire", "fused_silica", "bk7", "ruby", "quartz",
-                                        "calcite", "moissanite", "tourmaline", "zircon", "peridot", "topaz"}));
+    EXPECT_EQ(materialNames(), (std::vector<std::string>{
+                                   "diamond", "cubic_zirconia", "sapphire", "fused_silica", "bk7", "ruby",
+                                   "quartz", "calcite", "moissanite", "tourmaline", "zircon", "peridot",
+                                   "topaz", "blue_sapphire", "emerald", "amethyst", "alexandrite"}));
 }
 
 // The single-index materials' index() before double refraction came, formula and coefficients as they were:

@@ -249,4 +249,9 @@ export function syncFormControls() {
   $('#optic-axis-fields').hidden = !(uniaxial && polarized);
   for (const input of $('#optic-axis-fields').querySelectorAll('input')) input.disabled = !(uniaxial && polarized);
   $('#hint-material-split').hidden = !(uniaxial && !polarized);
+  // A coloured material's swatch (index.html: what 6.5 mm passes of D65).
+  const swatch = material.selectedOptions[0]?.dataset.swatch;
+  $('#material-swatch').hidden = !swatch;
+  $('#material-swatch').style.background = swatch || '';
+  $('#hint-material-colour').hidden = !swatch;
 }

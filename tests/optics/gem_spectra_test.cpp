@@ -1,0 +1,103 @@
+#include "optics/gem_spectra.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "colour/cie.h"
+#include "colour/colour_space.h"
+#include "optics/material.h"
+#include "scene/scene.h"
+#include "support/fixtures.h"
+
+namespace facetlight {
+namespace {
+
+const std::vector<std::string> kColoured = {"ruby",     "blue_sapphire", "emerald",
+                                            "amethyst", "peridot",       "alexandrite"};
+
+// CIELAB of what `mm` of the material passes of `illuminant`, against that illuminant's white: the
+// unpolarised mixture 2/3 alpha_o + 1/3 alpha_e (docs/optics.md, "Absorption"), no surface reflection.
+Lab transmitted(const Material& m, double mm, Illuminant illuminant = Illuminant::D65) {
+    const AbsorptionSpectrum& s = *m.absorption();
+    const auto tau = [&](double nm) {
+        return std::exp(-(2 * s.ordinary(nm) + s.extraordinary(nm)) / 3 * mm);
+    };
+    return xyzToLab(tristimulus(illuminant, tau), whitePoint(illuminant));
+}
+
+TEST(GemSpectra, EachColouredMaterialShipsAValidSpectrum) {
+    for (const std::string& name : kColoured) {
+        SCOPED_TRACE(name);
+        const Material m = Material::byName(name);
+        ASSERT_TRUE(m.absorption());
+        const AbsorptionSpectrum& s = *m.absorption();
+        // readAbsorption checks what a job's table must be: strictly increasing wavelengths, one coefficient
+        // per wavelength, each from 0 to 1e6 per mm.
+        EXPECT_EQ(readAbsorption(toJson(s), "absorption"), s);
+        EXPECT_TRUE(s.absorbs());
+        EXPECT_LE(s.wavelengthNm.front(), 380);
+        EXPECT_GE(s.wavelengthNm.back(), 780);
+        if (!s.extraordinaryPerMm.empty()) {
+            EXPECT_EQ(m.optic(), Optic::Uniaxial);
+        }
+        ASSERT_TRUE(m.densityGcm3());
+    }
+}
+
+TEST(GemSpectra, ClearMaterialsStayClear) {
+    for (const std::string& name : materialNames()) {
+        const bool coloured = std::find(kColoured.begin(), kColoured.end(), name) != kColoured.end();
+        EXPECT_EQ(Material::byName(name).absorption().has_value(), coloured) << name;
+    }
+}
+
+// The hue family a gemmologist names, under D65 through 1 mm and through a 1-carat round's 6.5 mm.
+TEST(GemSpectra, ColoursFallInTheirHueFamilies) {
+    for (const double mm : {1.0, 6.5}) {
+        SCOPED_TRACE(mm);
+        const Lab ruby = transmitted(Material::byName("ruby"), mm);
+        EXPECT_GT(ruby.a, 10);  // red: a* well above 0, above |b*|
+        EXPECT_GT(ruby.a, std::abs(ruby.b));
+        const Lab sapphire = transmitted(Material::byName("blue_sapphire"), mm);
+        EXPECT_LT(sapphire.b, -5);  // blue
+        const Lab emerald = transmitted(Material::byName("emerald"), mm);
+        EXPECT_LT(emerald.a, -10);  // green
+        const Lab amethyst = transmitted(Material::byName("amethyst"), mm);
+        EXPECT_GT(amethyst.a, 0);  // purple: red and blue
+        EXPECT_LT(amethyst.b, 0);
+        const Lab peridot = transmitted(Material::byName("peridot"), mm);
+        EXPECT_LT(peridot.a, 0);  // yellowish green
+        EXPECT_GT(peridot.b, 0);
+        const Lab alexandrite = transmitted(Material::byName("alexandrite"), mm);
+        EXPECT_LT(alexandrite.a, 0);  // green in daylight
+        // Darker through the longer path.
+        if (mm > 1) {
+            for (const std::string& name : kColoured)
+                EXPECT_LT(transmitted(Material::byName(name), mm).L, transmitted(Material::byName(name), 1).L)
+                    << name;
+        }
+    }
+}
+
+// Alexandrite's colour change: redder under incandescent light (A) than in daylight (D65), each against its
+// own white.
+TEST(GemSpectra, AlexandriteTurnsRedderUnderIncandescentLight) {
+    const Material m = Material::byName("alexandrite");
+    EXPECT_GT(transmitted(m, 6.5, Illuminant::A).a, transmitted(m, 6.5).a + 5);
+}
+
+TEST(GemSpectra, AJobsTableReplacesTheMaterialsOwn) {
+    SceneSettings settings;
+    settings.material = "ruby";
+    EXPECT_EQ(chooseMaterial(settings, test::roundBrilliant()).material.absorption(), gemSpectrum("ruby"));
+    settings.absorption =
+        AbsorptionSpectrum{.wavelengthNm = {400, 700}, .ordinaryPerMm = {0.1, 0.1}, .extraordinaryPerMm = {}};
+    EXPECT_EQ(chooseMaterial(settings, test::roundBrilliant()).material.absorption(), settings.absorption);
+}
+
+}  // namespace
+}  // namespace facetlight
