@@ -75,21 +75,23 @@ const std::vector<Fit>& fits() {
                   sellmeier({1.347091, 2.117788, 9.452943}, {0.062543, 0.166739, 24.320570}), 5.8),
         uniaxial("sapphire", kCorundumO, kCorundumE, 4.00),
         // Malitson, J. Opt. Soc. Am. 55, 1205 (1965).
-        isotropic("fused_silica", sellmeier({0.6961663, 0.4079426, 0.8974794}, {0.0684043, 0.1162414, 9.896161}),
-                  2.20),
+        isotropic("fused_silica",
+                  sellmeier({0.6961663, 0.4079426, 0.8974794}, {0.0684043, 0.1162414, 9.896161}), 2.20),
         // Schott N-BK7 data sheet; C given squared.
-        isotropic("bk7",
-                  sellmeierC2({1.03961212, 0.231792344, 1.01046945}, {0.00600069867, 0.0200179144, 103.560653}),
-                  2.51),
+        isotropic(
+            "bk7",
+            sellmeierC2({1.03961212, 0.231792344, 1.01046945}, {0.00600069867, 0.0200179144, 103.560653}),
+            2.51),
         uniaxial("ruby", kCorundumO, kCorundumE, 4.00),
         // Ghosh 1999: alpha quartz (above) and calcite.
         uniaxial("quartz", kQuartzO, kQuartzE, 2.65),
         uniaxial("calcite", ghosh(1.73358749, 0.96464345, 1.94325203e-2, 1.82831454, 120),
                  ghosh(1.35859695, 0.82427830, 1.06689543e-2, 0.14429128, 120), 2.71),
         // Wang et al., Laser Photonics Rev. 7, 831 (2013): 6H-SiC, the moissanite polytype.
-        uniaxial("moissanite", wang(6.57232, 0.1401, 0.03178, -0.02153), wang(6.7452, 0.15352, 0.03597, -0.02249),
-                 3.22),
-        // Cauchy through the gemmological indices and dispersion (GIA Gem Reference Guide): elbaite tourmaline,
+        uniaxial("moissanite", wang(6.57232, 0.1401, 0.03178, -0.02153),
+                 wang(6.7452, 0.15352, 0.03597, -0.02249), 3.22),
+        // Cauchy through the gemmological indices and dispersion (GIA Gem Reference Guide): elbaite
+        // tourmaline,
         // high zircon.
         uniaxial("tourmaline", cauchy(1.644, 0.017), cauchy(1.624, 0.017), 3.06),
         uniaxial("zircon", cauchy(1.925, 0.039), cauchy(1.984, 0.039), 4.70),
@@ -103,7 +105,10 @@ const std::vector<Fit>& fits() {
         uniaxial("blue_sapphire", kCorundumO, kCorundumE, 4.00),
         uniaxial("emerald", cauchy(1.583, 0.014), cauchy(1.577, 0.014), 2.72),
         uniaxial("amethyst", kQuartzO, kQuartzE, 2.65),
-        {"alexandrite", Optic::Biaxial, {cauchy(1.746, 0.015), cauchy(1.748, 0.015), cauchy(1.756, 0.015)}, 3.73},
+        {"alexandrite",
+         Optic::Biaxial,
+         {cauchy(1.746, 0.015), cauchy(1.748, 0.015), cauchy(1.756, 0.015)},
+         3.73},
     };
     return kFits;
 }

@@ -13,10 +13,15 @@ namespace {
 
 // The analyser's random draws: a stream apart from the photons' (seed and index mixed with a constant).
 constexpr uint64_t kAnalyserStream = 0x9e3779b97f4a7c15ULL;
+// Under a light box the eye above the analyser takes the light leaving within this angle of the vertical: a
+// gemmologist looks straight down, and light leaving obliquely (which a diffuse lamp sends out in every
+// direction) misses the eye. The parallel beam's light is counted wherever it leaves upward, as before.
+constexpr double kEyeConeDeg = 15;
 
 // Counts what leaves the stone upward and what the analyser (axis across the vertical) passes of it.
 struct AnalyserCount {
     Vec3f axis;
+    float minUp = 0;  // the smallest d.z of light the eye takes
     uint64_t seed = 0, index = 0;
     uint64_t upward = 0, passed = 0;
     Polarization state;
@@ -32,7 +37,7 @@ struct AnalyserCount {
     void internalReflection(uint32_t) {}
     void exitPolarization(const Polarization& p, const Vec3f&) { state = p; }
     void exited(uint32_t, const Vec3f& p, const Vec3f& d, uint32_t) {
-        if (d.z <= 0) return;
+        if (!(d.z > minUp)) return;
         ++upward;
         Rng draw(seed ^ kAnalyserStream, index);
         if (!(draw.uniform() < analyserShare(state, d, frameAcross(d, axis)))) return;
@@ -103,9 +108,20 @@ Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const
             const double a = radians(polarizer + 90);
             PolariscopeReading& reading = out.readings[k];
             reading.seen.assign(size_t(p.pictureSize) * size_t(p.pictureSize), 0);
-            AnalyserCount count{Vec3f(float(std::cos(a)), float(std::sin(a)), 0), s.seed, 0, 0, 0, {},
-                                float(std::cos(radians(angle))), float(std::sin(radians(angle))),
-                                float(1.05 * radius), p.pictureSize, &reading.seen};
+            const float minUp =
+                p.lamp == PolariscopeLamp::Diffuse ? float(std::cos(radians(kEyeConeDeg))) : 0.0f;
+            AnalyserCount count{Vec3f(float(std::cos(a)), float(std::sin(a)), 0),
+                                minUp,
+                                s.seed,
+                                0,
+                                0,
+                                0,
+                                {},
+                                float(std::cos(radians(angle))),
+                                float(std::sin(radians(angle))),
+                                float(1.05 * radius),
+                                p.pictureSize,
+                                &reading.seen};
             for (uint64_t i = 0; i < p.photons; ++i) {
                 count.index = i;
                 if (scene.convex()) {

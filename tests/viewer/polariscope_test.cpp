@@ -59,26 +59,31 @@ TEST(Polariscope, SlabCutAlongItsAxisBlinksFourTimesATurn) {
     for (const PolariscopeReading& r : along.readings) EXPECT_EQ(r.passed, 0u) << r.angleDeg;
 }
 
-TEST(Polariscope, UnderADiffuseLampTheSlabStillBlinksAndAnIsotropicCubeLetsLightThrough) {
-    // A light box: light from every direction below. The calcite block with its axis along x still goes dark
-    // where the polariser lies along or across the axis (the block's mirror symmetry makes those angles
-    // extremes), now less deep than under the parallel beam.
-    PolariscopeSettings lamp{16, 8000};
+TEST(Polariscope, UnderADiffuseLampTheSlabStillBlinksAndAnIsotropicCubeStaysNearlyDark) {
+    // A light box: light from every direction below, of which the eye takes what leaves within 15 deg of the
+    // vertical. The calcite block with its axis along x still goes dark where the polariser lies along or
+    // across the axis (its mirror symmetry makes those angles extremes) and bright between.
+    PolariscopeSettings lamp{16, 20000};
     lamp.lamp = PolariscopeLamp::Diffuse;
     const Polariscope slab = polariscope(test::unitCube(), block("calcite", 90), lamp);
     EXPECT_TRUE(slab.blinks);
     EXPECT_EQ(slab.darkAnglesDeg, (std::vector<double>{0, 90, 180, 270}));
-    const Polariscope beam = polariscope(test::unitCube(), block("calcite", 90), {16, 8000});
-    EXPECT_GT(slab.readings[0].share(), beam.readings[0].share() + 3 * slab.readings[0].shareStderr());
-    // An isotropic cube lets some light through between crossed filters: an oblique ray's s and p parts cross
-    // its faces unequally, which turns its plane of polarisation (zero under the parallel beam, above). It
-    // does not blink, and its four-fold symmetry gives the same share at a and 90 - a.
+    EXPECT_GT(slab.readings[4].share(), 0.35);  // 45 deg
+    // An isotropic cube passes a little light between crossed filters (an oblique ray's s and p parts cross
+    // its faces unequally, which turns its plane of polarisation; none under the parallel beam, above), does
+    // not blink, and its symmetry gives the same share at a turn a and 90 - a.
     const Polariscope cube = polariscope(test::unitCube(), block("diamond", 0), lamp);
     EXPECT_FALSE(cube.blinks);
-    for (const PolariscopeReading& r : cube.readings) EXPECT_GT(r.passed, 0u) << r.angleDeg;
+    uint64_t passed = 0;
+    for (const PolariscopeReading& r : cube.readings) {
+        passed += r.passed;
+        EXPECT_LT(r.share(), 0.1) << r.angleDeg;
+    }
+    EXPECT_GT(passed, 0u);
     for (size_t k = 1; k < 8; ++k) {
         const PolariscopeReading &a = cube.readings[k], &b = cube.readings[8 - k];
-        EXPECT_NEAR(a.share(), b.share(), 4 * std::hypot(a.shareStderr(), b.shareStderr())) << a.angleDeg;
+        EXPECT_NEAR(a.share(), b.share(), 4 * std::hypot(a.shareStderr(), b.shareStderr()) + 0.01)
+            << a.angleDeg;
     }
 }
 
