@@ -464,6 +464,23 @@ SurfaceHit exitOverEveryPlane(const Stone& stone, const Vec3f& o, const Vec3f& d
     return best;
 }
 
+// On every SIMD target, the stone's exit search gives each ray the exit through every plane, bit for bit.
+void expectExitsOverEveryPlane(const Stone& stone, const std::vector<std::pair<Vec3f, Vec3f>>& rays) {
+    forEachSimdTarget([&] {
+        const ConvexIntersector onTarget(stone);
+        size_t wrong = 0;
+        for (const auto& [o, d] : rays) {
+            SurfaceHit hit;
+            const bool found = onTarget.leave(o, d, hit);
+            const SurfaceHit every = exitOverEveryPlane(stone, o, d);
+            wrong += found != (every.t < INFINITY) ||
+                     std::bit_cast<uint32_t>(hit.t) != std::bit_cast<uint32_t>(every.t) ||
+                     hit.facet != every.facet;
+        }
+        EXPECT_EQ(wrong, 0u) << "of " << rays.size();
+    });
+}
+
 // Rays that try the girdle split: walks of reflections from random inside points, rays from points on the
 // girdle and parallel to its planes, rays through vertices and edges (ties), points a rounding error
 // outside, directions far from unit length, zero and NaN.
@@ -531,19 +548,7 @@ TEST(ConvexIntersector, GirdleSkipGivesTheExitThroughEveryPlane) {
         std::printf("%s: %zu girdle facets searched apart\n", name.c_str(),
                     convex.girdle() ? convex.girdle()->facets.count : 0);
         const std::vector<std::pair<Vec3f, Vec3f>> rays = testRays(stone, convex);
-        forEachSimdTarget([&] {
-            const ConvexIntersector onTarget(stone);
-            size_t wrong = 0;
-            for (const auto& [o, d] : rays) {
-                SurfaceHit hit;
-                const bool found = onTarget.leave(o, d, hit);
-                const SurfaceHit every = exitOverEveryPlane(stone, o, d);
-                wrong += found != (every.t < INFINITY) ||
-                         std::bit_cast<uint32_t>(hit.t) != std::bit_cast<uint32_t>(every.t) ||
-                         hit.facet != every.facet;
-            }
-            EXPECT_EQ(wrong, 0u) << "of " << rays.size();
-        });
+        expectExitsOverEveryPlane(stone, rays);
     }
 }
 
@@ -574,19 +579,7 @@ TEST(ConvexIntersector, CullGivesTheExitThroughEveryPlane) {
                 normalize(Vec3f(2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1));
             rays.push_back({i % 2 ? inside : onSurface, d});
         }
-        forEachSimdTarget([&] {
-            const ConvexIntersector onTarget(stone);
-            size_t wrong = 0;
-            for (const auto& [o, d] : rays) {
-                SurfaceHit hit;
-                const bool found = onTarget.leave(o, d, hit);
-                const SurfaceHit every = exitOverEveryPlane(stone, o, d);
-                wrong += found != (every.t < INFINITY) ||
-                         std::bit_cast<uint32_t>(hit.t) != std::bit_cast<uint32_t>(every.t) ||
-                         hit.facet != every.facet;
-            }
-            EXPECT_EQ(wrong, 0u) << "of " << rays.size();
-        });
+        expectExitsOverEveryPlane(stone, rays);
     }
 }
 
