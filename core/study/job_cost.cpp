@@ -40,8 +40,8 @@ std::string pixels(const RenderSettings& r) {
 }
 
 // The calibration traces polarised, the default (cost_calibration.cpp); an unpolarised one takes about as
-// long (0.8-1.04x its time, docs/performance.md, "Polarised and birefringent tracing"), and a doubly
-// refracting stone solves each facet's waves one photon at a time: about 30x (bench_trace's
+// long (0.91-0.97x its time quiet, docs/performance.md, "Polarised and birefringent tracing"), and a doubly
+// refracting stone solves each facet's waves one photon at a time: 9-30x, counted at 30 (bench_trace's
 // PolarizedVsPlain).
 double polarizationFactor(const TraceSettings& t) {
     if (t.polarization == PolarizationMode::Off) return 1;
