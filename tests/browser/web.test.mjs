@@ -646,6 +646,30 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.setViewportSize(DESKTOP);
   });
 
+  test('a comparison prints as a clean report: the ranking, the figures and each design, without the page\'s controls', async () => {
+    await page.goto(`${baseUrl}/#/compare/${jobIds.brilliant},${jobIds.cube}`);
+    await page.waitForSelector('.compare-grid .compare-card');
+    await page.emulateMedia({ media: 'print' });
+    try {
+      for (const sel of ['.site-header', '.site-footer', '.compare-pick', '#compare-choices']) {
+        assert.equal(await page.locator(sel).first().isVisible(), false, `${sel} is printed`);
+      }
+      const buttons = await page.$$eval('#main button:not(.sort):not(.tier-toggle)', (bs) => bs.filter((b) => b.offsetParent !== null).length);
+      assert.equal(buttons, 0, 'no button is printed');
+      for (const sel of ['.ranking', '.compare-card', 'table.compare-table']) {
+        assert.equal(await page.locator(sel).first().isVisible(), true, `${sel} is missing from the print`);
+      }
+      assert.equal(await page.locator('.compare-card').count(), 2, 'both designs are printed');
+      const pdf = await page.pdf({ format: 'A4', printBackground: true });
+      fs.mkdirSync(screenshotDir, { recursive: true });
+      fs.writeFileSync(path.join(screenshotDir, '07b-compare-print.pdf'), pdf);
+      assert.equal(pdf.subarray(0, 5).toString(), '%PDF-');
+      assert.ok(pdf.length > 20_000, `a report with pictures, not ${pdf.length} bytes`);
+    } finally {
+      await page.emulateMedia({ media: 'screen' });
+    }
+  });
+
   test('jobs go by their names on the list, the result page and the comparison', async () => {
     // A design the API names from the proportions it changes; the page shows the server's name.
     const res = await fetch(`${baseUrl}/api/jobs`, {
