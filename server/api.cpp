@@ -17,6 +17,7 @@
 #include "request_body.h"
 #include "stats/facet_stats.h"
 #include "study/result_files.h"
+#include "sweep/sweep_references.h"
 #include "sweep/sweep_request.h"
 #include "util/error.h"
 #include "util/json_text.h"
@@ -420,11 +421,19 @@ void Api::getSweepPoints(const Request& req, Response& res) {
             }
         }
     }
+    // The reference designs the CLI's map rings, at their values on the axes.
+    json references = json::array();
+    for (const SweepReference& r : sweepReferences(spec)) {
+        json values = json::object();
+        for (size_t a = 0; a < spec.axes.size(); ++a) values[spec.axes[a].name] = r.values[a];
+        references.push_back({{"shape", r.shape}, {"label", r.label}, {"values", std::move(values)}});
+    }
     sendJson(res, 200,
              {{"id", id},
               {"state", jobStateName(job->state)},
               {"shape", spec.shape},
               {"axes", sweepAxesJson(spec)},
+              {"references", std::move(references)},
               {"figures", sweepFigureNames(spec.trace)},
               {"points_total", spec.pointCount()},
               {"points", points}});

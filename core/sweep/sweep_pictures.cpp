@@ -4,6 +4,7 @@
 
 #include "pictures/sweep_plot.h"
 #include "sweep/sweep_figures.h"
+#include "sweep/sweep_references.h"
 #include "util/error.h"
 #include "util/name_table.h"
 
@@ -105,14 +106,8 @@ Image sweepMap(const SweepResult& result, const std::string& figure) {
                                ", " + ay.name + " " + ay.label(p.at[1]),
                            true});
     }
-    // The shipped reference designs, where both axes are parameters they have.
-    if (ax.numeric() && ay.numeric())
-        for (const auto& [shape, label] : {std::pair{"round_brilliant", "GIA reference"},
-                                           std::pair{"round_brilliant_tolkowsky", "Tolkowsky 1919"}}) {
-            const CutValues values = completeCutValues(findCutShape(shape), {});
-            if (values.count(ax.name) && values.count(ay.name))
-                markers.push_back({values.at(ax.name), values.at(ay.name), label, false});
-        }
+    for (const SweepReference& r : sweepReferences(plan))
+        markers.push_back({r.values[0], r.values[1], r.label, false});
     return contourMap(plotAxis(plan, ax), plotAxis(plan, ay), figureSeries(result, figure),
                       spacedName(figure), markers, spacedName(figure) + ", " + settingsLine(result));
 }

@@ -990,7 +990,73 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const [r, g, b] = low.match(/\d+/g).map(Number);
     assert.ok(r < 90 && g < 20 && b > 60, `the legend starts at ${low}, not viridis' dark purple`);
     assert.ok(await page.locator('#sweep-chart .legend-label').count() >= 3, 'the legend is labelled at several steps');
+    assert.equal(await page.textContent('#sweep-chart .legend-title'), 'Seen as colour (%)', 'the legend names the figure and its unit');
+    // The axes as the CLI's map (sweep_pictures.cpp's sweepMap, docs/sweeps.md): the first axis across, the second up.
+    const id = await page.evaluate(() => location.hash.split('/')[2]);
+    const points = await (await fetch(`${baseUrl}/api/jobs/${id}/points`)).json();
+    assert.deepEqual(points.axes.map((a) => a.name), ['pavilion', 'crown']);
+    const titles = await page.$$eval('#sweep-chart .axis-title', (ts) => ts.map((t) => ({ text: t.textContent, turned: t.hasAttribute('transform') })));
+    assert.deepEqual(titles, [{ text: 'pavilion (deg)', turned: false }, { text: 'crown (deg)', turned: true }]);
+    const cell = async (at) => page.$eval(`#sweep-chart rect.sweep-cell[data-at="${at}"]`, (r) => ({ x: Number(r.getAttribute('x')), y: Number(r.getAttribute('y')) }));
+    const [origin, across, up] = [await cell('0,0'), await cell('2,0'), await cell('0,2')];
+    assert.ok(across.x > origin.x && across.y === origin.y, 'the first axis (pavilion) runs across');
+    assert.ok(up.y < origin.y && up.x === origin.x, 'the second axis (crown) runs up');
+    // The reference designs the CLI rings, from the points answer, at their proportions between the cells.
+    assert.deepEqual(points.references.map((r) => [r.label, r.values.pavilion, r.values.crown]),
+      [['GIA reference', 40.7, 34], ['Tolkowsky 1919', 40.75, 34.5]]);
+    const rings = await page.$$eval('#sweep-chart g.sweep-reference', (gs) => gs.map((g) => ({
+      label: g.querySelector('text').textContent, x: Number(g.querySelector('circle').getAttribute('cx')), y: Number(g.querySelector('circle').getAttribute('cy')) })));
+    assert.deepEqual(rings.map((r) => r.label), ['GIA reference', 'Tolkowsky 1919']);
+    const centre = async (at) => { const c = await cell(at); const w = (across.x - origin.x) / 2; return { x: c.x + w / 2, y: c.y + (origin.y - up.y) / 4 }; };
+    const [c11, c21, c12] = [await centre('1,1'), await centre('2,1'), await centre('1,2')];
+    const expectX = c11.x + 0.7 * (c21.x - c11.x);   // pavilion 40.7 between 40 and 41
+    const expectY = c11.y + (1 / 3) * (c12.y - c11.y);  // crown 34 between 33 and 36
+    assert.ok(Math.abs(rings[0].x - expectX) < 0.5 && Math.abs(rings[0].y - expectY) < 0.5,
+      `the GIA reference ringed at ${rings[0].x},${rings[0].y}, not ${expectX},${expectY}`);
+    assert.ok(chartText.includes('◯ reference designs'));
+    assert.deepEqual(await chartTextsCutOff(), []);
+    assert.ok(await page.isHidden('#sweep-figures'), 'a map shows one figure');
     await shot('13-sweep-map');
+  });
+
+  test('a sweep over one axis draws several figures, each its own colour, fire among them, its legend whole', async () => {
+    // Through the API: fire on, no viewer, few photons, so that it takes seconds.
+    const res = await fetch(`${baseUrl}/api/jobs`, {
+      method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ mesh: 'round_brilliant', photons: 2000, threads: 2, viewer: { enabled: false }, fire: { enabled: true },
+        sweep: { axes: [{ name: 'pavilion', from: 39, to: 41, step: 1 }], figure: 'weighted_return' } }),
+    });
+    const { id } = await res.json();
+    await page.goto(`${baseUrl}/#/sweeps/${id}`);
+    await page.waitForFunction(() => /^succeeded/.test(document.querySelector('#sweep-progress').textContent), null,
+      { timeout: JOB_TIMEOUT_MS });
+    await page.waitForFunction(() => document.querySelectorAll('#sweep-chart circle.sweep-point').length === 3);
+    // The figures the sweep measured, the job's figure first and ticked.
+    const points = await (await fetch(`${baseUrl}/api/jobs/${id}/points`)).json();
+    const offered = await page.$$eval('#sweep-figures input', (is) => is.map((i) => ({ key: i.value, checked: i.checked })));
+    assert.deepEqual(offered.map((o) => o.key).sort(), [...points.figures].sort());
+    assert.deepEqual(offered[0], { key: 'weighted_return', checked: true });
+    assert.equal(offered.filter((o) => o.checked).length, 1);
+    assert.ok(points.figures.includes('coloured_return_weighted'));
+    await page.check('#sweep-figures input[value="coloured_return_weighted"]');
+    await page.check('#sweep-figures input[value="leakage"]');
+    const curves = await page.$$eval('#sweep-chart polyline.sweep-line[data-figure]', (ls) => ls.map((l) => ({ key: l.dataset.figure, colour: getComputedStyle(l).stroke })));
+    assert.deepEqual(curves.map((c) => c.key), ['weighted_return', 'coloured_return_weighted', 'leakage']);
+    assert.equal(new Set(curves.map((c) => c.colour)).size, 3, 'each figure its own colour');
+    assert.equal(await page.locator('#sweep-chart polygon.sweep-band').count(), 3, 'each with its ±1σ band');
+    assert.equal(await page.locator('#sweep-chart circle.sweep-point').count(), 9);
+    // Each figure named whole in the legend, broken into lines where it is long.
+    const names = await page.$$eval('#sweep-chart .legend-figure', (ts) => ts.map((t) => [...t.querySelectorAll('tspan')].map((l) => l.textContent).join(' ')));
+    assert.deepEqual(names, ['cosine-weighted return', 'coloured return, cosine-weighted', 'leakage']);
+    assert.deepEqual(await chartTextsCutOff(), [], 'no legend text reaches past the chart');
+    assert.deepEqual(await page.$$eval('#sweep-chart .axis-title', (ts) => ts.map((t) => t.textContent)), ['pavilion (deg)', 'Share (%)']);
+    // The mean separation is in degrees: it waits until the shares are unticked, and the last one ticked stays.
+    assert.ok(await page.isDisabled('#sweep-figures input[value="mean_separation_deg"]'));
+    await shot('12b-sweep-figures');
+    await page.uncheck('#sweep-figures input[value="coloured_return_weighted"]');
+    await page.uncheck('#sweep-figures input[value="leakage"]');
+    assert.ok(await page.isDisabled('#sweep-figures input[value="weighted_return"]'), 'the last figure ticked stays');
+    assert.equal(await page.locator('#sweep-chart polyline.sweep-line[data-figure]').count(), 1);
   });
 
   test('a search: its progress names the round and never goes back, the star sits on the refined best', async () => {

@@ -1209,6 +1209,12 @@ TEST_F(ServiceTest, SweepRunsToSuccessWithPointsAndResults) {
     EXPECT_EQ(points["points_total"], 3);
     EXPECT_EQ(points["axes"][0]["unit"], "deg");
     EXPECT_EQ(points["points"], sweep["points"]);
+    // The reference designs the map would ring, at their pavilion angles.
+    EXPECT_EQ(
+        points["references"],
+        json::parse(R"([{"shape": "round_brilliant", "label": "GIA reference", "values": {"pavilion": 40.7}},
+                              {"shape": "round_brilliant_tolkowsky", "label": "Tolkowsky 1919",
+                               "values": {"pavilion": 40.75}}])"));
     expectProblem(client_->Get("/api/jobs/" + id + "/stats"), 404);
     expectProblem(client_->Get("/api/jobs/" + submitOk(smallJob()) + "/points"), 404);
 }

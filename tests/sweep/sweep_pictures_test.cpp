@@ -5,6 +5,7 @@
 #include <set>
 #include <tuple>
 
+#include "sweep/sweep_references.h"
 #include "util/error.h"
 
 using namespace facetlight;
@@ -117,4 +118,24 @@ TEST(SweepPictures, FireFiguresAreDrawnWhenFireIsTraced) {
     expectPlotWithAxes(maps[0].second, 8);
     expectPlotWithAxes(
         sweepCurves(fireSweep({"pavilion=39:42:1"}), {"weighted_return", "mean_separation_deg"}), 8);
+}
+
+// The reference designs the map rings (and the service's points answer lists) lie at their parameters'
+// values on the axes, in the axes' order; none where an axis is not a parameter of theirs.
+TEST(SweepPictures, ReferenceDesignsLieAtTheirValuesOnTheAxes) {
+    SweepPlan plan;
+    plan.shape = "round_brilliant";
+    plan.axes = {parseSweepAxis("pavilion=39:42:1"), parseSweepAxis("crown=32:36:2")};
+    const std::vector<SweepReference> refs = sweepReferences(plan);
+    ASSERT_EQ(refs.size(), 2u);
+    EXPECT_EQ(refs[0].label, "GIA reference");
+    EXPECT_EQ(refs[0].values, (std::vector<double>{40.7, 34}));
+    EXPECT_EQ(refs[1].label, "Tolkowsky 1919");
+    EXPECT_EQ(refs[1].values, (std::vector<double>{40.75, 34.5}));
+    std::swap(plan.axes[0], plan.axes[1]);
+    EXPECT_EQ(sweepReferences(plan)[0].values, (std::vector<double>{34, 40.7}));
+    plan.axes[1] = parseSweepAxis("tilt=0,10");
+    EXPECT_TRUE(sweepReferences(plan).empty());
+    plan.axes[1] = parseSweepAxis("material=diamond,cubic_zirconia");
+    EXPECT_TRUE(sweepReferences(plan).empty());
 }

@@ -1,6 +1,7 @@
 // Sweeps (docs/sweeps.md): the form that submits one, and its chart, which fills in as the points finish. One
-// varied quantity: the figure against it with a ±1σ band; two: a filled map in viridis (the CLI's palette) with
-// the best point marked: the search's refined best (best.json) once it has one.
+// varied quantity: the figures the user ticks against it, each with a ±1σ band; two: a filled map in viridis
+// with the axes, reference designs and palette of the CLI's map; both with the best point marked: the search's
+// refined best (best.json) once it has one.
 import { api, jobUrl } from './api.js';
 import { FIGURES, POLL_ACTIVE_MS, VIEWER_FIGURES } from './constants.js';
 import { $, clearFieldError, h, showFieldError, svg } from './dom.js';
@@ -12,7 +13,8 @@ import { jobName } from './meshes.js';
 
 // `compared`: the jobs of designs opened from sweeps, for the compare view.
 // `best`: the search's best.json once the sweep has finished.
-export const sweepView = { id: '', timer: 0, job: null, shape: '', compared: [], best: null };
+// `points`: the last points answer; `shown`: the figures a one-axis chart draws, the job's figure first.
+export const sweepView = { id: '', timer: 0, job: null, shape: '', compared: [], best: null, points: null, shown: [] };
 
 const TOOLTIP_HINT = 'Hover a point to see its figures; click it to trace that design as a job and compare it.';
 const W = 680;
@@ -215,6 +217,9 @@ export async function showSweep(id) {
   $('#sweep-links').replaceChildren();
   $('#sweep-best').replaceChildren();
   sweepView.best = null;
+  sweepView.shown = [];
+  $('#sweep-figures').hidden = true;
+  delete $('#sweep-figures').dataset.sweep;
   await pollSweep(id);
 }
 
@@ -243,6 +248,9 @@ async function pollSweep(id) {
     if (sweepView.id !== id) return;
   }
   $('#sweep-progress').textContent = progressText(job);
+  sweepView.points = points;
+  if (!sweepView.shown.length) sweepView.shown.push(figure);
+  figurePicker(points, figure);
   drawSweep(points, figure, sweepView.best);
   if (sweepView.best) $('#sweep-best').replaceChildren(bestCard(sweepView.best, points.axes));
   if (job.state === 'succeeded') {
@@ -399,95 +407,215 @@ function stepsAlong(values, v) {
   return values.length - 1;
 }
 
+// Colours for the curves, one a figure: Okabe and Ito's set, told apart with any colour vision (Okabe & Ito 2008,
+// "Color Universal Design"); its yellow left out, too faint on white.
+const CURVE_COLOURS = ['#0072B2', '#D55E00', '#009E73', '#CC79A7', '#E69F00', '#56B4E9', '#000000'];
+
+// Shares in %, the mean separation in degrees, the score in points.
+function unitOf(key) {
+  const { degrees, points } = figureInfo(key);
+  return degrees ? '°' : points ? 'points' : '%';
+}
+function formatIn(unit) {
+  return unit === '°' ? (v) => fmtNumber(v, 3) : unit === 'points' ? (v) => fmtNumber(v, 1) : (v) => fmtNumber(v * 100, 2);
+}
+
+// A text's width in the chart's font, measured in a hidden chart (a guess by its length before there is a page).
+let measurer = null;
+function textWidth(text) {
+  if (!measurer) {
+    measurer = svg('svg', { class: 'sweep-svg', 'aria-hidden': 'true', style: 'position:absolute;left:0;top:0;width:0;height:0;visibility:hidden' }, svg('text', {}));
+    document.body.append(measurer);
+  }
+  measurer.firstChild.textContent = text;
+  return measurer.firstChild.getComputedTextLength() || text.length * 7;
+}
+// `text` broken at spaces into lines no wider than `width` (a word longer than that is a line of its own).
+function wrapText(text, width) {
+  const lines = [];
+  for (const word of text.split(' ')) {
+    const longer = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
+    if (lines.length && textWidth(longer) <= width) lines[lines.length - 1] = longer;
+    else lines.push(word);
+  }
+  return lines;
+}
+const LINE = 14;
+// Lines of text from (x, y) down.
+function textBlock(x, y, lines, attrs = {}) {
+  return svg('text', { x, y, ...attrs }, ...lines.map((line, i) => svg('tspan', { x, dy: i ? LINE : 0 }, line)));
+}
+
+// The figures a one-axis sweep's chart shows (the job's figure first), as checkboxes of those it measured: each
+// curve in its colour; figures in another unit than those ticked wait until those are unticked.
+function figurePicker(data, figure) {
+  const box = $('#sweep-figures');
+  if (data.axes.length !== 1) {
+    box.hidden = true;
+    return;
+  }
+  if (box.dataset.sweep !== sweepView.id) {
+    box.dataset.sweep = sweepView.id;
+    const keys = [figure, ...data.figures.filter((k) => k !== figure)];
+    box.replaceChildren(h('legend', {}, 'Figures on the chart'), ...keys.map((key) => h('label', { class: 'sweep-figure' },
+      h('input', { type: 'checkbox', name: 'sweep-figure', value: key, onchange: (ev) => {
+        const { shown } = sweepView;
+        if (ev.target.checked) shown.push(key);
+        else shown.splice(shown.indexOf(key), 1);
+        figurePicker(sweepView.points, figure);
+        drawSweep(sweepView.points, figure, sweepView.best);
+      } }), ` ${figureInfo(key).label} (${unitOf(key)})`)));
+  }
+  box.hidden = false;
+  const { shown } = sweepView;
+  const unit = shown.length ? unitOf(shown[0]) : null;
+  for (const input of box.querySelectorAll('input')) {
+    const at = shown.indexOf(input.value);
+    const other = at < 0 && unitOf(input.value) !== unit;
+    input.checked = at >= 0;
+    // The last one ticked stays: a chart of nothing says nothing.
+    input.disabled = (at >= 0 && shown.length === 1) || other;
+    input.parentElement.style.borderColor = at >= 0 ? CURVE_COLOURS[at % CURVE_COLOURS.length] : 'transparent';
+    input.parentElement.title = other ? `In ${unitOf(input.value)}: untick the figures in ${unit} to draw it` : '';
+  }
+}
+
 function drawSweep(data, figure, best) {
-  const ok = data.points.filter((p) => !p.error);
   const chart = $('#sweep-chart');
   if (!data.points.length) return;
   const root = svg('svg', { viewBox: `0 0 ${W} ${H}`, class: 'sweep-svg', role: 'img',
     'aria-label': `${figureInfo(figure).label} over ${data.axes.map((a) => humanize(a.name)).join(' and ')}` });
-  const value = (p) => figuresOf(p, figure)[figure];
-  const sigma = (p) => figuresOf(p, figure)[`${figure}_stderr`];
-  const values = ok.map(value);
-  // Shares in %, the mean separation in degrees, the score in points.
-  const { degrees, points } = figureInfo(figure);
-  const unit = degrees ? '°' : points ? 'points' : '%';
-  const yTitle = `${figureInfo(figure).label} (${unit})`;
-  const pct = (v) => (degrees ? fmtNumber(v, 3) : points ? fmtNumber(v, 1) : fmtNumber(v * 100, 2));
-  if (data.axes.length === 1) {
-    const axis = data.axes[0];
-    const xs = axisValues(axis);
-    const x = scale(Math.min(...xs), Math.max(...xs), M.left + 10, W - M.right - 10);
-    const lo = Math.min(...ok.map((p) => value(p) - sigma(p)), ...values);
-    const hi = Math.max(...ok.map((p) => value(p) + sigma(p)), ...values);
-    const y = scale(lo, hi, H - M.bottom - 10, M.top + 10);
-    const xOf = (p) => x(xs[p.at[0]]);
-    const sorted = [...ok].sort((a, b) => a.at[0] - b.at[0]);
-    const band = [...sorted.map((p) => `${xOf(p)},${y(value(p) + sigma(p))}`),
-      ...sorted.reverse().map((p) => `${xOf(p)},${y(value(p) - sigma(p))}`)].join(' ');
-    sorted.reverse();
-    root.append(frame(x, xs, axis, ticks(lo, hi), y, { title: yTitle, format: pct }),
-      svg('polygon', { points: band, class: 'sweep-band' }),
-      svg('polyline', { points: sorted.map((p) => `${xOf(p)},${y(value(p))}`).join(' '), class: 'sweep-line' }));
-    for (const p of sorted) {
-      root.append(hoverable(svg('circle', { cx: xOf(p), cy: y(value(p)), r: 5, class: 'sweep-point', 'data-at': p.at.join(',') }), p, data));
-    }
-    if (best) {
-      // The refined best at its own place, with its 95 % interval (which may reach beyond the grid's range).
-      const bx = x(best.best.values[axis.name]);
-      const clampY = (v) => Math.min(H - M.bottom, Math.max(M.top, y(v)));
-      root.append(svg('line', { x1: bx, x2: bx, y1: clampY(best.best.interval[0]), y2: clampY(best.best.interval[1]), class: 'sweep-interval' }),
-        svg('text', { x: bx, y: clampY(best.best.value) + 7, 'text-anchor': 'middle', class: 'sweep-best' }, '★'));
-    }
-    const lx = W - M.right + 10;
-    root.append(svg('g', { class: 'chart-legend' },
-      svg('line', { x1: lx, y1: M.top + 10, x2: lx + 20, y2: M.top + 10, class: 'sweep-line' }),
-      svg('text', { x: lx + 24, y: M.top + 14 }, figureInfo(figure).label.toLowerCase()),
-      svg('rect', { x: lx, y: M.top + 24, width: 20, height: 10, class: 'sweep-band' }),
-      svg('text', { x: lx + 24, y: M.top + 33 }, '±1σ'),
-      best ? svg('text', { x: lx, y: M.top + 54 }, '★ best, 95 % interval') : ''));
-  } else {
-    const [ax, ay] = [data.axes[1], data.axes[0]];  // the first axis varies slowest: rows
-    const nx = axisValues(ax).length;
-    const ny = axisValues(ay).length;
-    const cw = (W - M.left - M.right) / nx;
-    const ch = (H - M.top - M.bottom) / ny;
-    const lo = Math.min(...values);
-    const hi = Math.max(...values);
-    const colour = (v) => viridis(hi === lo ? 0.5 : (v - lo) / (hi - lo));
-    const xc = (i) => M.left + (i + 0.5) * cw;
-    const yc = (j) => H - M.bottom - (j + 0.5) * ch;
-    root.append(frame((v) => xc(axisValues(ax).indexOf(v)), axisValues(ax), ax, [], () => 0, { title: label(ay), format: String }));
-    axisValues(ay).forEach((v, j) => root.append(svg('text', { x: M.left - 6, y: yc(j) + 4, 'text-anchor': 'end', class: 'chart-axes' }, axisText(ay, j))));
-    for (const p of data.points) {
-      const [j, i] = p.at;
-      const rect = svg('rect', { x: xc(i) - cw / 2, y: yc(j) - ch / 2, width: cw, height: ch, class: p.error ? 'sweep-cell failed' : 'sweep-cell',
-        fill: p.error ? '#ccc' : colour(value(p)), 'data-at': p.at.join(',') });
-      root.append(hoverable(rect, p, data));
-    }
-    // The search's refined best between the grid's cells, else the highest point of the grid.
-    const highest = ok.reduce((b, p) => (!b || value(p) > value(b) ? p : b), null);
-    const star = best
-      ? [stepsAlong(axisValues(ay), best.best.values[ay.name]), stepsAlong(axisValues(ax), best.best.values[ax.name])]
-      : highest && highest.at;
-    if (star) {
-      root.append(svg('text', { x: M.left + (star[1] + 0.5) * cw, y: H - M.bottom - (star[0] + 0.5) * ch + 7, 'text-anchor': 'middle', class: 'sweep-best' }, '★'));
-    }
-    // The legend: the ramp, labelled at round values between its ends.
-    const lx = W - M.right + 20;
-    const steps = 32;
-    const ly = scale(lo, hi, H - M.bottom, M.top);
-    for (let k = 0; k < steps; ++k) {
-      const v = lo + ((hi - lo) * (k + 0.5)) / steps;
-      root.append(svg('rect', { x: lx, y: H - M.bottom - (k + 1) * ((H - M.top - M.bottom) / steps), width: 16, height: (H - M.top - M.bottom) / steps + 0.5, fill: colour(v), class: 'legend-step' }));
-    }
-    const legend = svg('g', { class: 'chart-legend' });
-    for (const t of ticks(lo, hi, 4)) {
-      legend.append(svg('line', { x1: lx + 16, x2: lx + 20, y1: ly(t), y2: ly(t), class: 'legend-tick' }),
-        svg('text', { x: lx + 22, y: ly(t) + 4, class: 'legend-label' }, `${pct(t)} ${unit}`));
-    }
-    legend.append(svg('text', { x: lx, y: H - M.bottom + 30 }, `${figureInfo(figure).label}`),
-      svg('text', { x: lx, y: H - M.bottom + 44 }, best ? '★ best (refined)' : '★ highest'));
-    root.append(legend);
-  }
+  if (data.axes.length === 1) drawCurves(root, data, sweepView.shown.length ? sweepView.shown : [figure], best);
+  else drawMap(root, data, figure, best);
   chart.replaceChildren(root);
+}
+
+// One varied quantity: each figure against it with its ±1σ band, in its own colour, and the search's best.
+function drawCurves(root, data, figures, best) {
+  const ok = data.points.filter((p) => !p.error);
+  const value = (p, key) => figuresOf(p, key)[key];
+  const sigma = (p, key) => figuresOf(p, key)[`${key}_stderr`];
+  const axis = data.axes[0];
+  const xs = axisValues(axis);
+  const x = scale(Math.min(...xs), Math.max(...xs), M.left + 10, W - M.right - 10);
+  const series = figures.map((key) => ({ key, points: ok.filter((p) => Number.isFinite(value(p, key))).sort((a, b) => a.at[0] - b.at[0]) }));
+  const ends = series.flatMap(({ key, points }) => points.flatMap((p) => [value(p, key) - sigma(p, key), value(p, key) + sigma(p, key)]));
+  if (!ends.length) return;
+  const lo = Math.min(...ends);
+  const hi = Math.max(...ends);
+  const y = scale(lo, hi, H - M.bottom - 10, M.top + 10);
+  const unit = unitOf(figures[0]);
+  const title = figures.length === 1 ? figureInfo(figures[0]).label : { '%': 'Share', '°': 'Degrees', points: 'Score' }[unit];
+  root.append(frame(x, xs, axis, ticks(lo, hi), y, { title: `${title} (${unit})`, format: formatIn(unit) }));
+  const xOf = (p) => x(xs[p.at[0]]);
+  series.forEach(({ key, points }, k) => {
+    const colour = CURVE_COLOURS[k % CURVE_COLOURS.length];
+    const band = [...points.map((p) => `${xOf(p)},${y(value(p, key) + sigma(p, key))}`),
+      ...[...points].reverse().map((p) => `${xOf(p)},${y(value(p, key) - sigma(p, key))}`)].join(' ');
+    root.append(svg('polygon', { points: band, class: 'sweep-band', style: `fill:${colour}`, 'data-figure': key }),
+      svg('polyline', { points: points.map((p) => `${xOf(p)},${y(value(p, key))}`).join(' '), class: 'sweep-line', style: `stroke:${colour}`, 'data-figure': key }));
+    for (const p of points) {
+      root.append(hoverable(svg('circle', { cx: xOf(p), cy: y(value(p, key)), r: 5, class: 'sweep-point', style: `fill:${colour}`,
+        'data-at': p.at.join(','), 'data-figure': key }), p, data));
+    }
+  });
+  const starred = best && figures.includes(best.figure);
+  if (starred) {
+    // The refined best at its own place, with its 95 % interval (which may reach beyond the grid's range).
+    const bx = x(best.best.values[axis.name]);
+    const clampY = (v) => Math.min(H - M.bottom, Math.max(M.top, y(v)));
+    root.append(svg('line', { x1: bx, x2: bx, y1: clampY(best.best.interval[0]), y2: clampY(best.best.interval[1]), class: 'sweep-interval' }),
+      svg('text', { x: bx, y: clampY(best.best.value) + 7, 'text-anchor': 'middle', class: 'sweep-best' }, '★'));
+  }
+  // The legend in the right margin: a swatch and the name of each figure (broken into lines that fit), the band.
+  const lx = W - M.right + 10;
+  const width = W - lx - 24 - 4;
+  const legend = svg('g', { class: 'chart-legend' });
+  let ly = M.top + 14;
+  series.forEach(({ key }, k) => {
+    const colour = CURVE_COLOURS[k % CURVE_COLOURS.length];
+    const lines = wrapText(figureInfo(key).label.toLowerCase(), width);
+    legend.append(svg('line', { x1: lx, y1: ly - 4, x2: lx + 20, y2: ly - 4, class: 'sweep-line', style: `stroke:${colour}` }),
+      textBlock(lx + 24, ly, lines, { class: 'legend-figure' }));
+    ly += lines.length * LINE + 6;
+  });
+  legend.append(svg('rect', { x: lx, y: ly - 9, width: 20, height: 10, class: 'sweep-band', style: 'fill:#555' }),
+    svg('text', { x: lx + 24, y: ly }, '±1σ'));
+  if (starred) legend.append(textBlock(lx, ly + LINE + 6, wrapText('★ best, 95 % interval', W - lx - 4)));
+  root.append(legend);
+}
+
+// Two varied quantities: the figure as a filled map in viridis, the first axis across and the second up (as the
+// CLI's map), the highest point or the search's refined best starred and the reference designs ringed.
+function drawMap(root, data, figure, best) {
+  const ok = data.points.filter((p) => !p.error);
+  const value = (p) => figuresOf(p, figure)[figure];
+  const values = ok.map(value);
+  const unit = unitOf(figure);
+  const pct = formatIn(unit);
+  const [ax, ay] = data.axes;
+  const xv = axisValues(ax);
+  const yv = axisValues(ay);
+  const cw = (W - M.left - M.right) / xv.length;
+  const ch = (H - M.top - M.bottom) / yv.length;
+  const lo = Math.min(...values);
+  const hi = Math.max(...values);
+  const colour = (v) => viridis(hi === lo ? 0.5 : (v - lo) / (hi - lo));
+  // A place along an axis, in (fractional) cells from the first.
+  const px = (i) => M.left + (i + 0.5) * cw;
+  const py = (j) => H - M.bottom - (j + 0.5) * ch;
+  root.append(frame((v) => px(xv.indexOf(v)), xv, ax, [], () => 0, { title: label(ay), format: String }));
+  yv.forEach((v, j) => root.append(svg('text', { x: M.left - 6, y: py(j) + 4, 'text-anchor': 'end', class: 'chart-axes' }, axisText(ay, j))));
+  for (const p of data.points) {
+    const [i, j] = p.at;
+    const rect = svg('rect', { x: px(i) - cw / 2, y: py(j) - ch / 2, width: cw, height: ch, class: p.error ? 'sweep-cell failed' : 'sweep-cell',
+      fill: p.error ? '#ccc' : colour(value(p)), 'data-at': p.at.join(',') });
+    root.append(hoverable(rect, p, data));
+  }
+  // The reference designs within the grid's span, as the CLI rings them; labels moved down where they would meet.
+  const inside = (a, v) => a.values && v >= Math.min(...a.values) && v <= Math.max(...a.values);
+  const placed = [];
+  let references = 0;
+  for (const r of data.references || []) {
+    const [vx, vy] = [r.values[ax.name], r.values[ay.name]];
+    if (!inside(ax, vx) || !inside(ay, vy)) continue;
+    const cx = px(stepsAlong(xv, vx));
+    const cy = py(stepsAlong(yv, vy));
+    const w = textWidth(r.label);
+    const right = cx + 11 + w <= W - M.right - 2;
+    let ty = cy + 4;
+    while (placed.some((b) => Math.abs(b - ty) < LINE)) ty += LINE;
+    placed.push(ty);
+    root.append(svg('g', { class: 'sweep-reference', 'data-shape': r.shape },
+      svg('circle', { cx, cy, r: 7, class: 'sweep-reference-halo' }), svg('circle', { cx, cy, r: 7, class: 'sweep-reference-ring' }),
+      svg('text', { x: right ? cx + 11 : cx - 11, y: ty, 'text-anchor': right ? 'start' : 'end', class: 'sweep-reference-label' }, r.label),
+      svg('title', {}, `${r.label}: ${label(ax)} ${fmtNumber(vx, 4)}, ${label(ay)} ${fmtNumber(vy, 4)}`)));
+    references += 1;
+  }
+  // The search's refined best between the grid's cells, else the highest point of the grid.
+  const highest = ok.reduce((b, p) => (!b || value(p) > value(b) ? p : b), null);
+  const star = best
+    ? [stepsAlong(xv, best.best.values[ax.name]), stepsAlong(yv, best.best.values[ay.name])]
+    : highest && highest.at;
+  if (star) root.append(svg('text', { x: px(star[0]), y: py(star[1]) + 7, 'text-anchor': 'middle', class: 'sweep-best' }, '★'));
+  // The legend: the figure's name and unit above the ramp, which is labelled at round values between its ends.
+  const lx = W - M.right + 20;
+  const legend = svg('g', { class: 'chart-legend' });
+  const name = wrapText(`${figureInfo(figure).label} (${unit})`, W - lx - 4);
+  legend.append(textBlock(lx, M.top + 4, name, { class: 'legend-title' }));
+  const top = M.top + name.length * LINE + 8;
+  const bottom = H - M.bottom;
+  const steps = 32;
+  for (let k = 0; k < steps; ++k) {
+    const v = lo + ((hi - lo) * (k + 0.5)) / steps;
+    root.append(svg('rect', { x: lx, y: bottom - (k + 1) * ((bottom - top) / steps), width: 16, height: (bottom - top) / steps + 0.5, fill: colour(v), class: 'legend-step' }));
+  }
+  const ly = scale(lo, hi, bottom, top);
+  for (const t of ticks(lo, hi, 4)) {
+    legend.append(svg('line', { x1: lx + 16, x2: lx + 20, y1: ly(t), y2: ly(t), class: 'legend-tick' }),
+      svg('text', { x: lx + 22, y: ly(t) + 4, class: 'legend-label' }, pct(t)));
+  }
+  legend.append(svg('text', { x: lx, y: bottom + 20 }, best ? '★ best (refined)' : '★ highest'));
+  if (references) legend.append(svg('text', { x: lx, y: bottom + 20 + LINE }, '◯ reference designs'));
+  root.append(legend);
 }
