@@ -77,6 +77,13 @@ const Stone* shippedBrilliant() {
     return stone ? &*stone : nullptr;
 }
 
+// The shipped brilliant, or null with the benchmark marked skipped.
+const Stone* shippedBrilliantOrSkip(benchmark::State& state) {
+    const Stone* stone = shippedBrilliant();
+    if (!stone) state.SkipWithError("meshes/round_brilliant.obj not found");
+    return stone;
+}
+
 double threadCpuSeconds() {
     timespec t{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
@@ -148,11 +155,8 @@ BENCHMARK(BM_TraceShippedBrilliant)
 // the girdle. Against the shipped stone it shows what the girdle costs; against the built 57-facet brilliant,
 // what the proportions cost (the paths differ).
 void BM_TraceShippedWithoutGirdle(benchmark::State& state) {
-    const Stone* stone = shippedBrilliant();
-    if (!stone) {
-        state.SkipWithError("meshes/round_brilliant.obj not found");
-        return;
-    }
+    const Stone* stone = shippedBrilliantOrSkip(state);
+    if (!stone) return;
     static const Stone knifeEdge = [&] {
         std::vector<NamedPlane> planes;
         for (const Facet& f : stone->facets) {
@@ -194,11 +198,8 @@ BENCHMARK(BM_FireVsPlainBrilliant57)->Arg(1)->Unit(benchmark::kMillisecond)->Use
 // thread, timed alternately in each iteration: diamond with polarization on, and sapphire, whose double
 // refraction is traced with polarization on, against each material off (targets: at most 1.6x and 3x).
 void BM_PolarizedVsPlainShipped(benchmark::State& state) {
-    const Stone* stone = shippedBrilliant();
-    if (!stone) {
-        state.SkipWithError("meshes/round_brilliant.obj not found");
-        return;
-    }
+    const Stone* stone = shippedBrilliantOrSkip(state);
+    if (!stone) return;
     struct Run {
         const char* name;
         std::string material;
@@ -280,11 +281,8 @@ BENCHMARK(BM_CulledVsFullSearch)
 // at a time), each timed alternately with the same stone absorbing a spectrum (target: at least 0.7x the
 // clear stone's speed on every SIMD target, --simd=...).
 void BM_AbsorbingVsPlain(benchmark::State& state) {
-    const Stone* stone = shippedBrilliant();
-    if (!stone) {
-        state.SkipWithError("meshes/round_brilliant.obj not found");
-        return;
-    }
+    const Stone* stone = shippedBrilliantOrSkip(state);
+    if (!stone) return;
     struct Run {
         const char* name;
         LightModelKind light;

@@ -401,6 +401,17 @@ def healthz_fast(server, name):
     return time.time() - start
 
 
+def healthz_probe(server, name):
+    """One /healthz probe beside slow clients: (seconds, 1 if the first try missed 1 s). A miss gets one more
+    try, failing `name` if that misses too: on a loaded CI machine a probe may miss the second once."""
+    start = time.time()
+    try:
+        server.request(http("GET", "/healthz"), timeout=1)
+        return time.time() - start, 0
+    except OSError:
+        return healthz_fast(server, name) or 0, 1
+
+
 def job_total(server):
     return server.get_json("/api/jobs")["total"]
 
@@ -587,15 +598,9 @@ def run_slow_clients_across_peers(binary, work):
                     s.sendall(b"X-Slow: 1\r\n")
                 except OSError:
                     pass  # ended by the server to free its thread: what should happen
-            # A probe that misses the second once, on a loaded CI machine, gets one more try: without the
-            # eviction every probe waits for a slow client's 20-s deadline, so two misses in a row still tell.
-            try:
-                t0 = time.time()
-                server.request(http("GET", "/healthz"), timeout=1)
-                worst = max(worst, time.time() - t0)
-            except OSError:
-                missed += 1
-                worst = max(worst, healthz_fast(server, "/healthz beside slow clients of %d addresses" % peers) or 0)
+            # Without the eviction every probe waits for a slow client's 20-s deadline: two misses in a row tell.
+            took, miss = healthz_probe(server, "/healthz beside slow clients of %d addresses" % peers)
+            worst, missed = max(worst, took), missed + miss
             probes += 1
             time.sleep(0.25)
         print("  /healthz beside %d slow clients from %d addresses (%d threads at most): %d probes, slowest %.0f ms"
@@ -658,15 +663,9 @@ def run_slow_bodies(binary, work):
                     answers.append((time.time() - state[0], state[1]))
                     del slow[s]
                     s.close()
-            # A probe that misses the second once, on a loaded CI machine, gets one more try (as beside the
-            # slow heads): without the rate every probe waits once 16 slow bodies hold the threads.
-            try:
-                t0 = time.time()
-                server.request(http("GET", "/healthz"), timeout=1)
-                worst = max(worst, time.time() - t0)
-            except OSError:
-                missed += 1
-                worst = max(worst, healthz_fast(server, "/healthz beside slow bodies") or 0)
+            # Without the rate every probe waits once 16 slow bodies hold the threads: two misses in a row tell.
+            took, miss = healthz_probe(server, "/healthz beside slow bodies")
+            worst, missed = max(worst, took), missed + miss
             probes += 1
             time.sleep(0.25)
         slowest = 0
