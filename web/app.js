@@ -61,6 +61,7 @@ async function start() {
   form.elements.render.addEventListener('change', syncFormControls);
   form.elements.tilt_series.addEventListener('change', syncFormControls);
   form.elements.material.addEventListener('change', syncFormControls);
+  form.elements['custom_material.indices'].addEventListener('input', syncFormControls);
   form.elements.polarization.addEventListener('change', syncFormControls);
   $('#f-mesh').addEventListener('change', describeMesh);
   $('#upload-button').addEventListener('click', uploadMesh);

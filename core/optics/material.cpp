@@ -140,6 +140,25 @@ Material Material::constant(double n, std::string name) {
     return m;
 }
 
+Material Material::defined(const MaterialDefinition& d) {
+    const auto index = [&](double nD) {
+        return d.dispersionBG > 0 ? cauchy(nD, d.dispersionBG) : Dispersion{.a = nD};
+    };
+    Material m;
+    m.name_ = d.name;
+    if (d.n) {
+        m.axes_.fill(index(*d.n));
+    } else if (d.nO) {
+        m.optic_ = Optic::Uniaxial;
+        m.axes_ = {index(*d.nO), index(*d.nO), index(*d.nE)};
+    } else {
+        m.optic_ = Optic::Biaxial;
+        m.axes_ = {index(*d.alpha), index(*d.beta), index(*d.gamma)};
+    }
+    m.density_ = d.densityGcm3.value_or(0);
+    return m;
+}
+
 std::array<double, 3> Material::principalIndices(double wavelengthNm) const {
     return {axes_[0].at(wavelengthNm), axes_[1].at(wavelengthNm), axes_[2].at(wavelengthNm)};
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "optics/absorption.h"
+#include "optics/material_definition.h"
 
 namespace facetlight {
 
@@ -38,6 +39,9 @@ class Material {
     static Material byName(std::string_view name);
     // A dispersionless material of index n (1 < n <= 10), named `name`.
     static Material constant(double n, std::string name = "custom");
+    // A job's own material: Cauchy through its indices and dispersion, as for the shipped materials no fit is
+    // published for (docs/optics.md, "A job's own material"); `definition` must have passed its reader.
+    static Material defined(const MaterialDefinition& definition);
 
     const std::string& name() const { return name_; }
     // The index single-index code traces: n_o for a uniaxial crystal (the ordinary ray sees it in every

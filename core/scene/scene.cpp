@@ -21,6 +21,7 @@ namespace {
 
 MaterialChoice chooseIndex(const SceneSettings& settings, const Stone& stone) {
     if (settings.constantIndex) return {Material::constant(*settings.constantIndex), "n"};
+    if (settings.customMaterial) return {Material::defined(*settings.customMaterial), "custom_material"};
     if (settings.material != "auto") return {Material::byName(settings.material), "material"};
     if (stone.design && stone.design->refractiveIndex)
         return {Material::constant(*stone.design->refractiveIndex, "design file index"), "design file"};
@@ -28,6 +29,12 @@ MaterialChoice chooseIndex(const SceneSettings& settings, const Stone& stone) {
 }
 
 }  // namespace
+
+Optic chosenOptic(const SceneSettings& settings) {
+    if (settings.constantIndex) return Optic::Isotropic;
+    if (settings.customMaterial) return Material::defined(*settings.customMaterial).optic();
+    return settings.material == "auto" ? Optic::Isotropic : Material::byName(settings.material).optic();
+}
 
 MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone) {
     MaterialChoice choice = chooseIndex(settings, stone);

@@ -21,13 +21,17 @@
 
 namespace facetlight {
 
-// The material a job traces and where it came from: "n" (a constant index), "material" (the job names one),
-// "design file" (the stone's file states its index and the job's material is "auto") or "default" (diamond).
+// The material a job traces and where it came from: "n" (a constant index), "custom_material" (the job
+// defines its own), "material" (the job names one), "design file" (the stone's file states its index and the
+// job's material is "auto") or "default" (diamond).
 struct MaterialChoice {
     Material material;
     std::string source;
 };
 MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone);
+// The optic class of the material the settings choose, before a stone is known: "auto" and `n` are
+// singly refracting (a design file states one index).
+Optic chosenOptic(const SceneSettings& settings);
 
 class ConvexBeamEntry;
 class ConvexIntersector;

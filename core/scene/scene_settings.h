@@ -7,6 +7,7 @@
 
 #include "optics/absorption.h"
 #include "optics/light_settings.h"
+#include "optics/material_definition.h"
 #include "optics/optic_axis.h"
 #include "optics/viewer_settings.h"
 #include "util/name_table.h"
@@ -23,6 +24,8 @@ struct SceneSettings {
     // diamond.
     std::string material = "auto";
     std::optional<double> constantIndex;  // a constant refractive index overriding the material's (JSON "n")
+    // A job's own material (JSON "custom_material"), in place of `material` and `n`.
+    std::optional<MaterialDefinition> customMaterial;
     // The material's absorption (JSON "absorption"): none, or a user's spectrum (docs/optics.md,
     // "Absorption").
     std::optional<AbsorptionSpectrum> absorption;

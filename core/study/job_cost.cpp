@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "optics/material.h"
+#include "scene/scene.h"
 #include "sweep/optimizer.h"
 #include "util/number_text.h"
 #include "viewer/viewer_figures.h"
@@ -45,9 +46,7 @@ std::string pixels(const RenderSettings& r) {
 // PolarizedVsPlain).
 double polarizationFactor(const TraceSettings& t) {
     if (t.polarization == PolarizationMode::Off) return 1;
-    const bool uniaxial = !t.constantIndex && t.material != "auto" &&
-                          Material::byName(t.material).optic() == Optic::Uniaxial;
-    return uniaxial ? 30 : 1;
+    return chosenOptic(t) == Optic::Uniaxial ? 30 : 1;
 }
 
 // A trace of `photons` photons (with the fire trace when enabled): every job's, and each sweep point's.

@@ -24,6 +24,7 @@ void applyAxis(const SweepAxis& axis, size_t i, CutValues& cut, TraceSettings& t
         trace.constantIndex = axis.values[i];
     } else if (axis.name == "material") {
         trace.material = axis.choices[i];
+        trace.customMaterial.reset();  // the axis names each point's material in place of the job's own
     } else if (axis.name == "light") {
         const std::optional<LightModelKind> model = kLightModelNames.find(axis.choices[i]);
         if (!model) throw Error("sweep axis light: no light model '" + axis.choices[i] + "'");

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "optics/material.h"
+#include "scene/scene.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -54,6 +55,12 @@ const Schema<TraceSettings>& traceSettingsSchema() {
             optionalNumber("n", inherited<TraceSettings>(&TraceSettings::constantIndex),
                            {.lo = 1, .hi = 10, .openLo = true},
                            {"--n", "A constant refractive index instead of the material's"}),
+            table("custom_material", inherited<TraceSettings>(&TraceSettings::customMaterial),
+                  "MaterialDefinition", &readMaterialDefinition, &toJson,
+                  {"--custom-material",
+                   "A material of your own in place of --material: JSON {\"name\": \"...\", \"n_o\": 1.644, "
+                   "\"n_e\": 1.624, \"dispersion\": 0.017, \"density_g_cm3\": 3.06} (or \"n\", or "
+                   "\"alpha\", \"beta\", \"gamma\") inline, or a file holding it"}),
             table("absorption", inherited<TraceSettings>(&TraceSettings::absorption), "AbsorptionSpectrum",
                   &readAbsorption, &toJson,
                   {"--absorption",
@@ -79,14 +86,22 @@ const Schema<TraceSettings>& traceSettingsSchema() {
         },
         // The material's name matters only without an `n` to override it.
         [](const TraceSettings& s, const std::string& path) {
+            if (s.customMaterial && (s.constantIndex || s.material != "auto")) {
+                const std::string field = fieldPath(path, "custom_material");
+                throw Error(field, field + " replaces material and n: give one of them (got " +
+                                       (s.constantIndex ? std::string("n") : "material " + s.material) +
+                                       " too)");
+            }
             if (!s.constantIndex) readChoice(s.material, fieldPath(path, "material"), materialChoices());
             // An extraordinary spectrum needs a uniaxial material ("auto" and `n` are isotropic).
-            const bool uniaxial = !s.constantIndex && s.material != "auto" &&
-                                  Material::byName(s.material).optic() == Optic::Uniaxial;
-            if (s.absorption && !s.absorption->extraordinaryPerMm.empty() && !uniaxial) {
+            if (s.absorption && !s.absorption->extraordinaryPerMm.empty() &&
+                chosenOptic(s) != Optic::Uniaxial) {
                 const std::string field = fieldPath(path, "absorption.extraordinary_per_mm");
                 throw Error(field, field + " needs a uniaxial material (got " +
-                                       (s.constantIndex ? std::string("a constant n") : s.material) + ")");
+                                       (s.constantIndex    ? std::string("a constant n")
+                                        : s.customMaterial ? s.customMaterial->name
+                                                           : s.material) +
+                                       ")");
             }
             if (s.light.polarizerDeg && s.polarization == PolarizationMode::Off) {
                 const std::string field = fieldPath(path, "light.polarizer_deg");

@@ -1316,6 +1316,50 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.match(text, /Polarisation\s*off: each facet reflects the unpolarised Fresnel average/);
   });
 
+  // Issue 29: a material of one's own, typed as a gem table gives it; the page shows its fields only when chosen,
+  // takes the optic class from the number of indices, and the result names it.
+  test('your own material is sent as custom_material and named on the result page', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    await fillSmallJob({ photons: '3000' });
+    await page.setChecked('#f-render', false);
+    assert.equal(await page.isHidden('#custom-material-fields'), true);
+    await page.selectOption('#f-material', 'custom');
+    assert.equal(await page.isVisible('#custom-material-fields'), true);
+    await page.selectOption('#f-polarization', 'on');
+    await page.fill('#f-custom-indices', '1.644 1.624');
+    assert.equal(await page.isVisible('#optic-axis-fields'), true, 'two indices: uniaxial, with its optic axis');
+    await page.fill('#f-custom-indices', '1.54');
+    assert.equal(await page.isHidden('#optic-axis-fields'), true, 'one index: singly refracting');
+    // Four indices are refused on the page; equal n_o and n_e by the server, each under the indices.
+    await page.fill('#f-custom-indices', '1.6 1.7 1.8 1.9');
+    await page.click('#submit-button');
+    await page.waitForSelector('#err-custom_material:not([hidden])');
+    assert.match(await page.textContent('#err-custom_material'), /one index, two \(n_o n_e\) or three/);
+    await page.fill('#f-custom-indices', '1.6 1.6');
+    await page.click('#submit-button');
+    await page.waitForFunction(() => /equals n_o/.test(document.querySelector('#err-custom_material').textContent));
+    await page.selectOption('#f-polarization', 'off');
+    await page.fill('#f-custom-name', 'green tourmaline');
+    await page.fill('#f-custom-indices', '1.644 1.624');
+    await page.fill('#f-custom-dispersion', '0.017');
+    await page.fill('#f-custom-density', '3.06');
+    const id = await submitAndGetId();
+    const sent = await (await fetch(`${baseUrl}/api/jobs/${id}`)).json();
+    assert.deepEqual(sent.settings.custom_material,
+      { name: 'green tourmaline', n_o: 1.644, n_e: 1.624, dispersion: 0.017, density_g_cm3: 3.06 });
+    await waitForFinished(id);
+    await page.click(`#job-list li[data-id="${id}"] a[data-action="open"]`);
+    await page.waitForSelector('[data-section="design"]');
+    const text = await page.textContent('[data-section="design"]');
+    assert.match(text, /green tourmaline, n 1\.644/i);
+    assert.match(text, /uniaxial, birefringence 0\.020?;/);
+    await shot('16-own-material');
+    await page.goto(`${baseUrl}/#/`);
+    await page.selectOption('#f-material', 'auto');
+    await page.selectOption('#f-polarization', 'on');
+  });
+
   // Issue 31: an upload can be deleted from the page; while a queued or running job uses it the server refuses,
   // and the page shows the server's reason under it.
   test('an upload is deleted with its Delete button, and the server\'s refusal is shown while a job uses it', async () => {

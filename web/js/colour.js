@@ -15,8 +15,21 @@ export function absorbs(stats) {
   return Boolean(stats && stats.settings && stats.settings.absorption);
 }
 
+// The indices typed for "Your own material", as numbers (NaN where one does not read).
+export function customIndices(form) {
+  const text = form.elements['custom_material.indices'].value.trim();
+  return text ? text.split(/[\s,;]+/).map(Number) : [];
+}
+
+// The optic class of the material chosen: a menu entry's, or for your own material the number of indices typed.
+export function chosenOptic(form) {
+  const material = form.elements.material;
+  if (material.value === 'custom') return ['isotropic', 'isotropic', 'uniaxial', 'biaxial'][customIndices(form).length] || 'isotropic';
+  return material.selectedOptions[0]?.dataset.optic || 'isotropic';
+}
+
 function uniaxialMaterial(form) {
-  return form.elements.material.selectedOptions[0]?.dataset.optic === 'uniaxial';
+  return chosenOptic(form) === 'uniaxial';
 }
 
 // The absorption textarea as a job's `absorption`: one row a line, "wavelength_nm alpha_o" or, for a uniaxial

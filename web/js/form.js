@@ -1,7 +1,7 @@
 // The job form: its defaults from the server, reading it into a job, its estimate as it is edited, showing the
 // server's field errors, submitting.
 import { api } from './api.js';
-import { readAbsorption, syncAbsorptionField, syncColourControls } from './colour.js';
+import { chosenOptic, customIndices, readAbsorption, syncAbsorptionField, syncColourControls } from './colour.js';
 import { ESTIMATE_DELAY_MS } from './constants.js';
 import { readCut } from './cut_fields.js';
 import { $, clearFieldError, fieldError, showFieldError } from './dom.js';
@@ -59,6 +59,25 @@ function readNumber(form, name, errors, { required = true } = {}) {
   return Number(input.value);
 }
 
+// "Your own material" as a job's custom_material (docs/optics.md, "A job's own material"); the ranges are the
+// server's to check.
+function readCustomMaterial(form, errors) {
+  const indices = customIndices(form);
+  const keys = [null, ['n'], ['n_o', 'n_e'], ['alpha', 'beta', 'gamma']][indices.length];
+  const material = {};
+  if (!keys || indices.some(Number.isNaN)) {
+    errors.push(['custom_material', 'Type one index, two (n_o n_e) or three (α β γ), e.g. 1.644 1.624']);
+  } else {
+    keys.forEach((key, i) => { material[key] = indices[i]; });
+  }
+  const name = form.elements['custom_material.name'].value.trim();
+  if (name) material.name = name;
+  material.dispersion = readNumber(form, 'custom_material.dispersion', errors);
+  const density = readNumber(form, 'custom_material.density_g_cm3', errors, { required: false });
+  if (density !== undefined) material.density_g_cm3 = density;
+  return material;
+}
+
 function buildJob(form) {
   const errors = [];
   const job = { mesh: form.elements.mesh.value };
@@ -78,7 +97,8 @@ function buildJob(form) {
     job.light.head_shadow_deg = readNumber(form, 'light.head_shadow_deg', errors);
     job.light.sky = form.elements['light.sky'].value;
   }
-  job.material = form.elements.material.value;
+  if (form.elements.material.value === 'custom') job.custom_material = readCustomMaterial(form, errors);
+  else job.material = form.elements.material.value;
   job.dispersion = form.elements.dispersion.checked;
   job.polarization = form.elements.polarization.value;
   job.size_mm = readNumber(form, 'size_mm', errors);
@@ -244,7 +264,10 @@ export function syncFormControls() {
   // A uniaxial stone splits each ray in two only with polarisation on: its optic axis matters then, and the
   // menu suggests turning it on otherwise (docs/optics.md, Birefringent stones).
   const material = form.elements.material;
-  const uniaxial = material.selectedOptions[0]?.dataset.optic === 'uniaxial';
+  const custom = material.value === 'custom';
+  $('#custom-material-fields').hidden = !custom;
+  for (const input of $('#custom-material-fields').querySelectorAll('input')) input.disabled = !custom;
+  const uniaxial = chosenOptic(form) === 'uniaxial';
   const polarized = form.elements.polarization.value === 'on';
   $('#optic-axis-fields').hidden = !(uniaxial && polarized);
   for (const input of $('#optic-axis-fields').querySelectorAll('input')) input.disabled = !(uniaxial && polarized);
