@@ -62,6 +62,7 @@ std::vector<Route> Api::routes() {
         {"GET", "/api/openapi.json"},
         {"GET", "/api/defaults"},
         {"GET", "/api/colour/cie"},
+        {"GET", "/api/colour/by-transmission"},
         {"GET", "/api/jobs"},
         {"POST", "/api/jobs"},
         {"POST", "/api/jobs/estimate"},
@@ -462,6 +463,14 @@ void Api::install(httplib::Server& server, bool accessLog) {
         {"GET /api/defaults",
          [this](const Request&, Response& res) { sendJson(res, 200, jobDefaults(queue_.cores())); }},
         {"GET /api/colour/cie", [](const Request&, Response& res) { sendJson(res, 200, cieTablesJson()); }},
+        {"GET /api/colour/by-transmission",
+         [](const Request& req, Response& res) {
+             try {
+                 sendJson(res, 200, absorptionByTransmission(req.params));
+             } catch (const Error& e) {
+                 problem(res, 422, e.what(), e.field());
+             }
+         }},
         {"GET /api/jobs", [this](const Request& req, Response& res) { listJobs(req, res); }},
         {"GET /api/jobs/{id}", [this](const Request& req, Response& res) { getJob(req, res); }},
         {"DELETE /api/jobs/{id}", [this](const Request& req, Response& res) { deleteJob(req, res); }},

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "optics/transmission_colour.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -48,6 +49,40 @@ std::vector<double> readColumn(const json& j, const std::string& path, double lo
     return v;
 }
 
+// A colour by transmission: "#rrggbb" or [L*, a*, b*] (docs/optics.md, "Colour by transmission").
+Lab readColour(const json& j, const std::string& path) {
+    if (j.is_string()) return srgbHexToLab(j.get<std::string>(), path);
+    const bool lab = j.is_array() && j.size() == 3 &&
+                     std::all_of(j.begin(), j.end(), [](const json& x) { return x.is_number(); });
+    if (!lab) throw Error(path, path + " must be an sRGB colour \"#rrggbb\" or CIELAB [L*, a*, b*]");
+    const Lab c{j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+    if (!(c.L > 0 && c.L <= 100) || !(std::abs(c.a) <= 200) || !(std::abs(c.b) <= 200))
+        throw Error(path, path + " must have L* above 0 and at most 100, a* and b* from -200 to 200");
+    return c;
+}
+
+// {"transmitted_colour": ..., "extraordinary_transmitted_colour": ..., "path_mm": ...}: the spectra that
+// transmit those colours through path_mm (default 1 mm).
+AbsorptionSpectrum readTransmittedColour(const json& j, const std::string& path) {
+    double pathMm = 1;
+    if (j.contains("path_mm")) {
+        const json& p = j["path_mm"];
+        if (!p.is_number() || !(p.get<double>() >= 0.01 && p.get<double>() <= 1000))
+            throw Error(path + ".path_mm", path + ".path_mm must be a number from 0.01 to 1000 (mm)");
+        pathMm = p.get<double>();
+    }
+    AbsorptionSpectrum s;
+    s.wavelengthNm = kTransmissionWavelengthsNm;
+    const std::string o = path + ".transmitted_colour";
+    s.ordinaryPerMm = absorptionForTransmittedColour(readColour(j["transmitted_colour"], o), pathMm, o);
+    if (j.contains("extraordinary_transmitted_colour")) {
+        const std::string e = path + ".extraordinary_transmitted_colour";
+        s.extraordinaryPerMm =
+            absorptionForTransmittedColour(readColour(j["extraordinary_transmitted_colour"], e), pathMm, e);
+    }
+    return s;
+}
+
 }  // namespace
 
 double AbsorptionSpectrum::ordinary(double nm) const {
@@ -67,12 +102,23 @@ bool AbsorptionSpectrum::absorbs() const {
 AbsorptionSpectrum readAbsorption(const json& j, const std::string& path) {
     if (!j.is_object())
         throw Error(path, path + " must be an object {\"wavelength_nm\": [...], \"ordinary_per_mm\": [...]}");
+    // Two forms: a table, or a colour by transmission; the first key of either decides.
+    const bool byColour = j.contains("transmitted_colour");
     for (const auto& [key, value] : j.items()) {
-        if (key != "wavelength_nm" && key != "ordinary_per_mm" && key != "extraordinary_per_mm")
-            throw Error(path + "." + key, "unknown field '" + path + "." + key +
-                                              "' (a spectrum has wavelength_nm, ordinary_per_mm and "
-                                              "extraordinary_per_mm)");
+        const bool known =
+            byColour
+                ? key == "transmitted_colour" || key == "extraordinary_transmitted_colour" || key == "path_mm"
+                : key == "wavelength_nm" || key == "ordinary_per_mm" || key == "extraordinary_per_mm";
+        if (!known)
+            throw Error(path + "." + key,
+                        "unknown field '" + path + "." + key +
+                            (byColour ? "' (a colour by transmission has transmitted_colour, "
+                                        "extraordinary_transmitted_colour and path_mm)"
+                                      : "' (a spectrum has wavelength_nm, ordinary_per_mm and "
+                                        "extraordinary_per_mm, or is a colour by transmission: "
+                                        "transmitted_colour)"));
     }
+    if (byColour) return readTransmittedColour(j, path);
     for (const char* key : {"wavelength_nm", "ordinary_per_mm"}) {
         if (!j.contains(key)) throw Error(path + "." + key, path + "." + key + " is missing");
     }

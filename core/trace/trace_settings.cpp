@@ -65,7 +65,8 @@ const Schema<TraceSettings>& traceSettingsSchema() {
                   &readAbsorption, &toJson,
                   {"--absorption",
                    "The material's absorption spectrum: JSON {\"wavelength_nm\": [...], \"ordinary_per_mm\": "
-                   "[...], \"extraordinary_per_mm\": [...]} inline, or a file holding it"}),
+                   "[...], \"extraordinary_per_mm\": [...]}, or the colour 1 mm transmits, "
+                   "{\"transmitted_colour\": \"#5b8fd0\"} (or [L*, a*, b*]), inline or in a file"}),
             boolean("dispersion", inherited<TraceSettings>(&TraceSettings::dispersion),
                     {"--no-dispersion", "Trace every photon at 589.3 nm"}),
             count("max_bounces", &TraceSettings::maxBounces, 1, 100000,

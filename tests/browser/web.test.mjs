@@ -1360,6 +1360,25 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.selectOption('#f-polarization', 'on');
   });
 
+  // Issue 29: colour by transmission fills the absorption table with the server's spectrum for the colour 1 mm
+  // transmits, and the swatch beside it shows that colour back.
+  test('the colour 1 mm transmits fills the absorption table, whose 1 mm swatch is that colour', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#job-list li');
+    await page.selectOption('#f-material', 'diamond');
+    await page.fill('#f-absorption', '');
+    await page.$eval('#f-transmitted-colour', (el) => { el.value = '#5b8fd0'; });
+    await page.click('#fill-from-colour');
+    await page.waitForFunction(() => document.querySelector('#f-absorption').value.split('\n').length === 41);
+    assert.match(await page.inputValue('#f-absorption'), /^380 [\d.e-]+\n390 /);
+    const swatch = await page.waitForSelector('#absorption-swatches .swatch-item[data-mm="1"]');
+    const srgb = await swatch.getAttribute('data-srgb');
+    const channels = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+    channels(srgb).forEach((c, i) => assert.ok(Math.abs(c - channels('#5b8fd0')[i]) <= 3, `${srgb} against #5b8fd0`));
+    await page.fill('#f-absorption', '');
+    await page.selectOption('#f-material', 'auto');
+  });
+
   // Issue 31: an upload can be deleted from the page; while a queued or running job uses it the server refuses,
   // and the page shows the server's reason under it.
   test('an upload is deleted with its Delete button, and the server\'s refusal is shown while a job uses it', async () => {

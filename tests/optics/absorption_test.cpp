@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "colour/cie.h"
+#include "optics/transmission_colour.h"
 #include "study/job_request.h"
 #include "util/error.h"
 
@@ -90,6 +94,86 @@ TEST(AbsorptionSpectrum, JsonRoundTrip) {
     ASSERT_TRUE(job.settings.trace.absorption);
     EXPECT_EQ(*job.settings.trace.absorption, a);
     EXPECT_EQ(toJson(job)["absorption"], j);
+}
+
+// What `mm` of a spectrum transmits of D65, against D65's white: the tracer's own interpolation of the table
+// (linear between its 10 nm points), summed at the CIE tables' 5 nm rows, independent of the fit's sigmoid.
+Lab transmittedThrough(const AbsorptionSpectrum& s, double mm) {
+    return xyzToLab(tristimulus(Illuminant::D65, [&](double nm) { return std::exp(-s.ordinary(nm) * mm); }),
+                    whitePoint(Illuminant::D65));
+}
+
+double deltaE(const Lab& x, const Lab& y) {
+    return std::sqrt((x.L - y.L) * (x.L - y.L) + (x.a - y.a) * (x.a - y.a) + (x.b - y.b) * (x.b - y.b));
+}
+
+// A colour by transmission gives the spectrum that transmits that colour through its path: traced back
+// through the table, each comes out within 0.3 Delta E (the table's 10 nm steps against the fit's smooth
+// curve).
+TEST(ColourByTransmission, TheSpectrumTransmitsTheColourAsked) {
+    const std::vector<Lab> targets = {{70, -5, -30}, {85, 12, -6}, {60, -40, 20}, {35, 45, 25}, {92, 0, 25}};
+    for (const Lab& target : targets) {
+        SCOPED_TRACE(testing::Message() << target.L << " " << target.a << " " << target.b);
+        const AbsorptionSpectrum s = readAbsorption(
+            json{{"transmitted_colour", {target.L, target.a, target.b}}, {"path_mm", 2}}, "absorption");
+        EXPECT_EQ(s.wavelengthNm, kTransmissionWavelengthsNm);
+        EXPECT_LT(deltaE(transmittedThrough(s, 2), target), 0.3);
+        EXPECT_TRUE(s.extraordinaryPerMm.empty());
+        // Through twice the path the same stone is darker: the single-pass transmission squared.
+        EXPECT_LT(transmittedThrough(s, 4).L, target.L);
+    }
+}
+
+// A neutral grey is transmitted by a flat spectrum: every coefficient within 1 % of their mean.
+TEST(ColourByTransmission, GreyIsAFlatSpectrum) {
+    const AbsorptionSpectrum s = readAbsorption(json{{"transmitted_colour", {60, 0, 0}}}, "absorption");
+    double mean = 0;
+    for (const double a : s.ordinaryPerMm) mean += a / double(s.ordinaryPerMm.size());
+    EXPECT_GT(mean, 0.1);
+    for (const double a : s.ordinaryPerMm) EXPECT_NEAR(a, mean, 0.01 * mean);
+}
+
+// The path only scales the coefficients: twice the path, half the alpha, for the same transmitted colour.
+TEST(ColourByTransmission, ThePathScalesTheCoefficients) {
+    const json colour = {56, 20, -25};
+    const AbsorptionSpectrum one = readAbsorption(json{{"transmitted_colour", colour}}, "absorption");
+    const AbsorptionSpectrum two =
+        readAbsorption(json{{"transmitted_colour", colour}, {"path_mm", 2}}, "absorption");
+    for (size_t i = 0; i < one.ordinaryPerMm.size(); ++i)
+        EXPECT_DOUBLE_EQ(two.ordinaryPerMm[i] * 2, one.ordinaryPerMm[i]);
+}
+
+// sRGB's mid grey #808080 is L* 53.585 (IEC 61966-2-1's decoding, 128/255 -> 0.2158605 linear, Y^(1/3) by
+// CIE 015); white is L* 100 with no hue.
+TEST(ColourByTransmission, SrgbHexIsDecodedAsTheStandardSays) {
+    const Lab grey = srgbHexToLab("#808080", "c");
+    EXPECT_NEAR(grey.L, 53.585, 0.001);
+    EXPECT_NEAR(grey.a, 0, 1e-4);
+    EXPECT_NEAR(grey.b, 0, 1e-4);
+    const Lab white = srgbHexToLab("#FFFFFF", "c");
+    EXPECT_NEAR(white.L, 100, 1e-9);
+    const AbsorptionSpectrum blue = readAbsorption(json{{"transmitted_colour", "#5b8fd0"}}, "absorption");
+    EXPECT_LT(deltaE(transmittedThrough(blue, 1), srgbHexToLab("#5b8fd0", "c")), 0.3);
+    // Pleochroic: each wave its own colour.
+    const AbsorptionSpectrum two = readAbsorption(
+        json{{"transmitted_colour", "#5b8fd0"}, {"extraordinary_transmitted_colour", "#9fc79a"}},
+        "absorption");
+    EXPECT_EQ(two.extraordinaryPerMm.size(), two.ordinaryPerMm.size());
+    EXPECT_NE(two.extraordinaryPerMm, two.ordinaryPerMm);
+}
+
+TEST(ColourByTransmission, AColourNoFilterShowsIsRefused) {
+    EXPECT_EQ(errorField({{"transmitted_colour", {95, 80, 0}}}), "absorption.transmitted_colour");
+    EXPECT_EQ(errorField({{"transmitted_colour", "#12345"}}), "absorption.transmitted_colour");
+    EXPECT_EQ(errorField({{"transmitted_colour", "#12345g"}}), "absorption.transmitted_colour");
+    EXPECT_EQ(errorField({{"transmitted_colour", {50, 0}}}), "absorption.transmitted_colour");
+    EXPECT_EQ(errorField({{"transmitted_colour", {0, 0, 0}}}), "absorption.transmitted_colour");
+    EXPECT_EQ(errorField({{"transmitted_colour", "#808080"}, {"path_mm", 0}}), "absorption.path_mm");
+    EXPECT_EQ(errorField({{"transmitted_colour", "#808080"}, {"wavelength_nm", {400, 700}}}),
+              "absorption.wavelength_nm");
+    EXPECT_EQ(errorField({{"transmitted_colour", "#808080"}, {"extraordinary_transmitted_colour", "#9fc79a"}},
+                         "diamond"),
+              "absorption.extraordinary_per_mm");
 }
 
 }  // namespace

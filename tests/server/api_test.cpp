@@ -16,7 +16,9 @@
 #include <thread>
 
 #include <gtest/gtest.h>
+
 #include <httplib.h>
+#include "optics/absorption.h"
 
 #include "service.h"
 #include "sweep/sweep_figures.h"
@@ -209,6 +211,34 @@ TEST_F(ServiceTest, DefaultsAreWhatAJobThatLeavesThemOutGets) {
     settings.erase("name");
     EXPECT_EQ(settings, defaults);
     EXPECT_EQ(waitFinished(status["id"])["state"], "canceled");
+}
+
+// A colour by transmission as the page asks for its table: the same table a job's absorption would read, and
+// a bad parameter refused by its own name.
+TEST_F(ServiceTest, ColourByTransmissionGivesTheJobsTable) {
+    auto r = client_->Get("/api/colour/by-transmission?transmitted_colour=%235b8fd0&path_mm=2");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    EXPECT_EQ(json::parse(r->body),
+              toJson(readAbsorption(json{{"transmitted_colour", "#5b8fd0"}, {"path_mm", 2}}, "absorption")));
+    r = client_->Get("/api/colour/by-transmission?transmitted_colour=60,-20,15");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    EXPECT_EQ(json::parse(r->body)["ordinary_per_mm"].size(), 41u);
+    for (const auto& [query, field] : std::vector<std::pair<std::string, std::string>>{
+             {"", "transmitted_colour"},
+             {"transmitted_colour=95,80,0", "transmitted_colour"},
+             {"transmitted_colour=blue", "transmitted_colour"},
+             {"transmitted_colour=%23808080&path_mm=x", "path_mm"},
+             {"transmitted_colour=%23808080&path_mm=0", "path_mm"},
+             {"transmitted_colour=%23808080&hue=3", "hue"}}) {
+        r = client_->Get("/api/colour/by-transmission?" + query);
+        ASSERT_TRUE(r);
+        EXPECT_EQ(r->status, 422) << query;
+        const json p = json::parse(r->body);
+        EXPECT_EQ(p.value("field", ""), field) << query << ": " << r->body;
+        EXPECT_EQ(p.value("detail", "").find("absorption."), std::string::npos) << p.value("detail", "");
+    }
 }
 
 // The page's absorption swatch sums the colour view's own tables: summed over the rows as the document says,

@@ -200,8 +200,23 @@ export function syncColourControls() {
   $('#colour-options').classList.toggle('disabled', !on);
 }
 
+// Fills the absorption table from the colour 1 mm transmits: the server's spectrum for it, one row per 10 nm.
+export async function fillAbsorptionFromColour() {
+  const form = $('#job-form');
+  const colour = form.querySelector('#f-transmitted-colour').value;
+  try {
+    const table = await api(`/api/colour/by-transmission?transmitted_colour=${encodeURIComponent(colour)}`);
+    form.elements.absorption.value = table.wavelength_nm
+      .map((nm, i) => `${nm} ${Number(table.ordinary_per_mm[i].toPrecision(4))}`).join('\n');
+    syncAbsorptionField();
+  } catch (e) {
+    showFieldError('absorption', e.message);
+  }
+}
+
 export function initColourFields() {
   const form = $('#job-form');
+  $('#fill-from-colour').addEventListener('click', fillAbsorptionFromColour);
   form.elements.absorption.addEventListener('input', updateAbsorptionSwatches);
   form.elements.absorption.addEventListener('change', checkAbsorptionField);
   form.elements.size_mm.addEventListener('input', updateAbsorptionSwatches);

@@ -1,0 +1,146 @@
+#include "optics/transmission_colour.h"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "colour/cie.h"
+#include "util/error.h"
+
+namespace facetlight {
+namespace {
+
+using Coefficients = std::array<double, 3>;
+
+// Jakob & Hanika (2019), eq. 3: a sigmoid that reaches 0 and 1 only at infinity, so T stays a transmittance.
+double sigmoid(double z) {
+    return 0.5 + z / (2 * std::sqrt(1 + z * z));
+}
+
+// T at `nm` for coefficients c of the quadratic in t = (nm - 580) / 200, which spans -1 to 1 over 380-780 nm
+// (scaled, so that the three coefficients are of one size for the fit).
+double transmittance(const Coefficients& c, double nm) {
+    const double t = (nm - 580) / 200;
+    return sigmoid(c[0] + c[1] * t + c[2] * t * t);
+}
+
+Lab labOf(const Coefficients& c) {
+    const Vec3 xyz = tristimulus(Illuminant::D65, [&](double nm) { return transmittance(c, nm); });
+    return xyzToLab(xyz, whitePoint(Illuminant::D65));
+}
+
+std::array<double, 3> minus(const Lab& a, const Lab& b) {
+    return {a.L - b.L, a.a - b.a, a.b - b.b};
+}
+
+double norm(const std::array<double, 3>& d) {
+    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+// Levenberg-Marquardt from `c` toward `target`, the Jacobian by central differences; returns Delta E*ab.
+double fit(Coefficients& c, const Lab& target) {
+    double lambda = 1e-3, error = norm(minus(labOf(c), target));
+    for (int iteration = 0; iteration < 200 && error > 1e-4; ++iteration) {
+        const std::array<double, 3> r = minus(labOf(c), target);
+        double jac[3][3];  // d Lab_i / d c_k
+        for (int k = 0; k < 3; ++k) {
+            Coefficients up = c, down = c;
+            up[k] += 1e-5;
+            down[k] -= 1e-5;
+            const std::array<double, 3> d = minus(labOf(up), labOf(down));
+            for (int i = 0; i < 3; ++i) jac[i][k] = d[i] / 2e-5;
+        }
+        // (J^T J + lambda diag(J^T J)) step = -J^T r, by Cramer's rule (3 x 3).
+        double a[3][3], g[3];
+        for (int k = 0; k < 3; ++k) {
+            g[k] = 0;
+            for (int i = 0; i < 3; ++i) g[k] -= jac[i][k] * r[i];
+            for (int l = 0; l < 3; ++l) {
+                a[k][l] = 0;
+                for (int i = 0; i < 3; ++i) a[k][l] += jac[i][k] * jac[i][l];
+            }
+        }
+        for (int k = 0; k < 3; ++k) a[k][k] *= 1 + lambda;
+        const auto det = [](const double m[3][3]) {
+            return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                   m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                   m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        };
+        const double d = det(a);
+        if (!(std::abs(d) > 0)) break;
+        Coefficients next = c;
+        for (int k = 0; k < 3; ++k) {
+            double m[3][3];
+            for (int i = 0; i < 3; ++i)
+                for (int l = 0; l < 3; ++l) m[i][l] = l == k ? g[i] : a[i][l];
+            next[k] += det(m) / d;
+        }
+        const double nextError = norm(minus(labOf(next), target));
+        if (nextError < error) {
+            c = next;
+            error = nextError;
+            lambda = std::max(lambda / 4, 1e-9);
+        } else {
+            lambda *= 8;
+            if (lambda > 1e9) break;
+        }
+    }
+    return error;
+}
+
+}  // namespace
+
+const std::vector<double> kTransmissionWavelengthsNm = [] {
+    std::vector<double> nm;
+    for (int w = 380; w <= 780; w += 10) nm.push_back(w);
+    return nm;
+}();
+
+std::vector<double> absorptionForTransmittedColour(const Lab& target, double pathMm,
+                                                   const std::string& field) {
+    // From the neutral grey of the target's lightness toward the target in steps (continuation, as Jakob &
+    // Hanika build their tables), so that each fit starts near its answer.
+    Coefficients c{0, 0, 0};
+    const double greyL = labOf(c).L;
+    constexpr int kSteps = 8;
+    double error = 0;
+    for (int step = 1; step <= kSteps; ++step) {
+        const double f = double(step) / kSteps;
+        const Lab towards{greyL + (target.L - greyL) * f, target.a * f, target.b * f};
+        error = fit(c, towards);
+    }
+    if (error > 0.05) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      " L* %.1f a* %.1f b* %.1f is no colour a filter transmits (the nearest smooth spectrum "
+                      "is Delta E %.1f away)",
+                      target.L, target.a, target.b, error);
+        throw Error(field, field + text);
+    }
+    std::vector<double> alpha;
+    for (const double nm : kTransmissionWavelengthsNm)
+        alpha.push_back(std::max(0.0, -std::log(transmittance(c, nm)) / pathMm));
+    return alpha;
+}
+
+Lab srgbHexToLab(const std::string& hex, const std::string& field) {
+    unsigned r = 0, g = 0, b = 0;
+    int used = 0;
+    if (hex.size() != 7 || std::sscanf(hex.c_str(), "#%2x%2x%2x%n", &r, &g, &b, &used) != 3 || used != 7)
+        throw Error(field, field + " must be an sRGB colour \"#rrggbb\" or CIELAB [L*, a*, b*]");
+    const auto decode = [](unsigned v) {
+        const double x = v / 255.0;
+        return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+    };
+    const double R = decode(r), G = decode(g), B = decode(b);
+    // IEC 61966-2-1's matrix from linear sRGB to XYZ; its white (1, 1, 1) is D65 with Y = 1.
+    const auto xyz = [](double R, double G, double B) {
+        return Vec3{0.4124564 * R + 0.3575761 * G + 0.1804375 * B,
+                    0.2126729 * R + 0.7151522 * G + 0.0721750 * B,
+                    0.0193339 * R + 0.1191920 * G + 0.9503041 * B};
+    };
+    return xyzToLab(xyz(R, G, B), xyz(1, 1, 1));
+}
+
+}  // namespace facetlight
