@@ -30,6 +30,8 @@ struct SweepOptions {
     std::vector<std::string> constraints;
     int refineRounds = OptimizeSettings{}.refineRounds;
     TraceOptions trace;
+    bool colour = false;
+    SettingsFlags colourFlags;
 };
 
 CutValues fixedValues(const std::vector<std::string>& settings) {
@@ -53,13 +55,19 @@ void runSweepCommand(const SweepOptions& o) {
     for (const std::string& text : o.vary) request.axes.push_back(parseSweepAxis(text));
     request.set = fixedValues(o.set);
     const TraceSettings trace = toTraceSettings(o.trace);
+    // The colour view's own flags turn it on, as render's do.
+    std::optional<ColourSettings> colour;
+    if (o.colour || o.colourFlags.given()) {
+        colour.emplace();
+        o.colourFlags.apply(colourSettingsSchema(), *colour);
+    }
     request.figures = o.figures.empty() ? std::vector<std::string>{defaultSweepFigure(trace)} : o.figures;
     request.maximize = o.maximizeGiven && o.maximize.empty() ? defaultSweepFigure(trace) : o.maximize;
     request.constraints = o.constraints;
     request.refineRounds = o.refineRounds;
-    checkSweepFigures(request, trace, {"--figure", "--maximize", "--constraint", false});
+    checkSweepFigures(request, trace, colour.has_value(), {"--figure", "--maximize", "--constraint", false});
     // A library shape by name, else a design or mesh file (its tiers, or trace settings only, are the axes).
-    const SweepPlan plan = planSweepOf(o.shape, request, trace);
+    const SweepPlan plan = planSweepOf(o.shape, request, trace, colour);
     const fs::path out(o.out);
     std::error_code ec;
     fs::create_directories(out, ec);
@@ -115,7 +123,7 @@ void addSweepCommand(CLI::App& app) {
     cmd->add_option(
            "--vary", o->vary,
            "NAME=LO:HI:STEP or NAME=V1,V2,...: a parameter of the shape (a design's tier:NAME slope), or "
-           "tilt, head_shadow, material, light or n; once or twice")
+           "tilt, head_shadow, material, light, n or size_mm; once or twice")
         ->take_all();
     cmd->add_option("--set", o->set,
                     "NAME=VALUE: a parameter of the shape held at a value other than its default")
@@ -142,6 +150,13 @@ void addSweepCommand(CLI::App& app) {
                     "With --maximize: finer grids after the sweep, each with 4 times the photons")
         ->capture_default_str();
     addTraceOptions(cmd, o->trace, false);
+    cmd->add_flag(
+        "--colour", o->colour,
+        "Also measure every point's face-up colour (the colour figures colour_lightness, colour_a, "
+        "colour_b, colour_chroma, colour_windowed, colour_extinct, colour_saturated; docs/optics.md) "
+        "under a CIE illuminant, absorbing at the point's size; any --colour-... flag implies it");
+    o->colourFlags.add(cmd, colourSettingsSchema().fields(), colourSettingsSchema().write(ColourSettings{}),
+                       "colour");
     cmd->callback([o, maximize] {
         o->maximizeGiven = maximize->count() > 0;
         runSweepCommand(*o);

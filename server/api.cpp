@@ -156,7 +156,8 @@ std::optional<JobRequest> Api::checkJob(const std::string& body, Response& res, 
     try {
         // A sweep of a design or mesh file: its tiers and the request are checked once the file is found.
         if (spec.settings.sweep && !isLibraryShape(spec.mesh))
-            planSweepOf(catalog_.shapeSource(spec.mesh), *spec.settings.sweep, spec.settings.trace);
+            planSweepOf(catalog_.shapeSource(spec.mesh), *spec.settings.sweep, spec.settings.trace,
+                        spec.settings.colour);
         if (!spec.settings.sweep)
             stone = spec.cut.empty() ? catalog_.resolve(spec.mesh)
                                      : std::make_shared<const Stone>(cutStone(spec, catalog_.shapeSource(spec.mesh)));
@@ -406,7 +407,8 @@ void Api::getSweepPoints(const Request& req, Response& res) {
     if (!study.settings.sweep) return problem(res, 404, "this job is not a sweep");
     SweepPlan spec;
     try {
-        spec = planSweepOf(catalog_.shapeSource(study.mesh), *study.settings.sweep, study.settings.trace);
+        spec = planSweepOf(catalog_.shapeSource(study.mesh), *study.settings.sweep, study.settings.trace,
+                           study.settings.colour);
     } catch (const Error& e) {
         return problem(res, 500, unread + e.what());
     }
@@ -435,7 +437,7 @@ void Api::getSweepPoints(const Request& req, Response& res) {
               {"shape", spec.shape},
               {"axes", sweepAxesJson(spec)},
               {"references", std::move(references)},
-              {"figures", sweepFigureNames(spec.trace)},
+              {"figures", sweepFigureNames(spec.trace, spec.colour.has_value())},
               {"points_total", spec.pointCount()},
               {"points", points}});
 }

@@ -66,16 +66,33 @@ std::string viewerField(const ViewerSettings& v) {
                       {"viewer.azimuths", double(v.azimuths), double(usual.azimuths)}});
 }
 
+// A sweep's points: its grid's, and the most each of its search's finer rounds traces.
+struct SweepGridSize {
+    double points = 1, refined = 1;
+};
+SweepGridSize sweepGridSize(const SweepRequest& sweep) {
+    SweepGridSize n;
+    const OptimizeSettings search;
+    for (const SweepAxis& axis : sweep.axes) {
+        n.points *= double(axis.size());
+        n.refined *= axis.size() > 1 ? 2 * search.refineSteps + 1 : 1;
+    }
+    return n;
+}
+
+// The face-up colour views a study makes: one, or one a point of a sweep and of its search's rounds.
+double colourViews(const StudySettings& s) {
+    if (!s.sweep) return 1;
+    const SweepGridSize n = sweepGridSize(*s.sweep);
+    return n.points + (s.sweep->maximize.empty() ? 0 : s.sweep->refineRounds * n.refined);
+}
+
 // A sweep's grid, and with `maximize` its search's finer rounds (sweep/optimizer.h's maximize()).
 void addSweepParts(const TraceSettings& t, const SweepRequest& sweep, const CostRates& rates,
                    std::vector<CostPart>& parts) {
     const TraceSettings usual;
-    double points = 1, refined = 1;
     const OptimizeSettings search;
-    for (const SweepAxis& axis : sweep.axes) {
-        points *= double(axis.size());
-        refined *= axis.size() > 1 ? 2 * search.refineSteps + 1 : 1;
-    }
+    const auto [points, refined] = sweepGridSize(sweep);
     const double point = traceSeconds(t, t.photons, rates) + viewerSeconds(t, rates);
     // The reference stone the viewer figures are scored against is traced once.
     parts.push_back(
@@ -148,18 +165,20 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                          3 * px * rates.asetRay});
     }
     if (s.colour) {
-        // Each pixel `samples` paths, each a view ray at every one of `wavelengths`, at the ASET view's rate.
+        // Each pixel `samples` paths, each a view ray at every one of `wavelengths`, at the ASET view's rate;
+        // in a sweep, at every point.
         const ColourSettings& c = *s.colour;
         const ColourSettings usual;
+        const double views = colourViews(s);
         const double px = double(c.pictureSize) * double(c.pictureSize);
         parts.push_back(
             {"colour",
              costliest({{"colour.picture_size", px, double(usual.pictureSize) * usual.pictureSize},
                         {"colour.samples", double(c.samples), double(usual.samples)},
                         {"colour.wavelengths", double(c.wavelengths), double(usual.wavelengths)}}),
-             count(px) + " pixels x " + std::to_string(c.samples) + " paths x " +
-                 std::to_string(c.wavelengths) + " wavelengths",
-             px * c.samples * c.wavelengths * rates.asetRay});
+             (views > 1 ? count(views) + " views x " : "") + count(px) + " pixels x " +
+                 std::to_string(c.samples) + " paths x " + std::to_string(c.wavelengths) + " wavelengths",
+             views * px * c.samples * c.wavelengths * rates.asetRay});
     }
     if (s.render) {
         const RenderSettings& r = *s.render;

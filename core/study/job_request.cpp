@@ -84,7 +84,8 @@ JobRequest JobRequest::fromJson(const nlohmann::json& j, JobRequest spec) {
         spec.settings.sweep = sweepRequestSchema().read(*s, "sweep");
         if (!s->contains("figure")) spec.settings.sweep->figures = {defaultSweepFigure(spec.settings.trace)};
         if (spec.settings.render) throw Error("render", "a sweep makes no render: set render to false");
-        if (isLibraryShape(spec.mesh)) planSweep(spec.mesh, *spec.settings.sweep, spec.settings.trace);
+        if (isLibraryShape(spec.mesh))
+            planSweep(spec.mesh, *spec.settings.sweep, spec.settings.trace, spec.settings.colour);
     }
     return spec;
 }

@@ -79,8 +79,8 @@ StudyResult runSweepJob(const std::string& shape, const StudySettings& settings,
                         Communicator& comm, const SweepCheckpoint& checkpoint) {
     if (!settings.sweep) throw Error("sweep", "the job is not a sweep");
     const SweepRequest& request = *settings.sweep;
-    const SweepOutputs out =
-        runSweepRequest(planSweepOf(shape, request, settings.trace), request, control, comm, checkpoint);
+    const SweepOutputs out = runSweepRequest(planSweepOf(shape, request, settings.trace, settings.colour),
+                                             request, control, comm, checkpoint);
     StudyResult result;
     if (!comm.isRoot()) return result;
     result.file("sweep.json") = out.json();

@@ -39,7 +39,8 @@ struct StudySettings {
     // (docs/optics.md, "The doubling"): doubling.png and stats "doubling".
     std::optional<DoublingSettings> doubling;
     // The stone face-up in true colour under a dome of a CIE illuminant, absorbing along every path inside
-    // (docs/optics.md, "The colour a viewer sees"): colour.png and stats "colour".
+    // (docs/optics.md, "The colour a viewer sees"): colour.png and stats "colour"; in a sweep, every point's
+    // colour figures.
     std::optional<ColourSettings> colour;
     // A sweep of the job's shape (docs/sweeps.md) instead of one trace: runSweepJob, not runStudy.
     std::optional<SweepRequest> sweep;

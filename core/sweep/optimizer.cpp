@@ -140,7 +140,7 @@ GridObjective sweepObjective(const SweepPlan& base, const std::string& figure,
                              const std::vector<SweepConstraint>& constraints, RunControl& control,
                              std::vector<SweepResult>& rounds, Communicator& comm,
                              const SweepRoundHooks& hooks) {
-    checkSweepFigure(figure, base.trace);
+    checkSweepFigure(figure, base.trace, base.colour.has_value());
     return [base, figure, constraints, &control, &rounds, &comm, hooks](const std::vector<SweepAxis>& axes,
                                                                         uint64_t photons) {
         SweepPlan plan = base;

@@ -21,13 +21,14 @@ nlohmann::json sweepPointJson(const SweepPlan& plan, const SweepPoint& p) {
         point["totals"] = p.totals;
         if (p.trace.fire.enabled) point["fire"] = p.fire;
         if (p.trace.viewer.enabled) point["viewer"] = p.viewer;
+        if (plan.colour) point["colour"] = p.colour;
     } else {
         point["error"] = p.error;
     }
     return point;
 }
 
-void restoreSweepPoint(const nlohmann::json& j, SweepPoint& point) {
+void restoreSweepPoint(const SweepPlan& plan, const nlohmann::json& j, SweepPoint& point) {
     if (!j.is_object() || j.value("at", nlohmann::json()) != nlohmann::json(point.at))
         throw Error("a stored sweep point does not belong to this grid");
     if (j.contains("error")) {
@@ -39,11 +40,14 @@ void restoreSweepPoint(const nlohmann::json& j, SweepPoint& point) {
         throw Error("a stored sweep point has no fire figures, and the sweep traces fire");
     if (point.trace.viewer.enabled && !j.contains("viewer"))
         throw Error("a stored sweep point has no viewer figures, and the sweep has the viewer on");
+    if (plan.colour && !j.contains("colour"))
+        throw Error("a stored sweep point has no colour figures, and the sweep has the colour view");
     point.error.clear();
     point.proportions = j.at("proportions");
     point.totals = j.at("totals");
     if (point.trace.fire.enabled) point.fire = j.at("fire");
     if (point.trace.viewer.enabled) point.viewer = j.at("viewer");
+    if (plan.colour) point.colour = j.at("colour");
 }
 
 nlohmann::json sweepAxesJson(const SweepPlan& plan) {
@@ -71,16 +75,19 @@ nlohmann::json sweepToJson(const SweepResult& result) {
     }
     nlohmann::json points = nlohmann::json::array();
     for (const SweepPoint& p : result.points) points.push_back(sweepPointJson(plan, p));
-    return {{"shape", plan.shape},
-            {"fixed", fixed},
-            {"settings", toJson(plan.trace)},
-            {"axes", sweepAxesJson(plan)},
-            {"figures", sweepFigureNames(plan.trace)},
-            {"points", points},
-            {"timing",
-             {{"seconds", result.seconds},
-              {"points_per_second", result.seconds > 0 ? double(result.points.size()) / result.seconds : 0.0},
-              {"threads", plan.trace.threads}}}};
+    nlohmann::json out = {
+        {"shape", plan.shape},
+        {"fixed", fixed},
+        {"settings", toJson(plan.trace)},
+        {"axes", sweepAxesJson(plan)},
+        {"figures", sweepFigureNames(plan.trace, plan.colour.has_value())},
+        {"points", points},
+        {"timing",
+         {{"seconds", result.seconds},
+          {"points_per_second", result.seconds > 0 ? double(result.points.size()) / result.seconds : 0.0},
+          {"threads", plan.trace.threads}}}};
+    if (plan.colour) out["colour"] = colourSettingsSchema().write(*plan.colour);
+    return out;
 }
 
 std::string sweepCsv(const SweepResult& result) {
@@ -91,7 +98,7 @@ std::string sweepCsv(const SweepResult& result) {
     for (const SweepAxis& a : plan.axes) out << a.name << ',';
     for (const std::string& d : depths) out << d << ',';
     out << "hit";
-    const std::vector<std::string> figures = sweepFigureNames(plan.trace);
+    const std::vector<std::string> figures = sweepFigureNames(plan.trace, plan.colour.has_value());
     for (const std::string& f : figures) out << ',' << f << ',' << f << "_stderr";
     out << ",error\n";
     for (const SweepPoint& p : result.points) {

@@ -1,7 +1,9 @@
 #include "sweep/sweep_pictures.h"
 
+#include <algorithm>
 #include <cstdio>
 
+#include "cuts/facet_design.h"
 #include "pictures/sweep_plot.h"
 #include "sweep/sweep_figures.h"
 #include "sweep/sweep_references.h"
@@ -13,7 +15,35 @@ namespace {
 
 PlotAxis plotAxis(const SweepPlan& plan, const SweepAxis& axis) {
     const std::string unit = plan.unit(axis);
-    return {spacedName(axis.name) + (unit.empty() ? "" : " (" + unit + ")"), axis.values, axis.choices};
+    // "size (mm)", not "size mm (mm)".
+    const std::string name = !unit.empty() && axis.name.ends_with("_" + unit)
+                                 ? axis.name.substr(0, axis.name.size() - unit.size() - 1)
+                                 : axis.name;
+    return {spacedName(name) + (unit.empty() ? "" : " (" + unit + ")"), axis.values, axis.choices};
+}
+
+// The y axis's name: what the figures drawn on it are, each kind named once.
+std::string yAxisLabel(const std::vector<std::string>& figures) {
+    struct Kind {
+        std::string alone, together;
+        bool present = false;
+    };
+    Kind kinds[] = {{"share of the photons hitting the stone", "share of the hits"},
+                    {"share of the face-up area", "share of the face-up area"},
+                    {"degrees", "mean separation in degrees"},
+                    {"CIELAB units", "L*, a*, b*, C*ab in CIELAB units"}};
+    const auto& colour = sweepColourFigureNames();
+    for (const std::string& f : figures) {
+        const std::string unit = sweepFigureUnit(f);
+        const bool colourFigure = std::find(colour.begin(), colour.end(), f) != colour.end();
+        kinds[unit == "deg" ? 2 : unit == "CIELAB" ? 3 : colourFigure ? 1 : 0].present = true;
+    }
+    std::string label;
+    size_t count = 0;
+    for (const Kind& k : kinds) count += k.present;
+    for (const Kind& k : kinds)
+        if (k.present) label += (label.empty() ? "" : "; ") + (count == 1 ? k.alone : k.together);
+    return label;
 }
 
 // The axes that take more than one value.
@@ -25,7 +55,7 @@ std::vector<size_t> variedAxes(const SweepPlan& plan) {
 }
 
 PlotSeries figureSeries(const SweepResult& result, const std::string& figure) {
-    checkSweepFigure(figure, result.plan.trace);
+    checkSweepFigure(figure, result.plan.trace, result.plan.colour.has_value());
     PlotSeries s{spacedName(figure), {}, {}, {}};
     for (const SweepPoint& p : result.points) {
         s.valid.push_back(p.ok());
@@ -44,8 +74,20 @@ std::string settingsLine(const SweepResult& result) {
         std::snprintf(text, sizeof text, "%s %g", spacedName(name).c_str(), value);
         held += std::string(held.empty() ? " with " : ", ") + text;
     }
+    // With the colour view: its illuminant, and the material and size where no axis varies them.
+    std::string colour;
+    if (const std::optional<ColourSettings>& c = result.plan.colour) {
+        const auto varied = [&](const char* name) {
+            return std::any_of(result.plan.axes.begin(), result.plan.axes.end(),
+                               [&](const SweepAxis& a) { return a.name == name; });
+        };
+        colour = "; colour under " + std::string(kIlluminantNames.name(c->illuminant));
+        if (!varied("material") && !varied("n"))
+            colour += ", " + (t.constantIndex ? "n " + formatNumber(*t.constantIndex) : t.material);
+        if (!varied("size_mm")) colour += " at " + formatNumber(t.sizeMm) + " mm";
+    }
     return result.plan.shape + held + "; " + std::string(kLightModelNames.name(t.light.model)) + " light, " +
-           std::to_string(t.photons) + " photons a point";
+           std::to_string(t.photons) + " photons a point" + colour;
 }
 
 // "; highest brightness 0.4110 +- 0.0021 at pavilion 41.75", for the curves' title.
@@ -62,7 +104,7 @@ std::string highestText(const SweepResult& result, const std::string& figure, co
 }  // namespace
 
 std::optional<size_t> highestPoint(const SweepResult& result, const std::string& figure) {
-    checkSweepFigure(figure, result.plan.trace);
+    checkSweepFigure(figure, result.plan.trace, result.plan.colour.has_value());
     std::optional<size_t> best;
     for (size_t k = 0; k < result.points.size(); ++k) {
         const SweepPoint& p = result.points[k];
@@ -83,13 +125,9 @@ Image sweepCurves(const SweepResult& result, const std::vector<std::string>& fig
     const SweepAxis& axis = result.plan.axes[varied.empty() ? 0 : varied[0]];
     std::vector<PlotSeries> series;
     for (const std::string& f : figures) series.push_back(figureSeries(result, f));
-    // One y axis: the mean separation's degrees share it with the shares (both below 1 or so), named apart.
-    size_t angles = 0;
-    for (const std::string& f : figures) angles += sweepFigureUnit(f) == "deg";
-    const std::string yLabel = angles == 0                ? "share of the photons hitting the stone"
-                               : angles == figures.size() ? "degrees"
-                                                          : "share of the hits; mean separation in degrees";
-    return seriesPlot(plotAxis(result.plan, axis), series, yLabel, sweepCurvesTitle(result, figures));
+    // One y axis for every figure drawn, its label naming each kind.
+    return seriesPlot(plotAxis(result.plan, axis), series, yAxisLabel(figures),
+                      sweepCurvesTitle(result, figures));
 }
 
 Image sweepMap(const SweepResult& result, const std::string& figure) {
@@ -114,7 +152,8 @@ Image sweepMap(const SweepResult& result, const std::string& figure) {
 
 std::vector<std::pair<std::string, Image>> sweepPictures(const SweepResult& result,
                                                          const std::vector<std::string>& figures) {
-    for (const std::string& f : figures) checkSweepFigure(f, result.plan.trace);
+    for (const std::string& f : figures)
+        checkSweepFigure(f, result.plan.trace, result.plan.colour.has_value());
     std::vector<std::pair<std::string, Image>> out;
     if (variedAxes(result.plan).size() < 2) {
         out.emplace_back("curves.png", sweepCurves(result, figures));

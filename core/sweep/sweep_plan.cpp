@@ -22,6 +22,8 @@ void applyAxis(const SweepAxis& axis, size_t i, CutValues& cut, TraceSettings& t
         trace.light.headShadowDeg = axis.values[i];
     } else if (axis.name == "n") {
         trace.constantIndex = axis.values[i];
+    } else if (axis.name == "size_mm") {
+        trace.sizeMm = axis.values[i];
     } else if (axis.name == "material") {
         trace.material = axis.choices[i];
         trace.customMaterial.reset();  // the axis names each point's material in place of the job's own
@@ -44,6 +46,7 @@ size_t SweepPlan::pointCount() const {
 
 std::string SweepPlan::unit(const SweepAxis& axis) const {
     if (axis.name == "tilt" || axis.name == "head_shadow") return "deg";
+    if (axis.name == "size_mm") return "mm";
     if (isTraceAxis(axis.name)) return "";
     for (const CutParameter& p : cutShape().parameters)
         if (p.name == axis.name) return p.unit;

@@ -1,9 +1,10 @@
 #pragma once
 // A sweep: one shape of the cut library traced over a grid of one or two of its parameters (or of trace
-// settings: tilt, head shadow, material, light). Every point is an ordinary trace with the sweep's seed, so
-// neighbouring points share their random numbers (docs/sweeps.md) and a point equals a single trace of the
-// same design bit for bit.
+// settings: tilt, head shadow, material, light, n, size). Every point is an ordinary trace with the sweep's
+// seed, so neighbouring points share their random numbers (docs/sweeps.md) and a point equals a single trace
+// of the same design bit for bit.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "stats/facet_stats.h"
 #include "sweep/sweep_axis.h"
 #include "trace/trace_settings.h"
+#include "viewer/colour_view.h"
 
 namespace facetlight {
 
@@ -26,6 +28,8 @@ struct SweepPlan {
     CutValues fixed;  // the shape's other parameters; defaults for those not given
     std::vector<SweepAxis> axes;
     TraceSettings trace;  // every point's settings; `threads` is the whole sweep's worker count
+    // With the colour view: every point's face-up colour (a job's `colour`), for the colour figures.
+    std::optional<ColourSettings> colour;
 
     // Throws Error naming the fault: an unknown shape, parameter or axis, an axis given twice, a value
     // outside its parameter's range, no axis or more than kMaxSweepAxes, more than kMaxSweepPoints points.
@@ -33,7 +37,7 @@ struct SweepPlan {
     // The shape swept: `file`'s, else the library's shape of that name.
     const CutShape& cutShape() const { return file ? file->shape : findCutShape(shape); }
     size_t pointCount() const;
-    // The unit of an axis: the parameter's ("deg", "%", ""), "deg" for tilt and head shadow.
+    // The unit of an axis: the parameter's ("deg", "%", ""), "deg" for tilt and head shadow, "mm" for size.
     std::string unit(const SweepAxis& axis) const;
 };
 
@@ -49,15 +53,20 @@ struct SweepPoint {
     nlohmann::json fire;  // with fire enabled, the fire figures of the statistics' `fire` and their errors
     // With the viewer on, the viewer figures and the score, each with its `_stderr`.
     nlohmann::json viewer;
+    nlohmann::json colour;  // with the colour view, the colour figures (sweepColourFigures)
 
     bool ok() const { return error.empty(); }
     double figure(const std::string& name) const { return figures(name).at(name).get<double>(); }
     double stderrOf(const std::string& name) const {
         return figures(name).at(name + "_stderr").get<double>();
     }
-    // The member holding `name`: `totals`, `viewer` for a viewer figure, or `fire` for a fire figure.
+    // The member holding `name`: `totals`, `viewer` for a viewer figure, `colour` for a colour figure, or
+    // `fire` for a fire figure.
     const nlohmann::json& figures(const std::string& name) const {
-        return totals.contains(name) ? totals : viewer.contains(name) ? viewer : fire;
+        return totals.contains(name)   ? totals
+               : viewer.contains(name) ? viewer
+               : colour.contains(name) ? colour
+                                       : fire;
     }
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "optics/material.h"
 #include "sweep/optimizer.h"
 #include "sweep/sweep_figures.h"
 #include "util/error.h"
@@ -168,6 +169,42 @@ const settings::Schema<SweepRequest>& sweepRequestSchema() {
 
 namespace {
 
+// Whether a point with these settings absorbs: a job's spectrum, else its named material's (an `n`, "auto"
+// and a design file's index name no coloured material).
+bool absorbs(const TraceSettings& t) {
+    if (t.absorption) return t.absorption->absorbs();
+    if (t.constantIndex || t.material == "auto") return false;
+    const Material material = Material::byName(t.material);
+    return material.absorption() && material.absorption()->absorbs();
+}
+
+// With the colour view: it sees the stone face-up under a dome of its own, so the light's axes change none of
+// its figures; and its figures measure absorption, so some point must absorb.
+void checkColourPlan(const SweepPlan& plan) {
+    if (!plan.colour) return;
+    for (size_t i = 0; i < plan.axes.size(); ++i) {
+        const std::string& name = plan.axes[i].name;
+        if (name == "tilt" || name == "head_shadow" || name == "light") {
+            const std::string at = itemPath("sweep.axes", i);
+            throw Error(at, at + ": the colour view sees the stone face-up under a dome of its own, so " +
+                                name + " changes none of the colour figures; sweep " + name + " without it");
+        }
+    }
+    const std::vector<SweepPoint> points = sweepPoints(plan);
+    if (std::none_of(points.begin(), points.end(), [](const SweepPoint& p) { return absorbs(p.trace); })) {
+        const TraceSettings& t = plan.trace;
+        const std::string what = t.constantIndex ? "a constant n"
+                                 : t.material == "auto"
+                                     ? "the material auto, diamond or a design's own index,"
+                                     : "the material " + t.material;
+        throw Error(
+            "material",
+            "the colour figures measure absorption, and no point of the sweep absorbs (" + what +
+                " is clear): choose a coloured material (blue_sapphire, emerald, ...: docs/optics.md, "
+                "\"Coloured materials\") or give an absorption spectrum");
+    }
+}
+
 // Checks `plan` (its shape already found) against the request, naming the field at fault.
 SweepPlan checkedPlan(SweepPlan plan, const SweepRequest& request, const TraceSettings& trace) {
     try {
@@ -192,48 +229,51 @@ SweepPlan checkedPlan(SweepPlan plan, const SweepRequest& request, const TraceSe
     } catch (const Error& e) {
         throw Error("sweep.axes", e.what());
     }
-    checkSweepFigures(request, trace);
+    checkColourPlan(plan);
+    checkSweepFigures(request, trace, plan.colour.has_value());
     return plan;
 }
 
 }  // namespace
 
-SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace) {
+SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace,
+                    const std::optional<ColourSettings>& colour) {
     try {
         findCutShape(shape);
     } catch (const Error& e) {
         throw Error("mesh", e.what());
     }
-    return checkedPlan({shape, nullptr, request.set, request.axes, trace}, request, trace);
+    return checkedPlan({shape, nullptr, request.set, request.axes, trace, colour}, request, trace);
 }
 
 bool isLibraryShape(const std::string& name) {
     return std::any_of(cutShapes().begin(), cutShapes().end(), [&](const CutShape& s) { return s.name == name; });
 }
 
-SweepPlan planSweepOf(const std::string& shapeOrPath, const SweepRequest& request, const TraceSettings& trace) {
+SweepPlan planSweepOf(const std::string& shapeOrPath, const SweepRequest& request, const TraceSettings& trace,
+                      const std::optional<ColourSettings>& colour) {
     if (isLibraryShape(shapeOrPath) || !std::filesystem::exists(shapeOrPath))
-        return planSweep(shapeOrPath, request, trace);
+        return planSweep(shapeOrPath, request, trace, colour);
     std::shared_ptr<const FileShape> file;
     try {
         file = fileShape(shapeOrPath);
     } catch (const Error& e) {
         throw Error("mesh", e.what());
     }
-    return planSweep(std::move(file), request, trace);
+    return planSweep(std::move(file), request, trace, colour);
 }
 
 SweepPlan planSweep(std::shared_ptr<const FileShape> file, const SweepRequest& request,
-                    const TraceSettings& trace) {
+                    const TraceSettings& trace, const std::optional<ColourSettings>& colour) {
     const std::string name = file->shape.name;
-    return checkedPlan({name, std::move(file), request.set, request.axes, trace}, request, trace);
+    return checkedPlan({name, std::move(file), request.set, request.axes, trace, colour}, request, trace);
 }
 
-void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace,
+void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace, bool colour,
                        const SweepFigureFields& fields) {
     const auto check = [&](const std::string& name, const std::string& field) {
         try {
-            checkSweepFigure(name, trace);
+            checkSweepFigure(name, trace, colour);
         } catch (const Error& e) {
             throw Error(field, field + ": " + e.what());
         }

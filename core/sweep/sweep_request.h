@@ -2,6 +2,7 @@
 // A sweep as a job asks for it (docs/sweeps.md): the `sweep` object of the one job format
 // (study/job_request.h), read through its settings table, and the checked plan made from it.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,15 +37,19 @@ inline nlohmann::json toJson(const SweepRequest& r) {
     return sweepRequestSchema().write(r);
 }
 
-// The plan of the sweep of `shape` the request asks for, with every point's trace settings; checked, throwing
-// Error naming the field ("mesh" for a shape the cut library lacks, "sweep.axes[1]", "sweep.set", ...).
-SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace);
+// The plan of the sweep of `shape` the request asks for, with every point's trace settings and, with
+// `colour` (the job's colour view), every point's colour figures; checked, throwing Error naming the field
+// ("mesh" for a shape the cut library lacks, "sweep.axes[1]", "sweep.set", "material" for a colour view with
+// no absorbing point, ...).
+SweepPlan planSweep(const std::string& shape, const SweepRequest& request, const TraceSettings& trace,
+                    const std::optional<ColourSettings>& colour);
 // The same for a design or mesh file (cuts/design_shape.h): a GemCad design's tiers are its parameters.
 SweepPlan planSweep(std::shared_ptr<const FileShape> file, const SweepRequest& request,
-                    const TraceSettings& trace);
+                    const TraceSettings& trace, const std::optional<ColourSettings>& colour);
 // A shape of the cut library by name, else a design or mesh file by path (trusted callers only: the CLI, and
 // the service once its catalog has turned a job's mesh into a path). Errors name the field as planSweep's.
-SweepPlan planSweepOf(const std::string& shapeOrPath, const SweepRequest& request, const TraceSettings& trace);
+SweepPlan planSweepOf(const std::string& shapeOrPath, const SweepRequest& request, const TraceSettings& trace,
+                      const std::optional<ColourSettings>& colour);
 bool isLibraryShape(const std::string& name);
 
 // What a request's figures are called in its errors: the job's fields, or the CLI's options.
@@ -53,8 +58,9 @@ struct SweepFigureFields {
     bool indexed = true;  // constraints[i]
 };
 // Throws Error naming the field when a figure the request draws, maximizes or constrains is not one, or is a
-// fire figure and `trace` does not enable fire.
-void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace,
+// viewer, fire or colour figure and `trace` turns the viewer or fire off or there is no colour view
+// (`colour`).
+void checkSweepFigures(const SweepRequest& request, const TraceSettings& trace, bool colour,
                        const SweepFigureFields& fields = {});
 
 }  // namespace facetlight

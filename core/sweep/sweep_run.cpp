@@ -65,12 +65,13 @@ SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPoin
         const nlohmann::json restored = nlohmann::json::parse(restoredText);
         for (const auto& [key, j] : restored.items()) {
             const size_t k = std::stoul(key);
-            // A point kept by a build that reported no fire or viewer figures is traced again.
+            // A point kept by a build that reported no fire, viewer or colour figures is traced again.
             const TraceSettings& t = result.points.at(k).trace;
-            if (j.contains("totals") && ((t.fire.enabled && !j.contains("fire")) ||
-                                         (t.viewer.enabled && !j.contains("viewer"))))
+            if (j.contains("totals") &&
+                ((t.fire.enabled && !j.contains("fire")) || (t.viewer.enabled && !j.contains("viewer")) ||
+                 (plan.colour && !j.contains("colour"))))
                 continue;
-            restoreSweepPoint(j, result.points.at(k));
+            restoreSweepPoint(plan, j, result.points.at(k));
             pending[k] = false;
         }
     }
@@ -106,9 +107,11 @@ SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPoin
     // The reference the points' scores compare with, once, on every thread (not counted as progress).
     if (plan.trace.viewer.enabled) referenceFigures(plan.trace);
     // Several points at once; the threads left over trace within each (a trace's bits do not depend on them).
-    // Progress counts photons and view rays, so that a cancel stops a point within a block of them.
+    // Progress counts photons, view rays and colour pixels, so that a cancel stops a point within a block of
+    // them.
     const uint64_t pointUnits =
-        plan.trace.photons + (plan.trace.viewer.enabled ? viewerUnits(plan.trace.viewer) : 0);
+        plan.trace.photons + (plan.trace.viewer.enabled ? viewerUnits(plan.trace.viewer) : 0) +
+        (plan.colour ? uint64_t(plan.colour->pictureSize) * uint64_t(plan.colour->pictureSize) : 0);
     control.startPhase(RunPhase::Tracing, mine.size() * pointUnits);
     for (size_t k = 0; k < count; ++k)
         if (!pending[k]) control.finishItem();
@@ -141,6 +144,12 @@ SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPoin
                         p.viewer = sweepViewerFigures(*stone, settings, &control);
                         if (p.viewer.is_null()) return uint64_t(0);
                     }
+                    // The colour view at the point's size and material, as a render's --colour sees it.
+                    if (plan.colour) {
+                        const ColourView view = colourView(*stone, settings, *plan.colour, &control);
+                        if (view.cancelled) return uint64_t(0);
+                        p.colour = sweepColourFigures(view);
+                    }
                 } catch (const Error& e) {
                     p.error = e.what();
                 }
@@ -161,7 +170,7 @@ SweepResult runSweep(const SweepPlan& plan, RunControl& control, const SweepPoin
             for (const auto& [key, j] : points.items()) {
                 const size_t k = std::stoul(key);
                 if (k % size_t(comm.size()) == size_t(comm.rank())) continue;
-                restoreSweepPoint(j, result.points.at(k));
+                restoreSweepPoint(plan, j, result.points.at(k));
                 if (comm.isRoot() && hooks.onPoint) hooks.onPoint(k, result.points[k]);
             }
         }

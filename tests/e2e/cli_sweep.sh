@@ -37,6 +37,19 @@ grep -q '"mean_separation_deg_stderr"' "$dir/fire/sweep.json"
 grep -q '"figure": "coloured_return_weighted"' "$dir/fire/best.json"
 test -s "$dir/fire/curves.png"
 
+# With --colour every point carries its colour figures; a size axis darkens an absorbing stone.
+"$tool" sweep round_brilliant --material blue_sapphire --vary size_mm=3,12 --colour --colour-picture 24 \
+  --colour-samples 1 --colour-wavelengths 4 --no-view --photons 200 --threads 2 --figure colour_lightness \
+  --out "$dir/colour" >/dev/null
+head -1 "$dir/colour/sweep.csv" | grep -q '^size_mm,.*,colour_lightness,colour_lightness_stderr,'
+test -s "$dir/colour/curves.png"
+python3 - "$dir/colour/sweep.json" <<'PY'
+import json, sys
+points = json.load(open(sys.argv[1]))["points"]
+small, large = (p["colour"]["colour_lightness"] for p in points)
+assert large < small, (small, large)
+PY
+
 # A real GemCad design's tiers (issue 27): GemCad's own standard round brilliant for quartz. A search over two
 # tiers writes best.asc, which opens again with the design's 73 facets and the searched tier's slope measured
 # back.
@@ -83,6 +96,14 @@ fails "^facetlight: .*--maximise; did you mean '--maximize'?" round_brilliant --
 fails "maximize: the figure coloured_share is measured by a fire trace" round_brilliant --vary pavilion=40,41 \
   --maximize coloured_share
 fails "figure: .*turn it on (--fire" round_brilliant --vary pavilion=40,41 --figure mean_separation_deg
+fails "figure: .*colour view, which is off: turn it on (--colour" round_brilliant --vary size_mm=3,6 \
+  --material emerald --figure colour_lightness
+fails "no point of the sweep absorbs (the material diamond is clear)" round_brilliant --vary size_mm=3,6 --colour \
+  --material diamond
+fails "no point of the sweep absorbs (the material auto, diamond or a design's own index, is clear)" \
+  round_brilliant --vary size_mm=3,6 --colour
+fails "sweep.axes\[0\]: the colour view sees the stone face-up" round_brilliant --vary tilt=0,10 --colour \
+  --material emerald
 fails "SRB has no parameter 'tier:P9'" "$design" --vary tier:1=40,41 --set tier:P9=30
 fails "neither a parameter of SRB" "$design" --vary tier:X=40,41
 echo "cli sweep: ok"

@@ -1356,7 +1356,8 @@ TEST_F(ServiceTest, SweepWithFireReportsFireAtEveryPoint) {
     const json points = getJson(done["links"]["points"]);
     EXPECT_EQ(points["figures"], sweep["figures"]);
     EXPECT_EQ(points["points"], sweep["points"]);
-    EXPECT_EQ(sweep["figures"], json(sweepFigureNames()));
+    // Every figure but the colour view's.
+    EXPECT_EQ(sweep["figures"].size(), sweepFigureNames().size() - sweepColourFigureNames().size());
     for (const json& p : sweep["points"]) {
         EXPECT_GT(p["fire"]["coloured_share"].get<double>(), 0) << p.dump();
         EXPECT_GT(p["fire"]["mean_separation_deg_stderr"].get<double>(), 0) << p.dump();
@@ -1365,6 +1366,50 @@ TEST_F(ServiceTest, SweepWithFireReportsFireAtEveryPoint) {
     ASSERT_TRUE(csv);
     EXPECT_NE(csv->body.find(",mean_separation_deg,mean_separation_deg_stderr,"), std::string::npos);
     EXPECT_EQ(getJson(done["links"]["best"])["figure"], "coloured_share");
+}
+
+// With the job's colour object, a sweep over size carries the colour figures at every point, in sweep.json,
+// the points the chart polls and sweep.csv (each with its error column); without it, or with no absorbing
+// material, or along an axis the colour view does not see, the job is refused naming the field.
+TEST_F(ServiceTest, SweepWithColourReportsTheColourFigures) {
+    json job = {
+        {"mesh", "round_brilliant"},
+        {"photons", 200},
+        {"threads", 2},
+        {"material", "blue_sapphire"},
+        {"viewer", {{"enabled", false}}},
+        {"colour", {{"picture_size", 16}, {"samples", 1}, {"wavelengths", 4}}},
+        {"sweep", {{"axes", {{{"name", "size_mm"}, {"values", {3, 12}}}}}, {"figure", "colour_lightness"}}}};
+    const json done = waitFinished(submitOk(job));
+    ASSERT_EQ(done["state"], "succeeded") << done.dump();
+    const json sweep = getJson(done["links"]["sweep"]);
+    EXPECT_EQ(getJson(done["links"]["points"])["figures"], sweep["figures"]);
+    EXPECT_EQ(sweep["colour"]["picture_size"], 16);
+    ASSERT_EQ(sweep["points"].size(), 2u);
+    for (const json& p : sweep["points"])
+        for (const std::string& f : sweepColourFigureNames()) {
+            EXPECT_TRUE(p["colour"][f].is_number()) << p.dump();
+            EXPECT_TRUE(p["colour"][f + "_stderr"].is_number()) << p.dump();
+        }
+    EXPECT_LT(sweep["points"][1]["colour"]["colour_lightness"].get<double>(),
+              sweep["points"][0]["colour"]["colour_lightness"].get<double>());  // a larger stone is darker
+    auto csv = client_->Get(done["links"]["sweep_csv"].get<std::string>());
+    ASSERT_TRUE(csv);
+    EXPECT_NE(csv->body.find("size_mm,"), std::string::npos);
+    EXPECT_NE(csv->body.find(",colour_lightness,colour_lightness_stderr,"), std::string::npos);
+
+    json bad = job;
+    bad.erase("colour");
+    expectProblem(submit(bad), 422, "sweep.figure");  // a colour figure without the colour view
+    bad = job;
+    bad["material"] = "quartz";
+    expectProblem(submit(bad), 422, "material");  // nothing absorbs
+    bad = job;
+    bad["sweep"]["axes"] = {{{"name", "tilt"}, {"values", {0, 10}}}};
+    expectProblem(submit(bad), 422, "sweep.axes[0]");  // the colour view has its own light
+    bad = job;
+    bad["colour"]["wavelengths"] = 1;
+    expectProblem(submit(bad), 422, "colour.wavelengths");
 }
 
 // A sweep stopped with the service keeps the points it finished, resumes from them after the restart (they

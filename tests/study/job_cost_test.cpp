@@ -159,6 +159,12 @@ TEST(JobCost, TheColourViewCostsItsRaysAPixel) {
     EXPECT_EQ(cost.largest().name, "colour");
     EXPECT_EQ(cost.largest().field, "colour.picture_size");
     EXPECT_NEAR(partSeconds(cost, "colour"), 1000.0 * 1000.0 * 8 * 20 * 1e-6 * kCostSafetyFactor, 1e-9);
+
+    // A sweep sees every point in colour.
+    s.sweep = SweepRequest{};
+    s.sweep->axes = {parseSweepAxis("size_mm=3:12:1")};
+    const JobCost sweep = estimateJobCost(s, unitRates(), 1);
+    EXPECT_NEAR(partSeconds(sweep, "colour"), 10 * 1000.0 * 1000.0 * 8 * 20 * 1e-6 * kCostSafetyFactor, 1e-9);
 }
 
 // The detail of a refused job names its largest part, its size and the field that makes it large.

@@ -213,7 +213,7 @@ TEST(Sweep, ResumedFromKeptPointsGivesTheSameBits) {
     EXPECT_EQ(sweepToJson(result)["points"].dump(), expected.dump());
 
     SweepPoint other = sweepPoints(plan)[1];
-    EXPECT_THROW(restoreSweepPoint(kept[0], other), Error);  // a point of another place in the grid
+    EXPECT_THROW(restoreSweepPoint(plan, kept[0], other), Error);  // a point of another place in the grid
 }
 
 // With fire on, every point carries the fire figures of a single fire trace of its design, bit for bit, in
@@ -229,7 +229,9 @@ TEST(Sweep, FireFiguresAtEveryPointAndResumed) {
     const SweepResult result = runSweep(plan, whole, keep);
     const nlohmann::json j = sweepToJson(result);
     const std::vector<std::string> figures = j["figures"];
-    EXPECT_EQ(figures, sweepFigureNames());  // the plain figures, then the fire ones
+    EXPECT_EQ(figures, sweepFigureNames(plan.trace, false));
+    // The viewer's, the plain figures, then the fire ones: all but the colour view's.
+    EXPECT_EQ(figures.size(), sweepFigureNames().size() - sweepColourFigureNames().size());
     for (const nlohmann::json& point : j["points"])
         for (const std::string& f : sweepFireFigureNames()) {
             EXPECT_TRUE(point["fire"][f].is_number()) << f;
@@ -265,21 +267,22 @@ TEST(Sweep, FireFiguresAtEveryPointAndResumed) {
     const SweepResult dark = runSweep(plan, plain);
     const nlohmann::json d = sweepToJson(dark);
     EXPECT_FALSE(d["points"][0].contains("fire"));
-    EXPECT_EQ(d["figures"], nlohmann::json(sweepFigureNames(plan.trace)));
-    EXPECT_EQ(d["figures"].size(), sweepFigureNames().size() - sweepFireFigureNames().size());
+    EXPECT_EQ(d["figures"], nlohmann::json(sweepFigureNames(plan.trace, false)));
+    EXPECT_EQ(d["figures"].size(),
+              sweepFigureNames().size() - sweepFireFigureNames().size() - sweepColourFigureNames().size());
     EXPECT_EQ(sweepCsv(dark).find("coloured"), std::string::npos);
 }
 
 TEST(Sweep, FireFiguresNeedTheFireTrace) {
     TraceSettings trace;
-    EXPECT_NO_THROW(checkSweepFigure("weighted_return", trace));
+    EXPECT_NO_THROW(checkSweepFigure("weighted_return", trace, false));
     try {
-        checkSweepFigure("coloured_share", trace);
+        checkSweepFigure("coloured_share", trace, false);
         ADD_FAILURE() << "a fire figure without fire";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("--fire"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(checkSweepFigure("sparkle", trace), Error);
+    EXPECT_THROW(checkSweepFigure("sparkle", trace, false), Error);
     trace.fire.enabled = true;
-    EXPECT_NO_THROW(checkSweepFigure("coloured_share", trace));
+    EXPECT_NO_THROW(checkSweepFigure("coloured_share", trace, false));
 }

@@ -22,19 +22,33 @@ const H = 400;
 // The right margin holds the legend: room for the longest figure's name ("cosine-weighted return").
 const M = { left: 70, right: 210, top: 20, bottom: 56 };
 
-// The viewer's figures, the statistics' totals, then the fire figures (points of a sweep that traces fire).
-const SWEEP_FIGURES = [...VIEWER_FIGURES, ...FIGURES, ...FIRE_FIGURES];
+// The colour figures (docs/sweeps.md, "Colour figures"; points of a sweep with the colour view): CIELAB means
+// over the face-up area, then shares of it.
+const COLOUR_FIGURES = [
+  { key: 'colour_lightness', label: 'Colour lightness L*', cielab: true, hint: 'Mean CIELAB L* over the stone face-up' },
+  { key: 'colour_a', label: 'Colour a*', cielab: true, hint: 'Mean a*: green (−) to red (+)' },
+  { key: 'colour_b', label: 'Colour b*', cielab: true, hint: 'Mean b*: blue (−) to yellow (+)' },
+  { key: 'colour_chroma', label: 'Colour chroma C*ab', cielab: true, hint: 'Mean C*ab: the colour’s strength' },
+  { key: 'colour_windowed', label: 'Windowed (colour view)', hint: 'Share of the face-up view seen through the pavilion' },
+  { key: 'colour_extinct', label: 'Extinct (colour view)', hint: 'Share of the face-up pixels darker than L* 20' },
+  { key: 'colour_saturated', label: 'Saturated (colour view)', hint: 'Share of the face-up pixels of chroma above 40' },
+];
+// The viewer's figures, the statistics' totals, the fire figures (points of a sweep that traces fire), then the
+// colour figures.
+const SWEEP_FIGURES = [...VIEWER_FIGURES, ...FIGURES, ...FIRE_FIGURES, ...COLOUR_FIGURES];
 function figureInfo(key) { return SWEEP_FIGURES.find((f) => f.key === key) || { key, label: humanize(key) }; }
-// Where a point keeps a figure and its standard error: its totals, its viewer figures or its fire figures.
+// Where a point keeps a figure and its standard error: its totals, its viewer, colour or fire figures.
 function figuresOf(p, key) {
   if (key in p.totals) return p.totals;
-  return p.viewer && key in p.viewer ? p.viewer : p.fire || {};
+  if (p.viewer && key in p.viewer) return p.viewer;
+  return p.colour && key in p.colour ? p.colour : p.fire || {};
 }
-// A figure and its error as text: the score in points, the rest as fire.js writes them.
+// A figure and its error as text: the score in points, CIELAB to two decimals, the rest as fire.js writes them.
 function fmtFigure(f, figures) {
-  if (!f.points) return fmtFire(f, figures);
+  if (!f.points && !f.cielab) return fmtFire(f, figures);
   const v = figures[f.key];
-  return Number.isFinite(v) ? `${v.toFixed(1)} ± ${figures[`${f.key}_stderr`].toFixed(1)}` : '—';
+  const d = f.points ? 1 : 2;
+  return Number.isFinite(v) ? `${v.toFixed(d)} ± ${figures[`${f.key}_stderr`].toFixed(d)}` : '—';
 }
 
 // The defaults of each axis: a pavilion range, and a crown range for the map.
@@ -62,10 +76,15 @@ export function initSweepForm() {
   $('#s-figure').replaceChildren(
     h('optgroup', { label: 'What a viewer sees' }, VIEWER_FIGURES.map((f) => h('option', { value: f.key, selected: f.key === 'brightness' }, f.label))),
     h('optgroup', { label: 'Light return' }, FIGURES.map((f) => h('option', { value: f.key }, f.label))),
-    h('optgroup', { label: 'Fire (traces fire)' }, FIRE_FIGURES.map((f) => h('option', { value: f.key }, f.label))));
-  // A fire figure needs the fire trace.
+    h('optgroup', { label: 'Fire (traces fire)' }, FIRE_FIGURES.map((f) => h('option', { value: f.key }, f.label))),
+    h('optgroup', { label: 'Colour (measures colour)' }, COLOUR_FIGURES.map((f) => h('option', { value: f.key }, f.label))));
+  // The job form's materials, the one list of them (web/index.html).
+  $('#s-material').replaceChildren(...[...$('#f-material').children].map((el) => el.cloneNode(true)));
+  $('#s-material').value = 'auto';
+  // A fire figure needs the fire trace; a colour figure the colour view.
   $('#s-figure').addEventListener('change', (ev) => {
     if (FIRE_FIGURES.some((f) => f.key === ev.target.value)) $('#s-fire').checked = true;
+    if (COLOUR_FIGURES.some((f) => f.key === ev.target.value)) $('#s-colour').checked = true;
   });
   const second = $('#s-second');
   const sync = () => { for (const el of $('#s-axis-1').querySelectorAll('.field input')) el.disabled = !second.checked; };
@@ -83,7 +102,7 @@ export function initSweepForm() {
 }
 
 // The quantities any stone can be swept over besides its own parameters (sweep_axis.h's trace axes).
-const TRACE_QUANTITIES = ['tilt', 'head_shadow', 'n'];
+const TRACE_QUANTITIES = ['tilt', 'head_shadow', 'n', 'size_mm'];
 // Every mesh the form offers, by its `mesh` name: a library shape's parameters, an upload's tiers.
 const sweepMeshes = new Map();
 
@@ -182,6 +201,9 @@ async function submitSweep(ev) {
   }
   const job = { mesh: form.elements.shape.value, photons: Number(form.elements.photons.value), sweep };
   if (form.elements.fire.checked) job.fire = { enabled: true };
+  if (form.elements.material.value !== 'auto') job.material = form.elements.material.value;
+  if (form.elements.size_mm.value.trim() !== '') job.size_mm = Number(form.elements.size_mm.value);
+  if (form.elements.colour.checked) job.colour = {};
   const threads = Number($('#f-threads').value);
   if (threads > 0) job.threads = threads;
   const status = $('#sweep-status');
@@ -198,7 +220,8 @@ async function submitSweep(ev) {
     status.textContent = '';
     // A held parameter's or a constraint's error is shown at its field, its entry named in the message.
     const at = (e.field || '').match(/^sweep\.(set|constraints)\b/);
-    const field = e.field === 'mesh' ? 'sweep-mesh' : e.field === 'photons' ? 'sweep-photons' : at ? `sweep.${at[1]}` : e.field;
+    const own = { mesh: 'sweep-mesh', photons: 'sweep-photons', material: 'sweep-material', size_mm: 'sweep-size_mm' };
+    const field = own[e.field] || (at ? `sweep.${at[1]}` : e.field);
     if (!field || !showFieldError(field, e.message)) {
       const err = $('#sweep-error');
       err.textContent = e.message;
@@ -273,7 +296,7 @@ function progressText(job) {
 function bestCard(best, axes) {
   const f = figureInfo(best.figure);
   const d = best.best;
-  const fmt = (v) => (f.degrees ? `${fmtNumber(v, 3)}°` : f.points ? fmtNumber(v, 1) : `${fmtNumber(v * 100, 2)} %`);
+  const fmt = (v) => (f.degrees ? `${fmtNumber(v, 3)}°` : f.points ? fmtNumber(v, 1) : f.cielab ? fmtNumber(v, 2) : `${fmtNumber(v * 100, 2)} %`);
   const where = axes.map((a) => `${humanize(a.name)} ${fmtNumber(d.values[a.name], 4)}${a.unit === 'deg' ? '°' : a.unit === '%' ? ' %' : ''}`).join(', ');
   const ties = best.ties.length;
   return h('section', { class: 'card sweep-best-card', 'aria-labelledby': 'sweep-best-title' },
@@ -411,12 +434,13 @@ function stepsAlong(values, v) {
 // "Color Universal Design"); its yellow left out, too faint on white.
 const CURVE_COLOURS = ['#0072B2', '#D55E00', '#009E73', '#CC79A7', '#E69F00', '#56B4E9', '#000000'];
 
-// Shares in %, the mean separation in degrees, the score in points.
+// Shares in %, the mean separation in degrees, the score in points, L*, a*, b* and C*ab in CIELAB units.
 function unitOf(key) {
-  const { degrees, points } = figureInfo(key);
-  return degrees ? '°' : points ? 'points' : '%';
+  const { degrees, points, cielab } = figureInfo(key);
+  return degrees ? '°' : points ? 'points' : cielab ? 'CIELAB' : '%';
 }
 function formatIn(unit) {
+  if (unit === 'CIELAB') return (v) => fmtNumber(v, 2);
   return unit === '°' ? (v) => fmtNumber(v, 3) : unit === 'points' ? (v) => fmtNumber(v, 1) : (v) => fmtNumber(v * 100, 2);
 }
 
@@ -505,7 +529,7 @@ function drawCurves(root, data, figures, best) {
   const hi = Math.max(...ends);
   const y = scale(lo, hi, H - M.bottom - 10, M.top + 10);
   const unit = unitOf(figures[0]);
-  const title = figures.length === 1 ? figureInfo(figures[0]).label : { '%': 'Share', '°': 'Degrees', points: 'Score' }[unit];
+  const title = figures.length === 1 ? figureInfo(figures[0]).label : { '%': 'Share', '°': 'Degrees', points: 'Score', CIELAB: 'Colour' }[unit];
   root.append(frame(x, xs, axis, ticks(lo, hi), y, { title: `${title} (${unit})`, format: formatIn(unit) }));
   const xOf = (p) => x(xs[p.at[0]]);
   series.forEach(({ key, points }, k) => {

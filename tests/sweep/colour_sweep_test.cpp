@@ -1,0 +1,183 @@
+// A sweep with the colour view (docs/sweeps.md, "Colour"): every point's colour figures, over size, material
+// or the cut, equal to a single study's colour view of that design at those settings.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "cuts/cut_library.h"
+#include "study/study.h"
+#include "sweep/sweep_figures.h"
+#include "sweep/sweep_files.h"
+#include "sweep/sweep_pictures.h"
+#include "sweep/sweep_request.h"
+#include "util/error.h"
+
+using namespace facetlight;
+
+namespace {
+
+// A coarse colour view: enough pixels for L* to be known to a few tenths, quick enough for a test.
+ColourSettings coarseColour() {
+    ColourSettings c;
+    c.pictureSize = 24;
+    c.samples = 1;
+    c.wavelengths = 8;
+    return c;
+}
+
+TraceSettings quickTrace() {
+    TraceSettings t;
+    t.photons = 500;
+    t.threads = 2;
+    t.seed = 7;
+    t.viewer.enabled = false;
+    return t;
+}
+
+SweepRequest requestOf(const std::vector<std::string>& axes, const std::string& figure) {
+    SweepRequest r;
+    for (const std::string& a : axes) r.axes.push_back(parseSweepAxis(a));
+    r.figures = {figure};
+    return r;
+}
+
+// The field an Error from `f` names; "" when it throws none.
+template <class F>
+std::string fieldOf(F f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.field().empty() ? std::string("(no field)") : e.field();
+    }
+    return "";
+}
+
+}  // namespace
+
+// Over size: the absorbing sapphire darkens at every step by many standard errors, while the clear diamond's
+// figures do not move at all (an isotropic stone that does not absorb is scale-free: nothing in its view
+// depends on the size; a birefringent one's coherent near-axis cone does).
+TEST(ColourSweep, SizeDarkensAnAbsorbingStoneAndLeavesAClearOneAlone) {
+    // Enough pixels for a step's drop to stand out against the two points' errors taken as independent.
+    ColourSettings colour = coarseColour();
+    colour.pictureSize = 48;
+    const SweepPlan plan =
+        planSweep("round_brilliant",
+                  requestOf({"material=blue_sapphire,diamond", "size_mm=3,6,12"}, "colour_lightness"),
+                  quickTrace(), colour);
+    RunControl control;
+    const SweepResult result = runSweep(plan, control);
+    ASSERT_EQ(result.points.size(), 6u);
+    for (const SweepPoint& p : result.points) ASSERT_TRUE(p.ok()) << p.error;
+    const auto at = [&](size_t material, size_t size) -> const SweepPoint& {
+        return result.points[material * 3 + size];
+    };
+    for (size_t s = 0; s + 1 < 3; ++s) {
+        const SweepPoint &small = at(0, s), &large = at(0, s + 1);
+        const double drop = small.figure("colour_lightness") - large.figure("colour_lightness");
+        const double sigma =
+            std::hypot(small.stderrOf("colour_lightness"), large.stderrOf("colour_lightness"));
+        EXPECT_GT(drop, 3 * sigma) << "sapphire from " << plan.axes[1].label(s) << " mm";
+        for (const std::string& f : sweepColourFigureNames())
+            EXPECT_EQ(at(1, s).figure(f), at(1, s + 1).figure(f)) << "diamond " << f;
+    }
+    EXPECT_GT(at(1, 0).figure("colour_lightness"), at(0, 0).figure("colour_lightness"));
+
+    // sweep.json names the figures and the colour settings; sweep.csv has each figure and its error.
+    const nlohmann::json j = sweepToJson(result);
+    EXPECT_EQ(j["figures"], nlohmann::json(sweepFigureNames(plan.trace, true)));
+    EXPECT_EQ(j["colour"]["picture_size"], 48);
+    EXPECT_EQ(j["axes"][1]["unit"], "mm");
+    const std::string csv = sweepCsv(result);
+    for (const std::string& f : sweepColourFigureNames())
+        EXPECT_NE(csv.find("," + f + "," + f + "_stderr"), std::string::npos) << f;
+    const auto pictures = sweepPictures(result, {"colour_lightness"});
+    ASSERT_EQ(pictures.size(), 1u);
+    EXPECT_EQ(pictures[0].first, "map_colour_lightness.png");
+}
+
+// A point's colour figures are a single study's colour view of its design, bit for bit: the same seed, size
+// and material.
+TEST(ColourSweep, PointEqualsTheSingleColourView) {
+    const SweepPlan plan = planSweep(
+        "round_brilliant", requestOf({"pavilion=40,42"}, "colour_chroma"),
+        [] {
+            TraceSettings t = quickTrace();
+            t.material = "emerald";
+            t.sizeMm = 8;
+            return t;
+        }(),
+        coarseColour());
+    RunControl control;
+    const SweepResult result = runSweep(plan, control);
+    const SweepPoint& p = result.points[1];
+    ASSERT_TRUE(p.ok()) << p.error;
+
+    StudySettings single;
+    single.trace = plan.trace;
+    single.trace.threads = 1;
+    single.colour = coarseColour();
+    RunControl alone;
+    const StudyResult study =
+        runStudy(Stone::build(makeCut("round_brilliant", {{"pavilion", 42}}), "alone"), single, alone);
+    const nlohmann::json& c = study.stats.at("colour");
+    EXPECT_EQ(p.figure("colour_lightness"), c["L"]["mean"].get<double>());
+    EXPECT_EQ(p.stderrOf("colour_lightness"), c["L"]["mean_stderr"].get<double>());
+    EXPECT_EQ(p.figure("colour_a"), c["a"]["mean"].get<double>());
+    EXPECT_EQ(p.figure("colour_b"), c["b"]["mean"].get<double>());
+    EXPECT_EQ(p.figure("colour_chroma"), c["chroma"]["mean"].get<double>());
+    EXPECT_EQ(p.figure("colour_windowed"), c["windowed"]["share"].get<double>());
+    EXPECT_EQ(p.stderrOf("colour_windowed"), c["windowed"]["stderr"].get<double>());
+    EXPECT_EQ(p.figure("colour_extinct"), c["extinct"]["share"].get<double>());
+    EXPECT_EQ(p.figure("colour_saturated"), c["saturated"]["share"].get<double>());
+    // The two depths differ: the figure follows the cut.
+    EXPECT_NE(result.points[0].figure("colour_lightness"), p.figure("colour_lightness"));
+
+    // A point kept by a build without colour figures is traced again, to the same bits.
+    std::vector<nlohmann::json> kept;
+    for (const SweepPoint& q : result.points) kept.push_back(sweepPointJson(plan, q));
+    kept[0].erase("colour");
+    SweepPointHooks hooks;
+    hooks.restore = [&](size_t k) { return std::optional(kept[k]); };
+    RunControl resumed;
+    const SweepResult again = runSweep(plan, resumed, hooks);
+    EXPECT_EQ(sweepToJson(again)["points"].dump(), sweepToJson(result)["points"].dump());
+}
+
+// Colour figures need the colour view; the colour view needs an absorbing point and axes it sees.
+TEST(ColourSweep, RefusesWhatTheColourViewCannotMeasure) {
+    const TraceSettings sapphire = [] {
+        TraceSettings t = quickTrace();
+        t.material = "blue_sapphire";
+        return t;
+    }();
+    const auto plan = [&](const std::vector<std::string>& axes, const std::string& figure,
+                          const TraceSettings& t, const std::optional<ColourSettings>& colour) {
+        return fieldOf([&] { planSweep("round_brilliant", requestOf(axes, figure), t, colour); });
+    };
+    EXPECT_EQ(plan({"size_mm=3,6"}, "colour_lightness", sapphire, coarseColour()), "");
+    EXPECT_EQ(plan({"size_mm=3,6"}, "colour_lightness", sapphire, std::nullopt), "sweep.figure");
+    try {
+        checkSweepFigure("colour_extinct", sapphire, false);
+        ADD_FAILURE() << "a colour figure without the colour view";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("--colour"), std::string::npos) << e.what();
+    }
+    // Nothing absorbs: a clear material, or a constant n.
+    EXPECT_EQ(plan({"size_mm=3,6"}, "colour_lightness", quickTrace(), coarseColour()), "material");
+    EXPECT_EQ(plan({"n=1.5,1.7"}, "colour_lightness", quickTrace(), coarseColour()), "material");
+    // One absorbing material of the axis is enough; so is a job's own spectrum on a clear material.
+    EXPECT_EQ(plan({"material=quartz,amethyst"}, "colour_lightness", quickTrace(), coarseColour()), "");
+    TraceSettings tinted = quickTrace();
+    tinted.material = "quartz";
+    tinted.absorption = AbsorptionSpectrum{{400, 700}, {0.1, 0.5}, {}};
+    EXPECT_EQ(plan({"size_mm=3,6"}, "colour_lightness", tinted, coarseColour()), "");
+    // The view is face-up under a dome of its own: the light's axes change nothing it sees.
+    EXPECT_EQ(plan({"size_mm=3,6", "tilt=0,10"}, "colour_lightness", sapphire, coarseColour()),
+              "sweep.axes[1]");
+    EXPECT_EQ(plan({"head_shadow=0,10"}, "brightness", sapphire, coarseColour()), "sweep.axes[0]");
+    EXPECT_EQ(plan({"light=hemisphere,point"}, "weighted_return", sapphire, coarseColour()), "sweep.axes[0]");
+    // The size axis is checked as the size setting is.
+    EXPECT_EQ(plan({"size_mm=0.01,6"}, "colour_lightness", sapphire, coarseColour()), "sweep.axes[0]");
+}
