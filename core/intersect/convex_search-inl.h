@@ -57,26 +57,30 @@ constexpr int32_t kUlps = 4;
 template <class D>
 struct NearestByProducts {
     Lanes<D> num{kInf}, den{1.0f};
-    hn::Mask<D> doubt;
-    // Lanes whose ray is too long or far (or NaN) for the products to stay finite start in doubt.
-    HWY_INLINE NearestByProducts(Lanes<D> ox, Lanes<D> oy, Lanes<D> oz, Lanes<D> dx, Lanes<D> dy, Lanes<D> dz)
-        : doubt(hn::Not(hn::And(dot3(ox, oy, oz, ox, oy, oz) < Lanes<D>(0x1p100f),
-                                dot3(dx, dy, dz, dx, dy, dz) < Lanes<D>(0x1p100f)))) {}
-    // Whether crossing c is nearer in each lane, which then takes it.
-    HWY_INLINE hn::Mask<D> take(const PlaneCrossing<Lanes<D>>& c) {
+    // Whether crossing c is nearer in each lane, which then takes it; the lanes that cannot tell join
+    // `doubt`.
+    HWY_INLINE hn::Mask<D> take(const PlaneCrossing<Lanes<D>>& c, hn::Mask<D>& doubt) {
         const hn::RebindToSigned<D> di;
         const auto out = Lanes<D>(0.0f) < c.den;
         // max(num, +0) (t = 0 for a point a rounding error outside, as leavingT); num is not NaN.
         const Lanes<D> n(hn::BitCast(D(), hn::Max(hn::BitCast(di, c.num.v), hn::Zero(di))));
         const auto apart = hn::Sub(hn::BitCast(di, (n * den).v), hn::BitCast(di, (num * c.den).v));
         const auto nearer = hn::And(out, hn::RebindMask(D(), hn::Lt(apart, hn::Set(di, -kUlps))));
-        const auto tied = hn::Lt(hn::Abs(apart), hn::Set(di, kUlps + 1));
+        const auto tied = hn::Gt(hn::Set(di, kUlps + 1), hn::Abs(apart));
         doubt = hn::Or(doubt, hn::And(out, hn::RebindMask(D(), tied)));
         num = select(nearer, n, num);
         den = select(nearer, c.den, den);
         return nearer;
     }
 };
+
+// The doubt a search by products starts in: the lanes whose ray is too long or far (or NaN) for the products
+// to stay finite.
+template <class D>
+HWY_INLINE hn::Mask<D> doubtOf(Lanes<D> ox, Lanes<D> oy, Lanes<D> oz, Lanes<D> dx, Lanes<D> dy, Lanes<D> dz) {
+    return hn::Not(hn::And(dot3(ox, oy, oz, ox, oy, oz) < Lanes<D>(0x1p100f),
+                           dot3(dx, dy, dz, dx, dy, dz) < Lanes<D>(0x1p100f)));
+}
 
 // Whether the exit at t (the least over a search's lanes) leaves the lanes of a NearestByProducts without
 // doubt: t a normal float, so that quotients rounding to it lie within a float's relative rounding.
@@ -144,15 +148,16 @@ HWY_INLINE void LeaveRay(const ConvexIntersector::Planes& p, const Vec3f& o, con
     const PlaneTag df;
     const PlaneIndexTag di;
     const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z);
-    NearestByProducts<PlaneTag> nearest(ox, oy, oz, dx, dy, dz);
+    NearestByProducts<PlaneTag> nearest;
+    auto doubt = doubtOf(ox, oy, oz, dx, dy, dz);
     auto bestFacet = hn::Zero(di);
     for (size_t i = 0; i < p.count; i += hn::Lanes(df)) {
-        const auto nearer = nearest.take(crossings(p, i, ox, oy, oz, dx, dy, dz));
+        const auto nearer = nearest.take(crossings(p, i, ox, oy, oz, dx, dy, dz), doubt);
         bestFacet = hn::IfThenElse(hn::RebindMask(di, nearer), facetsAt(p, i), bestFacet);
     }
     const PlaneLanes t = nearest.num / nearest.den;
     const auto least = hn::MinOfLanes(df, t.v);
-    if (!hn::AllFalse(df, nearest.doubt) || !hn::AllTrue(df, sureOf(PlaneLanes(least)))) {
+    if (!hn::AllFalse(df, doubt) || !hn::AllTrue(df, sureOf(PlaneLanes(least)))) {
         LeaveRayByDivision(p, o, d, hit);
         return;
     }
@@ -227,10 +232,10 @@ HWY_INLINE void LeaveGroupsByDivision(const ConvexIntersector::Cull& c, uint64_t
 // The nearest exit through the planes of `p` taken into each lane's `nearest` (NearestByProducts).
 HWY_INLINE void LeaveInto(const ConvexIntersector::Planes& p, PlaneLanes ox, PlaneLanes oy, PlaneLanes oz,
                           PlaneLanes dx, PlaneLanes dy, PlaneLanes dz, NearestByProducts<PlaneTag>& nearest,
-                          hn::Vec<PlaneIndexTag>& bestFacet) {
+                          hn::Mask<PlaneTag>& doubt, hn::Vec<PlaneIndexTag>& bestFacet) {
     const PlaneIndexTag di;
     for (size_t i = 0; i < p.count; i += hn::Lanes(PlaneTag())) {
-        const auto nearer = nearest.take(crossings(p, i, ox, oy, oz, dx, dy, dz));
+        const auto nearer = nearest.take(crossings(p, i, ox, oy, oz, dx, dy, dz), doubt);
         bestFacet = hn::IfThenElse(hn::RebindMask(di, nearer), facetsAt(p, i), bestFacet);
     }
 }
@@ -241,21 +246,23 @@ HWY_INLINE void LeaveGroups(const ConvexIntersector::Cull& c, uint64_t search, b
     const PlaneTag df;
     const PlaneIndexTag di;
     const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z);
-    NearestByProducts<PlaneTag> nearest(ox, oy, oz, dx, dy, dz);
+    NearestByProducts<PlaneTag> nearest;
+    auto doubt = doubtOf(ox, oy, oz, dx, dy, dz);
     auto bestFacet = hn::Zero(di);
     for (uint64_t left = search; left; left &= left - 1)
-        LeaveInto(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, nearest, bestFacet);
+        LeaveInto(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, nearest, doubt, bestFacet);
     PlaneLanes t = nearest.num / nearest.den;
     float least = hn::GetLane(hn::MinOfLanes(df, t.v));
     if (!(proven && least <= tq)) {
         const size_t groups = c.groups.size();
         const uint64_t all = groups == 64 ? ~uint64_t(0) : (uint64_t(1) << groups) - 1;
         for (uint64_t left = all & ~search; left; left &= left - 1)
-            LeaveInto(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, nearest, bestFacet);
+            LeaveInto(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, nearest, doubt,
+                      bestFacet);
         t = nearest.num / nearest.den;
         least = hn::GetLane(hn::MinOfLanes(df, t.v));
     }
-    if (!hn::AllFalse(df, nearest.doubt) || !hn::AllTrue(df, sureOf(PlaneLanes(least)))) {
+    if (!hn::AllFalse(df, doubt) || !hn::AllTrue(df, sureOf(PlaneLanes(least)))) {
         LeaveGroupsByDivision(c, search, proven, tq, o, d, hit);
         return;
     }
@@ -434,15 +441,15 @@ HWY_INLINE void LeavePlanesByDivision(const ConvexIntersector::Planes& p, Floats
 HWY_INLINE void LeavePlanes(const ConvexIntersector::Planes& p, FloatMask live, Floats ox, Floats oy,
                             Floats oz, Floats dx, Floats dy, Floats dz, Floats& tOut, Facets& facetOut) {
     const IndexTag di;
-    const NearestByProducts<FloatTag> start(ox, oy, oz, dx, dy, dz);
-    NearestByProducts<FloatTag> nearest[2] = {start, start};
+    NearestByProducts<FloatTag> nearest[2];
+    FloatMask doubt = doubtOf(ox, oy, oz, dx, dy, dz);
     Facets bestPlane[2] = {hn::Zero(di), hn::Zero(di)};
     Facets plane[2] = {hn::Set(di, 0), hn::Set(di, 1)};  // i in lanes, kept by adding rather than broadcast
     const Facets two = hn::Set(di, 2);
     auto visit = [&](size_t i, int chain) HWY_ATTR {
         const PlaneCrossing<Floats> c(ox, oy, oz, dx, dy, dz, Floats(p.nx[i]), Floats(p.ny[i]),
                                       Floats(p.nz[i]), Floats(p.offset[i]));
-        const auto nearer = nearest[chain].take(c);
+        const auto nearer = nearest[chain].take(c, doubt);
         bestPlane[chain] = hn::IfThenElse(hn::RebindMask(di, nearer), plane[chain], bestPlane[chain]);
     };
     size_t i = 0;
@@ -458,8 +465,7 @@ HWY_INLINE void LeavePlanes(const ConvexIntersector::Planes& p, FloatMask live, 
         hn::Or(best[1] < best[0], hn::And(hn::Eq(best[1].v, best[0].v),
                                           hn::RebindMask(FloatTag(), hn::Lt(bestPlane[1], bestPlane[0]))));
     tOut = select(odd, best[1], best[0]);
-    const auto doubt = hn::Or(hn::Or(nearest[0].doubt, nearest[1].doubt), hn::Not(sureOf(tOut)));
-    if (!hn::AllFalse(FloatTag(), hn::And(live, doubt))) {
+    if (!hn::AllFalse(FloatTag(), hn::And(live, hn::Or(doubt, hn::Not(sureOf(tOut)))))) {
         LeavePlanesByDivision(p, ox, oy, oz, dx, dy, dz, tOut, facetOut);
         return;
     }

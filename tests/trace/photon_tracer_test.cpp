@@ -470,10 +470,11 @@ TEST(ConvexIntersector, ProductSearchDoubtsOnlyNearTies) {
         return Crossing(zero, zero, zero, one, zero, zero, F(den), zero, zero, F(offset));
     };
     auto doubts = [&](std::initializer_list<std::pair<float, float>> planes, float* t = nullptr) {
-        Nearest nearest(zero, zero, zero, one, zero, zero);
-        for (const auto& [den, offset] : planes) nearest.take(plane(den, offset));
+        Nearest nearest;
+        auto doubt = facetlight::HWY_NAMESPACE::doubtOf(zero, zero, zero, one, zero, zero);
+        for (const auto& [den, offset] : planes) nearest.take(plane(den, offset), doubt);
         if (t) *t = hn::GetLane((nearest.num / nearest.den).v);
-        return !hn::AllFalse(d, nearest.doubt);
+        return !hn::AllFalse(d, doubt);
     };
     float t = 0;
     EXPECT_FALSE(doubts({{0.5f, 0.3f}, {0.7f, 0.3f}, {-0.7f, 0.1f}, {0.9f, 0.6f}}, &t));
@@ -491,10 +492,10 @@ TEST(ConvexIntersector, ProductSearchDoubtsOnlyNearTies) {
     EXPECT_FALSE(doubts({{0.7f, 0.3f}, {1.1f, std::bit_cast<float>(std::bit_cast<uint32_t>(b) + 8)}}, &t));
     EXPECT_EQ(t, 0.3f / 0.7f);
     EXPECT_TRUE(doubts({{0.7f, -0.1f}, {0.2f, -0.5f}}));  // both 0
-    Nearest far(F(1e30f), zero, zero, one, zero, zero);
-    EXPECT_FALSE(hn::AllFalse(d, far.doubt));
-    Nearest nan(zero, zero, zero, F(NAN), zero, zero);
-    EXPECT_FALSE(hn::AllFalse(d, nan.doubt));
+    using facetlight::HWY_NAMESPACE::doubtOf;
+    EXPECT_FALSE(hn::AllFalse(d, doubtOf(F(1e30f), zero, zero, one, zero, zero)));
+    EXPECT_FALSE(hn::AllFalse(d, doubtOf(zero, zero, zero, F(NAN), zero, zero)));
+    EXPECT_TRUE(hn::AllFalse(d, doubtOf(F(0.3f), zero, zero, one, zero, zero)));
 }
 
 namespace {
