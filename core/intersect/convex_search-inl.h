@@ -45,50 +45,6 @@ HWY_INLINE F leavingT(const PlaneCrossing<F>& c) {
     return select(zero < t, t, zero);
 }
 
-// The exit search without a division per plane (issue 32). A plane the ray heads out through is nearer than
-// the nearest so far, (num, den), where max(num_i, 0) den < num den_i: two products of floats, rounded.
-// Where their bit patterns (both >= 0) lie more than kUlps apart, that is the order of the exact quotients,
-// so each lane keeps the plane of the least exact quotient; where they do not, the lane is in doubt and its
-// caller searches again by division. Without a doubt, every other plane of the lane was told apart from one
-// no nearer than the winner with products more than kUlps apart, which quotients in one float's rounding
-// interval never are (at most 3 apart): where t = num / den, the one division, is a normal float, every
-// other plane's quotient rounds to a larger float, so plane and t are those of the search by division.
-constexpr int32_t kUlps = 4;
-template <class D>
-struct NearestByProducts {
-    Lanes<D> num{kInf}, den{1.0f};
-    // Whether crossing c is nearer in each lane, which then takes it; the lanes that cannot tell join
-    // `doubt`.
-    HWY_INLINE hn::Mask<D> take(const PlaneCrossing<Lanes<D>>& c, hn::Mask<D>& doubt) {
-        const hn::RebindToSigned<D> di;
-        const auto out = Lanes<D>(0.0f) < c.den;
-        // max(num, +0) (t = 0 for a point a rounding error outside, as leavingT); num is not NaN.
-        const Lanes<D> n(hn::BitCast(D(), hn::Max(hn::BitCast(di, c.num.v), hn::Zero(di))));
-        const auto apart = hn::Sub(hn::BitCast(di, (n * den).v), hn::BitCast(di, (num * c.den).v));
-        const auto nearer = hn::And(out, hn::RebindMask(D(), hn::Lt(apart, hn::Set(di, -kUlps))));
-        const auto tied = hn::Gt(hn::Set(di, kUlps + 1), hn::Abs(apart));
-        doubt = hn::Or(doubt, hn::And(out, hn::RebindMask(D(), tied)));
-        num = select(nearer, n, num);
-        den = select(nearer, c.den, den);
-        return nearer;
-    }
-};
-
-// The doubt a search by products starts in: the lanes whose ray is too long or far (or NaN) for the products
-// to stay finite.
-template <class D>
-HWY_INLINE hn::Mask<D> doubtOf(Lanes<D> ox, Lanes<D> oy, Lanes<D> oz, Lanes<D> dx, Lanes<D> dy, Lanes<D> dz) {
-    return hn::Not(hn::And(dot3(ox, oy, oz, ox, oy, oz) < Lanes<D>(0x1p100f),
-                           dot3(dx, dy, dz, dx, dy, dz) < Lanes<D>(0x1p100f)));
-}
-
-// Whether the exit at t (the least over a search's lanes) leaves the lanes of a NearestByProducts without
-// doubt: t a normal float, so that quotients rounding to it lie within a float's relative rounding.
-template <class D>
-HWY_INLINE hn::Mask<D> sureOf(Lanes<D> t) {
-    return hn::And(t >= Lanes<D>(std::numeric_limits<float>::min()), t < Lanes<D>(kInf));
-}
-
 // ---- One ray, the planes in lanes.
 
 using PlaneTag = hn::CappedTag<float, ConvexIntersector::Planes::kPadding>;
@@ -124,8 +80,8 @@ HWY_INLINE hn::Vec<PlaneIndexTag> facetsAt(const ConvexIntersector::Planes& p, s
 }
 
 // The nearest exit through the planes of `p`, the lowest facet on ties; t = +inf where there is none.
-HWY_INLINE void LeaveRayByDivision(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d,
-                                   SurfaceHit& hit) {
+HWY_INLINE void LeaveRay(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d,
+                         SurfaceHit& hit) {
     const PlaneTag df;
     const PlaneIndexTag di;
     const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z), zero(0.0f);
@@ -140,28 +96,6 @@ HWY_INLINE void LeaveRayByDivision(const ConvexIntersector::Planes& p, const Vec
     }
     const auto nearest = hn::MinOfLanes(df, best.v);
     hit = {hn::GetLane(nearest), lowestFacetAt(best, nearest, bestFacet)};
-}
-
-// LeaveRayByDivision by products (NearestByProducts), by division where in doubt.
-HWY_INLINE void LeaveRay(const ConvexIntersector::Planes& p, const Vec3f& o, const Vec3f& d,
-                         SurfaceHit& hit) {
-    const PlaneTag df;
-    const PlaneIndexTag di;
-    const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z);
-    NearestByProducts<PlaneTag> nearest;
-    auto doubt = doubtOf(ox, oy, oz, dx, dy, dz);
-    auto bestFacet = hn::Zero(di);
-    for (size_t i = 0; i < p.count; i += hn::Lanes(df)) {
-        const auto nearer = nearest.take(crossings(p, i, ox, oy, oz, dx, dy, dz), doubt);
-        bestFacet = hn::IfThenElse(hn::RebindMask(di, nearer), facetsAt(p, i), bestFacet);
-    }
-    const PlaneLanes t = nearest.num / nearest.den;
-    const auto least = hn::MinOfLanes(df, t.v);
-    if (!hn::AllFalse(df, doubt) || !hn::AllTrue(df, sureOf(PlaneLanes(least)))) {
-        LeaveRayByDivision(p, o, d, hit);
-        return;
-    }
-    hit = {hn::GetLane(least), lowestFacetAt(t, least, bestFacet)};
 }
 
 // Where the exit at distance t through the planes other than the girdle's is certainly nearer than any girdle
@@ -188,9 +122,9 @@ HWY_INLINE void takeNearer(const SurfaceHit& h, SurfaceHit& best) {
 // The nearest exit through the planes of `p` merged into each lane's (best, bestFacet), the lowest facet on
 // ties whatever the order of the calls: after any sequence of them the lanes hold what one search over all
 // their planes would.
-HWY_INLINE void LeaveIntoByDivision(const ConvexIntersector::Planes& p, PlaneLanes ox, PlaneLanes oy,
-                                    PlaneLanes oz, PlaneLanes dx, PlaneLanes dy, PlaneLanes dz,
-                                    PlaneLanes& best, hn::Vec<PlaneIndexTag>& bestFacet) {
+HWY_INLINE void LeaveInto(const ConvexIntersector::Planes& p, PlaneLanes ox, PlaneLanes oy, PlaneLanes oz,
+                          PlaneLanes dx, PlaneLanes dy, PlaneLanes dz, PlaneLanes& best,
+                          hn::Vec<PlaneIndexTag>& bestFacet) {
     const PlaneTag df;
     const PlaneIndexTag di;
     const PlaneLanes zero(0.0f);
@@ -208,65 +142,24 @@ HWY_INLINE void LeaveIntoByDivision(const ConvexIntersector::Planes& p, PlaneLan
 
 // The searches of LeaveCulled once the groups to search are known: `search`, then, when the exit found is
 // not proven nearer than the hull's exit tq, the others.
-HWY_INLINE void LeaveGroupsByDivision(const ConvexIntersector::Cull& c, uint64_t search, bool proven,
-                                      float tq, const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
+HWY_INLINE void LeaveGroups(const ConvexIntersector::Cull& c, uint64_t search, bool proven, float tq,
+                            const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
     const PlaneTag df;
     const PlaneIndexTag di;
     const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z);
     PlaneLanes best(kInf);
     auto bestFacet = hn::Zero(di);
     for (uint64_t left = search; left; left &= left - 1)
-        LeaveIntoByDivision(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, best, bestFacet);
+        LeaveInto(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, best, bestFacet);
     float nearest = hn::GetLane(hn::MinOfLanes(df, best.v));
     if (!(proven && nearest <= tq)) {
         const size_t groups = c.groups.size();
         const uint64_t all = groups == 64 ? ~uint64_t(0) : (uint64_t(1) << groups) - 1;
         for (uint64_t left = all & ~search; left; left &= left - 1)
-            LeaveIntoByDivision(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, best,
-                                bestFacet);
+            LeaveInto(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, best, bestFacet);
         nearest = hn::GetLane(hn::MinOfLanes(df, best.v));
     }
     hit = {nearest, lowestFacetAt(best, hn::Set(df, nearest), bestFacet)};
-}
-
-// The nearest exit through the planes of `p` taken into each lane's `nearest` (NearestByProducts).
-HWY_INLINE void LeaveInto(const ConvexIntersector::Planes& p, PlaneLanes ox, PlaneLanes oy, PlaneLanes oz,
-                          PlaneLanes dx, PlaneLanes dy, PlaneLanes dz, NearestByProducts<PlaneTag>& nearest,
-                          hn::Mask<PlaneTag>& doubt, hn::Vec<PlaneIndexTag>& bestFacet) {
-    const PlaneIndexTag di;
-    for (size_t i = 0; i < p.count; i += hn::Lanes(PlaneTag())) {
-        const auto nearer = nearest.take(crossings(p, i, ox, oy, oz, dx, dy, dz), doubt);
-        bestFacet = hn::IfThenElse(hn::RebindMask(di, nearer), facetsAt(p, i), bestFacet);
-    }
-}
-
-// LeaveGroupsByDivision by products, by division where in doubt.
-HWY_INLINE void LeaveGroups(const ConvexIntersector::Cull& c, uint64_t search, bool proven, float tq,
-                            const Vec3f& o, const Vec3f& d, SurfaceHit& hit) {
-    const PlaneTag df;
-    const PlaneIndexTag di;
-    const PlaneLanes ox(o.x), oy(o.y), oz(o.z), dx(d.x), dy(d.y), dz(d.z);
-    NearestByProducts<PlaneTag> nearest;
-    auto doubt = doubtOf(ox, oy, oz, dx, dy, dz);
-    auto bestFacet = hn::Zero(di);
-    for (uint64_t left = search; left; left &= left - 1)
-        LeaveInto(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, nearest, doubt, bestFacet);
-    PlaneLanes t = nearest.num / nearest.den;
-    float least = hn::GetLane(hn::MinOfLanes(df, t.v));
-    if (!(proven && least <= tq)) {
-        const size_t groups = c.groups.size();
-        const uint64_t all = groups == 64 ? ~uint64_t(0) : (uint64_t(1) << groups) - 1;
-        for (uint64_t left = all & ~search; left; left &= left - 1)
-            LeaveInto(c.groups[size_t(__builtin_ctzll(left))], ox, oy, oz, dx, dy, dz, nearest, doubt,
-                      bestFacet);
-        t = nearest.num / nearest.den;
-        least = hn::GetLane(hn::MinOfLanes(df, t.v));
-    }
-    if (!hn::AllFalse(df, doubt) || !hn::AllTrue(df, sureOf(PlaneLanes(least)))) {
-        LeaveGroupsByDivision(c, search, proven, tq, o, d, hit);
-        return;
-    }
-    hit = {least, lowestFacetAt(t, hn::Set(df, least), bestFacet)};
 }
 
 // The exit through every plane by the groups of ConvexIntersector::Cull. The ray leaves the hull at q, and
@@ -403,8 +296,8 @@ using Facets = hn::Vec<IndexTag>;
 
 // The nearest exit through the planes of `p` for each lane's ray, as LeaveRay gives it: t = +inf where there
 // is none. Two searches over even and odd planes halve the chain of dependent compares.
-HWY_INLINE void LeavePlanesByDivision(const ConvexIntersector::Planes& p, Floats ox, Floats oy, Floats oz,
-                                      Floats dx, Floats dy, Floats dz, Floats& tOut, Facets& facetOut) {
+HWY_INLINE void LeavePlanes(const ConvexIntersector::Planes& p, Floats ox, Floats oy, Floats oz, Floats dx,
+                            Floats dy, Floats dz, Floats& tOut, Facets& facetOut) {
     const IndexTag di;
     const Floats zero(0.0f);
     Floats best[2] = {Floats(kInf), Floats(kInf)};
@@ -434,43 +327,6 @@ HWY_INLINE void LeavePlanesByDivision(const ConvexIntersector::Planes& p, Floats
     tOut = select(odd, best[1], best[0]);
     const Facets nearest = hn::IfThenElse(hn::RebindMask(di, odd), bestPlane[1], bestPlane[0]);
     facetOut = hn::GatherIndex(di, reinterpret_cast<const int32_t*>(p.facet.data()), nearest);
-}
-
-// LeavePlanesByDivision for the lanes in `live` by products (NearestByProducts), by division where a lane is
-// in doubt.
-HWY_INLINE void LeavePlanes(const ConvexIntersector::Planes& p, FloatMask live, Floats ox, Floats oy,
-                            Floats oz, Floats dx, Floats dy, Floats dz, Floats& tOut, Facets& facetOut) {
-    const IndexTag di;
-    NearestByProducts<FloatTag> nearest[2];
-    FloatMask doubt = doubtOf(ox, oy, oz, dx, dy, dz);
-    Facets bestPlane[2] = {hn::Zero(di), hn::Zero(di)};
-    Facets plane[2] = {hn::Set(di, 0), hn::Set(di, 1)};  // i in lanes, kept by adding rather than broadcast
-    const Facets two = hn::Set(di, 2);
-    auto visit = [&](size_t i, int chain) HWY_ATTR {
-        const PlaneCrossing<Floats> c(ox, oy, oz, dx, dy, dz, Floats(p.nx[i]), Floats(p.ny[i]),
-                                      Floats(p.nz[i]), Floats(p.offset[i]));
-        const auto nearer = nearest[chain].take(c, doubt);
-        bestPlane[chain] = hn::IfThenElse(hn::RebindMask(di, nearer), plane[chain], bestPlane[chain]);
-    };
-    size_t i = 0;
-    for (; i + 1 < p.count; i += 2) {
-        visit(i, 0);
-        visit(i + 1, 1);
-        plane[0] = hn::Add(plane[0], two), plane[1] = hn::Add(plane[1], two);
-    }
-    if (i < p.count) visit(i, 0);
-    const Floats best[2] = {nearest[0].num / nearest[0].den, nearest[1].num / nearest[1].den};
-    // As LeavePlanesByDivision merges its two searches.
-    const auto odd =
-        hn::Or(best[1] < best[0], hn::And(hn::Eq(best[1].v, best[0].v),
-                                          hn::RebindMask(FloatTag(), hn::Lt(bestPlane[1], bestPlane[0]))));
-    tOut = select(odd, best[1], best[0]);
-    if (!hn::AllFalse(FloatTag(), hn::And(live, hn::Or(doubt, hn::Not(sureOf(tOut)))))) {
-        LeavePlanesByDivision(p, ox, oy, oz, dx, dy, dz, tOut, facetOut);
-        return;
-    }
-    const Facets nearestPlane = hn::IfThenElse(hn::RebindMask(di, odd), bestPlane[1], bestPlane[0]);
-    facetOut = hn::GatherIndex(di, reinterpret_cast<const int32_t*>(p.facet.data()), nearestPlane);
 }
 
 // LeaveCulled for each lane's ray in `live`: the hull's exit and the groups' tests for the packet, a row at a
@@ -530,7 +386,7 @@ HWY_INLINE void LeavePacket(const ConvexIntersector& convex, FloatMask live, Flo
         return;
     }
     const ConvexIntersector::Girdle* g = convex.girdle();
-    LeavePlanes(g ? g->others : convex.planes(), live, ox, oy, oz, dx, dy, dz, tOut, facetOut);
+    LeavePlanes(g ? g->others : convex.planes(), ox, oy, oz, dx, dy, dz, tOut, facetOut);
     if (!g) return;
     const auto nearGirdle = hn::AndNot(insideGirdle(*g, ox, oy, oz, dx, dy, dz, tOut), live);
     if (hn::AllFalse(FloatTag(), nearGirdle)) return;

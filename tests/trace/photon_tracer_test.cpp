@@ -24,10 +24,6 @@
 #include "util/error.h"
 #include "util/random.h"
 
-// The exit search's shared arithmetic, on the tests' own (static) SIMD target.
-#include "hwy/highway.h"
-#include "intersect/convex_search-inl.h"
-
 using namespace facetlight;
 using nlohmann::json;
 using test::forEachSimdTarget;
@@ -452,50 +448,6 @@ TEST(ConvexIntersector, SameHitsOnEveryTarget) {
         EXPECT_EQ(first.t[3 * i], std::bit_cast<uint32_t>(best)) << i;
         EXPECT_EQ(first.facet[3 * i], facet) << i;
     }
-}
-
-// The exit search by products (NearestByProducts) keeps the plane of the least exact quotient where its
-// products tell the planes apart, and is in doubt (the search by division decides) where they cannot: planes
-// whose quotients round to one float, equal quotients, rays too long for the products.
-TEST(ConvexIntersector, ProductSearchDoubtsOnlyNearTies) {
-    namespace hn = hwy::HWY_NAMESPACE;
-    using D = hn::ScalableTag<float>;
-    using F = facetlight::HWY_NAMESPACE::Lanes<D>;
-    using Nearest = facetlight::HWY_NAMESPACE::NearestByProducts<D>;
-    using Crossing = facetlight::HWY_NAMESPACE::PlaneCrossing<F>;
-    const D d;
-    const F zero(0.0f), one(1.0f);
-    // A plane at t = offset / den for a ray from the origin along +x (its normal (den, 0, 0)).
-    auto plane = [&](float den, float offset) {
-        return Crossing(zero, zero, zero, one, zero, zero, F(den), zero, zero, F(offset));
-    };
-    auto doubts = [&](std::initializer_list<std::pair<float, float>> planes, float* t = nullptr) {
-        Nearest nearest;
-        auto doubt = facetlight::HWY_NAMESPACE::doubtOf(zero, zero, zero, one, zero, zero);
-        for (const auto& [den, offset] : planes) nearest.take(plane(den, offset), doubt);
-        if (t) *t = hn::GetLane((nearest.num / nearest.den).v);
-        return !hn::AllFalse(d, doubt);
-    };
-    float t = 0;
-    EXPECT_FALSE(doubts({{0.5f, 0.3f}, {0.7f, 0.3f}, {-0.7f, 0.1f}, {0.9f, 0.6f}}, &t));
-    EXPECT_EQ(t, 0.3f / 0.7f);
-    EXPECT_FALSE(doubts({{0.5f, -0.001f}, {0.7f, 0.3f}}, &t));  // a point outside a plane: t = 0
-    EXPECT_EQ(std::bit_cast<uint32_t>(t), 0u);
-    // 0.3 / 0.7 and 0.6 / 1.4 are one quotient; a / 1.1 and b / 1.1 are quotients a little below and above
-    // it that round to the same float (exact fractions, worked out apart).
-    const float a = 0.47142860293388367f, b = 0.47142863273620605f;
-    EXPECT_EQ(0.3f / 0.7f, a / 1.1f);
-    EXPECT_EQ(0.3f / 0.7f, b / 1.1f);
-    EXPECT_TRUE(doubts({{0.7f, 0.3f}, {1.4f, 0.6f}}));
-    EXPECT_TRUE(doubts({{0.7f, 0.3f}, {1.1f, a}}));
-    EXPECT_TRUE(doubts({{0.7f, 0.3f}, {1.1f, b}}));
-    EXPECT_FALSE(doubts({{0.7f, 0.3f}, {1.1f, std::bit_cast<float>(std::bit_cast<uint32_t>(b) + 8)}}, &t));
-    EXPECT_EQ(t, 0.3f / 0.7f);
-    EXPECT_TRUE(doubts({{0.7f, -0.1f}, {0.2f, -0.5f}}));  // both 0
-    using facetlight::HWY_NAMESPACE::doubtOf;
-    EXPECT_FALSE(hn::AllFalse(d, doubtOf(F(1e30f), zero, zero, one, zero, zero)));
-    EXPECT_FALSE(hn::AllFalse(d, doubtOf(zero, zero, zero, F(NAN), zero, zero)));
-    EXPECT_TRUE(hn::AllFalse(d, doubtOf(F(0.3f), zero, zero, one, zero, zero)));
 }
 
 namespace {
