@@ -87,7 +87,13 @@ struct Wave {
     CVec3 field;
     bool propagating;
     double rayNormal;
+    Complex q;  // N . k
 };
+
+// The principal square root of a real x, as std::sqrt(Complex(x, +0)) gives it, without the complex call.
+Complex principalRoot(double x) {
+    return x >= 0 ? Complex(std::sqrt(x), 0) : Complex(0, std::sqrt(-x));
+}
 
 // The normal component q of the wave vector kt + q N of each outgoing wave. `side` is +1 for the waves whose
 // energy leaves along +N (transmitted), -1 for those leaving along -N (reflected); an evanescent wave must
@@ -97,18 +103,18 @@ struct Wave {
 // normal component is b + a q = +-sqrt(b^2 - a c): the root with +sqrt sends energy along +N whichever way
 // its wave normal points. The principal complex square root gives the decaying root for either side.
 Wave isotropicWave(WaveMode mode, double n, const Vec3& kt, const Vec3& N, const Vec3& s, int side) {
-    const Complex q = double(side) * std::sqrt(Complex(n * n - dot(kt, kt)));
+    const Complex q = double(side) * principalRoot(n * n - dot(kt, kt));
     const CVec3 k = toComplex(kt) + toComplex(N) * q;
     const bool propagating = n * n - dot(kt, kt) > 0;
     const CVec3 field = mode == WaveMode::S ? toComplex(s) : cross(k, toComplex(s)) * (1 / n);
-    return {mode, k, field, propagating, propagating ? q.real() / n : 0};
+    return {mode, k, field, propagating, propagating ? q.real() / n : 0, q};
 }
 
 Wave ordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s, int side) {
     const double q2 = m.nO * m.nO - dot(kt, kt);
-    const Complex q = double(side) * std::sqrt(Complex(q2));
+    const Complex q = double(side) * principalRoot(q2);
     const CVec3 k = toComplex(kt) + toComplex(N) * q;
-    return {WaveMode::Ordinary, k, ordinaryField(m, k, s), q2 > 0, q2 > 0 ? q.real() / m.nO : 0};
+    return {WaveMode::Ordinary, k, ordinaryField(m, k, s), q2 > 0, q2 > 0 ? q.real() / m.nO : 0, q};
 }
 
 Wave extraordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s,
@@ -117,12 +123,12 @@ Wave extraordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const V
     const double a = dot(N, epsN), b = dot(kt, epsN);
     const double c = dot(kt, epsilonTimes(m, kt)) - m.nO * m.nO * m.nE * m.nE;
     const double discriminant = b * b - a * c;
-    const Complex q = (-b + double(side) * std::sqrt(Complex(discriminant))) / a;
+    const Complex q = (-b + double(side) * principalRoot(discriminant)) / a;
     const CVec3 k = toComplex(kt) + toComplex(N) * q;
     const bool propagating = discriminant > 0;
     const double rayNormal =
         propagating ? side * std::sqrt(discriminant) / length(epsilonTimes(m, realPart(k))) : 0;
-    return {WaveMode::Extraordinary, k, extraordinaryField(m, k, s), propagating, rayNormal};
+    return {WaveMode::Extraordinary, k, extraordinaryField(m, k, s), propagating, rayNormal, q};
 }
 
 // The time-averaged Poynting flux along N of a propagating wave of unit field, up to the factor common to
@@ -143,33 +149,6 @@ PlaneWave toPlaneWave(const UniaxialMedium* crystal, const Wave& w) {
     return p;
 }
 
-// Solves A x = b for a 4x4 complex A and `columns` right-hand sides by Gaussian elimination with partial
-// pivoting; b is overwritten with x.
-void solve4(Complex a[4][4], Complex b[4][2], int columns) {
-    for (int col = 0; col < 4; ++col) {
-        int pivot = col;
-        for (int r = col + 1; r < 4; ++r)
-            if (std::abs(a[r][col]) > std::abs(a[pivot][col])) pivot = r;
-        if (!(std::abs(a[pivot][col]) > 0))
-            throw Error("birefringence: the interface equations are singular");
-        if (pivot != col) {
-            for (int j = 0; j < 4; ++j) std::swap(a[col][j], a[pivot][j]);
-            for (int j = 0; j < columns; ++j) std::swap(b[col][j], b[pivot][j]);
-        }
-        for (int r = col + 1; r < 4; ++r) {
-            const Complex f = a[r][col] / a[col][col];
-            for (int j = col; j < 4; ++j) a[r][j] -= f * a[col][j];
-            for (int j = 0; j < columns; ++j) b[r][j] -= f * b[col][j];
-        }
-    }
-    for (int col = 3; col >= 0; --col)
-        for (int j = 0; j < columns; ++j) {
-            Complex sum = b[col][j];
-            for (int k = col + 1; k < 4; ++k) sum -= a[col][k] * b[k][j];
-            b[col][j] = sum / a[col][col];
-        }
-}
-
 // The four tangential components (E.t1, E.t2, H.t1, H.t2) of a wave, t1 = s, t2 = N x s.
 void tangential(const Wave& w, const Vec3& t1, const Vec3& t2, Complex out[4]) {
     const CVec3 h = cross(w.k, w.field);
@@ -180,25 +159,51 @@ void tangential(const Wave& w, const Vec3& t1, const Vec3& t2, Complex out[4]) {
     out[3] = dot(h, b);
 }
 
+// z / w without the library's scaled complex division (__divdc3): |w| is far from overflow here.
+Complex divide(Complex z, Complex w) {
+    return z * std::conj(w) / std::norm(w);
+}
+
 // Matches tangential E and H across the interface for `count` incident waves: incident + reflected =
-// transmitted, the unknowns being the two reflected and the two transmitted amplitudes. Fills the outgoing
-// waves' amplitudes, flux ratios and shares.
+// transmitted, the unknowns being the two reflected and the two transmitted amplitudes (n the isotropic
+// medium's index). Fills the outgoing waves' amplitudes, flux ratios and shares.
+//
+// The isotropic medium's s and p waves need no general 4x4 solve: with q = N.k their tangential components
+// are s: (1, 0, 0, q) and p: (0, q / n, -n, 0) (E = k x s / n, H = k x E = -n s as k.k = n^2), so s appears
+// only in rows 0 and 3 and p only in rows 1 and 2. Eliminating them leaves a 2x2 system for the crystal's
+// two waves (Yariv & Yeh ch. 4; Lekner 1991 reduces it the same way), solved by Cramer's rule.
 void matchFields(const UniaxialMedium& crystal, bool crystalReflects, const Wave incident[2], int count,
-                 const Wave reflected[2], const Wave transmitted[2], const Vec3& N, const Vec3& s,
+                 const Wave reflected[2], const Wave transmitted[2], const Vec3& N, const Vec3& s, double n,
                  InterfaceWaves& out) {
     const Vec3 t2 = cross(N, s);
-    Complex a[4][4], b[4][2], column[4];
+    // incident = sum of u_j A_j: A_j = +transmitted_j, -reflected_j; iso[0], iso[1] are the s and p waves.
+    const Wave* crystalWaves = crystalReflects ? reflected : transmitted;
+    const Wave* iso = crystalReflects ? transmitted : reflected;
+    const double crystalSign = crystalReflects ? -1 : 1, isoSign = -crystalSign;
+    Complex c[2][4];  // the crystal waves' columns A
     for (int j = 0; j < 2; ++j) {
-        tangential(reflected[j], s, t2, column);
-        for (int r = 0; r < 4; ++r) a[r][j] = -column[r];
-        tangential(transmitted[j], s, t2, column);
-        for (int r = 0; r < 4; ++r) a[r][2 + j] = column[r];
+        tangential(crystalWaves[j], s, t2, c[j]);
+        for (Complex& v : c[j]) v *= crystalSign;
     }
+    const Complex q = iso[0].q, g = q / (n * n);
+    const Complex m00 = c[0][3] - q * c[0][0], m01 = c[1][3] - q * c[1][0];
+    const Complex m10 = c[0][1] + g * c[0][2], m11 = c[1][1] + g * c[1][2];
+    const Complex det = m00 * m11 - m01 * m10;
+    if (!(std::norm(det) > 0)) throw Error("birefringence: the interface equations are singular");
+
+    // x[row][i]: the amplitude of wave `row` (reflected 0, 1, transmitted 0, 1) for incident wave i.
+    Complex x[4][2];
+    const int crystalRow = crystalReflects ? 0 : 2, isoRow = 2 - crystalRow;
     for (int i = 0; i < count; ++i) {
-        tangential(incident[i], s, t2, column);
-        for (int r = 0; r < 4; ++r) b[r][i] = column[r];
+        Complex b[4];
+        tangential(incident[i], s, t2, b);
+        const Complex r0 = b[3] - q * b[0], r1 = b[1] + g * b[2];
+        const Complex u0 = divide(r0 * m11 - m01 * r1, det), u1 = divide(m00 * r1 - m10 * r0, det);
+        x[crystalRow][i] = u0;
+        x[crystalRow + 1][i] = u1;
+        x[isoRow][i] = isoSign * (b[0] - c[0][0] * u0 - c[1][0] * u1);
+        x[isoRow + 1][i] = isoSign * (c[0][2] * u0 + c[1][2] * u1 - b[2]) / n;
     }
-    solve4(a, b, count);
 
     // Every incident basis wave has a unit real field and the same wave vector, so one incident flux serves.
     const double incidentFlux = normalFlux(incident[0]);
@@ -214,7 +219,7 @@ void matchFields(const UniaxialMedium& crystal, bool crystalReflects, const Wave
         }
         for (int i = 0; i < count; ++i) {
             // The amplitude refers to the unit field (wave.field), not to the unnormalised one solved for.
-            o.amplitude[i] = b[row][i] * fieldScale;
+            o.amplitude[i] = x[row][i] * fieldScale;
             o.share[i] = o.fluxRatio * std::norm(o.amplitude[i]);
         }
     };
@@ -247,15 +252,23 @@ double extraordinaryIndex(const UniaxialMedium& medium, const Vec3& waveNormal) 
 }
 
 PlaneWave ordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal) {
-    const Wave w{WaveMode::Ordinary, toComplex(waveNormal * medium.nO),
-                 ordinaryField(medium, toComplex(waveNormal), perpendicularTo(medium.axis)), true, 0};
+    const Wave w{WaveMode::Ordinary,
+                 toComplex(waveNormal * medium.nO),
+                 ordinaryField(medium, toComplex(waveNormal), perpendicularTo(medium.axis)),
+                 true,
+                 0,
+                 0};
     return toPlaneWave(&medium, w);
 }
 
 PlaneWave extraordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal) {
     const Vec3 k = waveNormal * extraordinaryIndex(medium, waveNormal);
-    const Wave w{WaveMode::Extraordinary, toComplex(k),
-                 extraordinaryField(medium, toComplex(k), perpendicularTo(medium.axis)), true, 0};
+    const Wave w{WaveMode::Extraordinary,
+                 toComplex(k),
+                 extraordinaryField(medium, toComplex(k), perpendicularTo(medium.axis)),
+                 true,
+                 0,
+                 0};
     return toPlaneWave(&medium, w);
 }
 
@@ -277,7 +290,7 @@ InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction
     InterfaceWaves out;
     out.incidentCount = 2;
     for (int i = 0; i < 2; ++i) out.incident[i] = toPlaneWave(nullptr, incident[i]);
-    matchFields(crystal, false, incident, 2, reflected, transmitted, N, s, out);
+    matchFields(crystal, false, incident, 2, reflected, transmitted, N, s, nOutside, out);
     return out;
 }
 
@@ -298,7 +311,7 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
     const Wave twin = incident.mode == WaveMode::Ordinary ? ordinaryInterfaceWave(crystal, kt, N, s, 1)
                                                           : extraordinaryInterfaceWave(crystal, kt, N, s, 1);
     const double rayNormal = twin.rayNormal > 0 ? twin.rayNormal : dot(incident.ray, N);
-    const Wave in[1] = {{incident.mode, toComplex(k), toComplex(incident.field), true, rayNormal}};
+    const Wave in[1] = {{incident.mode, toComplex(k), toComplex(incident.field), true, rayNormal, dot(k, N)}};
     const Wave reflected[2] = {ordinaryInterfaceWave(crystal, kt, N, s, -1),
                                extraordinaryInterfaceWave(crystal, kt, N, s, -1)};
     const Wave transmitted[2] = {isotropicWave(WaveMode::S, nOutside, kt, N, s, 1),
@@ -306,7 +319,7 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
     InterfaceWaves out;
     out.incidentCount = 1;
     out.incident[0] = incident;
-    matchFields(crystal, true, in, 1, reflected, transmitted, N, s, out);
+    matchFields(crystal, true, in, 1, reflected, transmitted, N, s, nOutside, out);
     return out;
 }
 
