@@ -117,36 +117,56 @@ Wave ordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const Vec3& 
     return {WaveMode::Ordinary, k, ordinaryField(m, k, s), q2 > 0, q2 > 0 ? q.real() / m.nO : 0, q};
 }
 
-Wave extraordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s,
-                                int side) {
-    const Vec3 epsN = epsilonTimes(m, N);
+// The extraordinary wave's quadratic for a tangential kt (above): eps N and eps kt, whose sum eps kt + q eps
+// N is eps k, a, b and the discriminant b^2 - a c, shared by the waves of both sides.
+struct ExtraordinaryRoots {
+    Vec3 epsN, epsKt;
+    double a, b, discriminant;
+};
+ExtraordinaryRoots extraordinaryRoots(const UniaxialMedium& m, const Vec3& kt, const Vec3& N) {
+    const Vec3 epsN = epsilonTimes(m, N), epsKt = epsilonTimes(m, kt);
     const double a = dot(N, epsN), b = dot(kt, epsN);
-    const double c = dot(kt, epsilonTimes(m, kt)) - m.nO * m.nO * m.nE * m.nE;
-    const double discriminant = b * b - a * c;
-    const Complex q = (-b + double(side) * principalRoot(discriminant)) / a;
+    const double c = dot(kt, epsKt) - m.nO * m.nO * m.nE * m.nE;
+    return {epsN, epsKt, a, b, b * b - a * c};
+}
+// The root q of `side` and, when it propagates, the normal component of its unit ray, sqrt(b^2 - a c) / |eps
+// k|.
+Complex extraordinaryRoot(const ExtraordinaryRoots& r, int side) {
+    return (-r.b + double(side) * principalRoot(r.discriminant)) / r.a;
+}
+double extraordinaryRayNormal(const ExtraordinaryRoots& r, int side, double q) {
+    return side * std::sqrt(r.discriminant) / length(r.epsKt + r.epsN * q);
+}
+
+Wave extraordinaryInterfaceWave(const UniaxialMedium& m, const ExtraordinaryRoots& r, const Vec3& kt,
+                                const Vec3& N, const Vec3& s, int side) {
+    const Complex q = extraordinaryRoot(r, side);
     const CVec3 k = toComplex(kt) + toComplex(N) * q;
-    const bool propagating = discriminant > 0;
-    const double rayNormal =
-        propagating ? side * std::sqrt(discriminant) / length(epsilonTimes(m, realPart(k))) : 0;
+    const bool propagating = r.discriminant > 0;
+    const double rayNormal = propagating ? extraordinaryRayNormal(r, side, q.real()) : 0;
     return {WaveMode::Extraordinary, k, extraordinaryField(m, k, s), propagating, rayNormal, q};
 }
 
-// The time-averaged Poynting flux along N of a propagating wave of unit field, up to the factor common to
-// every wave: N . Re(E x conj(H)) with H = k x E, i.e. |k - E (k.E)| times the normal component of the ray.
-double normalFlux(const Wave& w) {
-    const Vec3 k = realPart(w.k), e = normalize(realPart(w.field));
-    return length(k - e * dot(k, e)) * w.rayNormal;
+// The time-averaged Poynting flux along N of a propagating wave of wave vector k, unit field e and ray normal
+// component rayNormal, up to the factor common to every wave: N . Re(E x conj(H)) with H = k x E, i.e.
+// |k - E (k.E)| times the normal component of the ray.
+double normalFlux(const Vec3& k, const Vec3& e, double rayNormal) {
+    return length(k - e * dot(k, e)) * rayNormal;
 }
 
-PlaneWave toPlaneWave(const UniaxialMedium* crystal, const Wave& w) {
+// The propagating wave w as a PlaneWave, its unit field e given.
+PlaneWave toPlaneWave(const UniaxialMedium* crystal, const Wave& w, const Vec3& e) {
     const Vec3 k = realPart(w.k);
     PlaneWave p;
     p.mode = w.mode;
     p.index = length(k);
     p.waveNormal = k / p.index;
-    p.field = normalize(realPart(w.field));
+    p.field = e;
     p.ray = w.mode == WaveMode::Extraordinary ? normalize(epsilonTimes(*crystal, k)) : p.waveNormal;
     return p;
+}
+PlaneWave toPlaneWave(const UniaxialMedium* crystal, const Wave& w) {
+    return toPlaneWave(crystal, w, normalize(realPart(w.field)));
 }
 
 // The four tangential components (E.t1, E.t2, H.t1, H.t2) of a wave, t1 = s, t2 = N x s.
@@ -206,16 +226,20 @@ void matchFields(const UniaxialMedium& crystal, bool crystalReflects, const Wave
     }
 
     // Every incident basis wave has a unit real field and the same wave vector, so one incident flux serves.
-    const double incidentFlux = normalFlux(incident[0]);
+    const double incidentFlux =
+        normalFlux(realPart(incident[0].k), normalize(realPart(incident[0].field)), incident[0].rayNormal);
     const UniaxialMedium* reflectedIn = crystalReflects ? &crystal : nullptr;
     const UniaxialMedium* transmittedIn = crystalReflects ? nullptr : &crystal;
     auto fill = [&](OutgoingWave& o, const Wave& w, const UniaxialMedium* medium, int row, double sign) {
         o.propagating = w.propagating;
-        double fieldScale = std::sqrt(norm2(w.field));
+        double fieldScale;
         if (w.propagating) {
-            o.wave = toPlaneWave(medium, w);
-            fieldScale = length(realPart(w.field));
-            o.fluxRatio = sign * normalFlux(w) / incidentFlux;
+            const Vec3 field = realPart(w.field);
+            fieldScale = length(field);
+            o.wave = toPlaneWave(medium, w, field / fieldScale);
+            o.fluxRatio = sign * normalFlux(realPart(w.k), o.wave.field, w.rayNormal) / incidentFlux;
+        } else {
+            fieldScale = std::sqrt(norm2(w.field));
         }
         for (int i = 0; i < count; ++i) {
             // The amplitude refers to the unit field (wave.field), not to the unnormalised one solved for.
@@ -285,8 +309,9 @@ InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction
                               isotropicWave(WaveMode::P, nOutside, kt, N, s, 1)};
     const Wave reflected[2] = {isotropicWave(WaveMode::S, nOutside, kt, N, s, -1),
                                isotropicWave(WaveMode::P, nOutside, kt, N, s, -1)};
-    const Wave transmitted[2] = {ordinaryInterfaceWave(crystal, kt, N, s, 1),
-                                 extraordinaryInterfaceWave(crystal, kt, N, s, 1)};
+    const Wave transmitted[2] = {
+        ordinaryInterfaceWave(crystal, kt, N, s, 1),
+        extraordinaryInterfaceWave(crystal, extraordinaryRoots(crystal, kt, N), kt, N, s, 1)};
     InterfaceWaves out;
     out.incidentCount = 2;
     for (int i = 0; i < 2; ++i) out.incident[i] = toPlaneWave(nullptr, incident[i]);
@@ -307,13 +332,17 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
     const Vec3 s = sDirection(kt, N);
 
     // The incident wave as given (its field may be any one of a degenerate pair), its ray's normal
-    // component from the same root as its reflected twin's (Wave), unless rounding at grazing loses the root.
-    const Wave twin = incident.mode == WaveMode::Ordinary ? ordinaryInterfaceWave(crystal, kt, N, s, 1)
-                                                          : extraordinaryInterfaceWave(crystal, kt, N, s, 1);
-    const double rayNormal = twin.rayNormal > 0 ? twin.rayNormal : dot(incident.ray, N);
-    const Wave in[1] = {{incident.mode, toComplex(k), toComplex(incident.field), true, rayNormal, dot(k, N)}};
+    // component from the same root as its reflected twin's (Wave), unless rounding at grazing loses the root;
+    // an ordinary twin's is the reflected ordinary wave's negated.
+    const ExtraordinaryRoots roots = extraordinaryRoots(crystal, kt, N);
     const Wave reflected[2] = {ordinaryInterfaceWave(crystal, kt, N, s, -1),
-                               extraordinaryInterfaceWave(crystal, kt, N, s, -1)};
+                               extraordinaryInterfaceWave(crystal, roots, kt, N, s, -1)};
+    const double twinRayNormal = incident.mode == WaveMode::Ordinary ? -reflected[0].rayNormal
+                                 : roots.discriminant > 0
+                                     ? extraordinaryRayNormal(roots, 1, extraordinaryRoot(roots, 1).real())
+                                     : 0;
+    const double rayNormal = twinRayNormal > 0 ? twinRayNormal : dot(incident.ray, N);
+    const Wave in[1] = {{incident.mode, toComplex(k), toComplex(incident.field), true, rayNormal, dot(k, N)}};
     const Wave transmitted[2] = {isotropicWave(WaveMode::S, nOutside, kt, N, s, 1),
                                  isotropicWave(WaveMode::P, nOutside, kt, N, s, 1)};
     InterfaceWaves out;
