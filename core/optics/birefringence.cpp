@@ -179,11 +179,13 @@ Wave<T> extraordinaryInterfaceWave(const UniaxialMedium& m, const ExtraordinaryR
     return {WaveMode::Extraordinary, k, extraordinaryField(m, k, s), propagating, rayNormal, q};
 }
 
-// The time-averaged Poynting flux along N of a propagating wave of wave vector k, unit field e and ray normal
-// component rayNormal, up to the factor common to every wave: N . Re(E x conj(H)) with H = k x E, i.e.
-// |k - E (k.E)| times the normal component of the ray.
-double normalFlux(const Vec3& k, const Vec3& e, double rayNormal) {
-    return length(k - e * dot(k, e)) * rayNormal;
+// The time-averaged Poynting flux along N of propagating wave p whose ray has the normal component rayNormal,
+// up to the factor common to every wave: N . Re(E x conj(H)) with H = k x E, i.e. |k - E (k.E)| times
+// rayNormal, where |k - E (k.E)| = |k| unless p is extraordinary (E is across k in the others).
+double normalFlux(const PlaneWave& p, double rayNormal) {
+    const double across =
+        p.mode == WaveMode::Extraordinary ? length(p.waveNormal - p.field * dot(p.waveNormal, p.field)) : 1;
+    return p.index * across * rayNormal;
 }
 
 // The propagating wave w as a PlaneWave, its unit field e given.
@@ -266,9 +268,9 @@ void matchFields(const UniaxialMedium& crystal, bool crystalReflects, const Wave
         x[isoRow + 1][i] = isoSign * (c[0][2] * u0 + c[1][2] * u1 - b[2]) / n;
     }
 
-    // Every incident basis wave has a unit real field and the same wave vector, so one incident flux serves.
-    const double incidentFlux =
-        normalFlux(realPart(incident[0].k), normalize(realPart(incident[0].field)), incident[0].rayNormal);
+    // Every incident basis wave has a unit real field and the same wave vector, so one incident flux serves
+    // (out.incident[0] is set).
+    const double incidentFlux = normalFlux(out.incident[0], incident[0].rayNormal);
     auto fill = [&](OutgoingWave& o, const auto& w, const UniaxialMedium* medium, int row, double sign) {
         o.propagating = w.propagating;
         double fieldScale;
@@ -276,7 +278,7 @@ void matchFields(const UniaxialMedium& crystal, bool crystalReflects, const Wave
             const Vec3 field = realPart(w.field);
             fieldScale = length(field);
             o.wave = toPlaneWave(medium, w, field / fieldScale);
-            o.fluxRatio = sign * normalFlux(realPart(w.k), o.wave.field, w.rayNormal) / incidentFlux;
+            o.fluxRatio = sign * normalFlux(o.wave, w.rayNormal) / incidentFlux;
         } else {
             fieldScale = std::sqrt(norm2(w.field));
         }
