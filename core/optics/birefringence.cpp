@@ -1,6 +1,7 @@
 #include "optics/birefringence.h"
 
 #include <cmath>
+#include <type_traits>
 
 #include "util/error.h"
 
@@ -13,9 +14,6 @@ struct CVec3 {
     Complex x, y, z;
 };
 
-CVec3 toComplex(const Vec3& v) {
-    return {v.x, v.y, v.z};
-}
 CVec3 operator+(const CVec3& a, const CVec3& b) {
     return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
@@ -37,6 +35,24 @@ double norm2(const CVec3& a) {
 Vec3 realPart(const CVec3& a) {
     return {a.x.real(), a.y.real(), a.z.real()};
 }
+double norm2(const Vec3& a) {
+    return dot(a, a);
+}
+const Vec3& realPart(const Vec3& a) {
+    return a;
+}
+
+// The interface arithmetic is written once over its number types: double for a pair of waves (the crystal's
+// two, or the s and p waves outside) that both propagate, their wave vectors and fields being real (light
+// entering from air; inside, every wave but the outside ones under total internal reflection), Complex for a
+// pair with an evanescent wave. Real numbers in complex arithmetic round the same, so the types agree but for
+// the 2x2 division's rounding.
+template <class T>
+using Vec3Of = std::conditional_t<std::is_same_v<T, double>, Vec3, CVec3>;
+template <class T>
+Vec3Of<T> lift(const Vec3& v) {
+    return {v.x, v.y, v.z};
+}
 
 // Any unit vector perpendicular to unit n (Duff et al., "Building an orthonormal basis, revisited", 2017).
 Vec3 perpendicularTo(const Vec3& n) {
@@ -50,9 +66,10 @@ Vec3 perpendicularTo(const Vec3& n) {
 constexpr double kAlongAxis = 1e-9;
 
 // eps^-1 v for eps = n_o^2 I + (n_e^2 - n_o^2) c c^T.
-CVec3 inverseEpsilonTimes(const UniaxialMedium& m, const CVec3& v) {
+template <class V>
+V inverseEpsilonTimes(const UniaxialMedium& m, const V& v) {
     const double io = 1 / (m.nO * m.nO), ie = 1 / (m.nE * m.nE);
-    const CVec3 c = toComplex(m.axis);
+    const V c{m.axis.x, m.axis.y, m.axis.z};
     return v * io + c * (dot(c, v) * (ie - io));
 }
 Vec3 epsilonTimes(const UniaxialMedium& m, const Vec3& v) {
@@ -61,17 +78,20 @@ Vec3 epsilonTimes(const UniaxialMedium& m, const Vec3& v) {
 
 // E of the ordinary wave of (possibly complex) wave vector k: along k x c, perpendicular to the axis and to k
 // (Born & Wolf ch. 15). Along the axis, the part of `reference` perpendicular to the axis.
-CVec3 ordinaryField(const UniaxialMedium& m, const CVec3& k, const Vec3& reference) {
-    const CVec3 e = cross(k, toComplex(m.axis));
+template <class V>
+V ordinaryField(const UniaxialMedium& m, const V& k, const Vec3& reference) {
+    const V e = cross(k, V{m.axis.x, m.axis.y, m.axis.z});
     if (norm2(e) > kAlongAxis * kAlongAxis * norm2(k)) return e;
-    return toComplex(reference - m.axis * dot(m.axis, reference));
+    const Vec3 r = reference - m.axis * dot(m.axis, reference);
+    return {r.x, r.y, r.z};
 }
 
 // E of the extraordinary wave: D lies in the plane of k and c, perpendicular to k, D ~ c (k.k) - k (k.c), and
 // E = eps^-1 D (Yariv & Yeh ch. 4). Along the axis, k x E_o.
-CVec3 extraordinaryField(const UniaxialMedium& m, const CVec3& k, const Vec3& reference) {
-    const CVec3 c = toComplex(m.axis);
-    const CVec3 d = c * dot(k, k) - k * dot(k, c);
+template <class V>
+V extraordinaryField(const UniaxialMedium& m, const V& k, const Vec3& reference) {
+    const V c{m.axis.x, m.axis.y, m.axis.z};
+    const V d = c * dot(k, k) - k * dot(k, c);
     if (norm2(d) > kAlongAxis * kAlongAxis * norm2(k) * norm2(k)) return inverseEpsilonTimes(m, d);
     return cross(k, ordinaryField(m, k, reference));
 }
@@ -81,13 +101,26 @@ CVec3 extraordinaryField(const UniaxialMedium& m, const CVec3& k, const Vec3& re
 // (q / n, or sqrt(b^2 - a c) / |eps k|) rather than from the vectors: near grazing it is small, and the
 // incident and the reflected wave of the same kind then carry exactly opposite fluxes, which keeps energy
 // conserved to rounding there too.
+template <class T>
 struct Wave {
     WaveMode mode;
-    CVec3 k;
-    CVec3 field;
+    Vec3Of<T> k;
+    Vec3Of<T> field;
     bool propagating;
     double rayNormal;
+    T q;  // N . k
 };
+
+// The principal square root of a real x, as std::sqrt(Complex(x, +0)) gives it, without the complex call (x
+// is not negative where T is double).
+template <class T>
+T principalRoot(double x) {
+    if constexpr (std::is_same_v<T, double>) {
+        return std::sqrt(x);
+    } else {
+        return x >= 0 ? Complex(std::sqrt(x), 0) : Complex(0, std::sqrt(-x));
+    }
+}
 
 // The normal component q of the wave vector kt + q N of each outgoing wave. `side` is +1 for the waves whose
 // energy leaves along +N (transmitted), -1 for those leaving along -N (reflected); an evanescent wave must
@@ -96,131 +129,169 @@ struct Wave {
 // b = kt.eps.N, c = kt.eps.kt - n_o^2 n_e^2; its ray is along eps k (the normal to the index surface), whose
 // normal component is b + a q = +-sqrt(b^2 - a c): the root with +sqrt sends energy along +N whichever way
 // its wave normal points. The principal complex square root gives the decaying root for either side.
-Wave isotropicWave(WaveMode mode, double n, const Vec3& kt, const Vec3& N, const Vec3& s, int side) {
-    const Complex q = double(side) * std::sqrt(Complex(n * n - dot(kt, kt)));
-    const CVec3 k = toComplex(kt) + toComplex(N) * q;
+template <class T>
+Wave<T> isotropicWave(WaveMode mode, double n, const Vec3& kt, const Vec3& N, const Vec3& s, int side) {
+    const T q = double(side) * principalRoot<T>(n * n - dot(kt, kt));
+    const Vec3Of<T> k = lift<T>(kt) + lift<T>(N) * q;
     const bool propagating = n * n - dot(kt, kt) > 0;
-    const CVec3 field = mode == WaveMode::S ? toComplex(s) : cross(k, toComplex(s)) * (1 / n);
-    return {mode, k, field, propagating, propagating ? q.real() / n : 0};
+    const Vec3Of<T> field = mode == WaveMode::S ? lift<T>(s) : cross(k, lift<T>(s)) * (1 / n);
+    return {mode, k, field, propagating, propagating ? std::real(q) / n : 0, q};
 }
 
-Wave ordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s, int side) {
+template <class T>
+Wave<T> ordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s,
+                              int side) {
     const double q2 = m.nO * m.nO - dot(kt, kt);
-    const Complex q = double(side) * std::sqrt(Complex(q2));
-    const CVec3 k = toComplex(kt) + toComplex(N) * q;
-    return {WaveMode::Ordinary, k, ordinaryField(m, k, s), q2 > 0, q2 > 0 ? q.real() / m.nO : 0};
+    const T q = double(side) * principalRoot<T>(q2);
+    const Vec3Of<T> k = lift<T>(kt) + lift<T>(N) * q;
+    return {WaveMode::Ordinary, k, ordinaryField(m, k, s), q2 > 0, q2 > 0 ? std::real(q) / m.nO : 0, q};
 }
 
-Wave extraordinaryInterfaceWave(const UniaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s,
-                                int side) {
-    const Vec3 epsN = epsilonTimes(m, N);
+// The extraordinary wave's quadratic for a tangential kt (above): eps N and eps kt, whose sum eps kt + q eps
+// N is eps k, a, b and the discriminant b^2 - a c, shared by the waves of both sides.
+struct ExtraordinaryRoots {
+    Vec3 epsN, epsKt;
+    double a, b, discriminant;
+};
+ExtraordinaryRoots extraordinaryRoots(const UniaxialMedium& m, const Vec3& kt, const Vec3& N) {
+    const Vec3 epsN = epsilonTimes(m, N), epsKt = epsilonTimes(m, kt);
     const double a = dot(N, epsN), b = dot(kt, epsN);
-    const double c = dot(kt, epsilonTimes(m, kt)) - m.nO * m.nO * m.nE * m.nE;
-    const double discriminant = b * b - a * c;
-    const Complex q = (-b + double(side) * std::sqrt(Complex(discriminant))) / a;
-    const CVec3 k = toComplex(kt) + toComplex(N) * q;
-    const bool propagating = discriminant > 0;
-    const double rayNormal =
-        propagating ? side * std::sqrt(discriminant) / length(epsilonTimes(m, realPart(k))) : 0;
-    return {WaveMode::Extraordinary, k, extraordinaryField(m, k, s), propagating, rayNormal};
+    const double c = dot(kt, epsKt) - m.nO * m.nO * m.nE * m.nE;
+    return {epsN, epsKt, a, b, b * b - a * c};
+}
+// The root q of `side` and, when it propagates, the normal component of its unit ray, sqrt(b^2 - a c) / |eps
+// k|.
+template <class T>
+T extraordinaryRoot(const ExtraordinaryRoots& r, int side) {
+    return (-r.b + double(side) * principalRoot<T>(r.discriminant)) / r.a;
+}
+double extraordinaryRayNormal(const ExtraordinaryRoots& r, int side, double q) {
+    return side * std::sqrt(r.discriminant) / length(r.epsKt + r.epsN * q);
 }
 
-// The time-averaged Poynting flux along N of a propagating wave of unit field, up to the factor common to
-// every wave: N . Re(E x conj(H)) with H = k x E, i.e. |k - E (k.E)| times the normal component of the ray.
-double normalFlux(const Wave& w) {
-    const Vec3 k = realPart(w.k), e = normalize(realPart(w.field));
-    return length(k - e * dot(k, e)) * w.rayNormal;
+template <class T>
+Wave<T> extraordinaryInterfaceWave(const UniaxialMedium& m, const ExtraordinaryRoots& r, const Vec3& kt,
+                                   const Vec3& N, const Vec3& s, int side) {
+    const T q = extraordinaryRoot<T>(r, side);
+    const Vec3Of<T> k = lift<T>(kt) + lift<T>(N) * q;
+    const bool propagating = r.discriminant > 0;
+    const double rayNormal = propagating ? extraordinaryRayNormal(r, side, std::real(q)) : 0;
+    return {WaveMode::Extraordinary, k, extraordinaryField(m, k, s), propagating, rayNormal, q};
 }
 
-PlaneWave toPlaneWave(const UniaxialMedium* crystal, const Wave& w) {
+// The time-averaged Poynting flux along N of propagating wave p whose ray has the normal component rayNormal,
+// up to the factor common to every wave: N . Re(E x conj(H)) with H = k x E, i.e. |k - E (k.E)| times
+// rayNormal, where |k - E (k.E)| = |k| unless p is extraordinary (E is across k in the others).
+double normalFlux(const PlaneWave& p, double rayNormal) {
+    const double across =
+        p.mode == WaveMode::Extraordinary ? length(p.waveNormal - p.field * dot(p.waveNormal, p.field)) : 1;
+    return p.index * across * rayNormal;
+}
+
+// The propagating wave w as a PlaneWave, its unit field e given.
+template <class T>
+PlaneWave toPlaneWave(const UniaxialMedium* crystal, const Wave<T>& w, const Vec3& e) {
     const Vec3 k = realPart(w.k);
     PlaneWave p;
     p.mode = w.mode;
     p.index = length(k);
     p.waveNormal = k / p.index;
-    p.field = normalize(realPart(w.field));
+    p.field = e;
     p.ray = w.mode == WaveMode::Extraordinary ? normalize(epsilonTimes(*crystal, k)) : p.waveNormal;
     return p;
 }
-
-// Solves A x = b for a 4x4 complex A and `columns` right-hand sides by Gaussian elimination with partial
-// pivoting; b is overwritten with x.
-void solve4(Complex a[4][4], Complex b[4][2], int columns) {
-    for (int col = 0; col < 4; ++col) {
-        int pivot = col;
-        for (int r = col + 1; r < 4; ++r)
-            if (std::abs(a[r][col]) > std::abs(a[pivot][col])) pivot = r;
-        if (!(std::abs(a[pivot][col]) > 0))
-            throw Error("birefringence: the interface equations are singular");
-        if (pivot != col) {
-            for (int j = 0; j < 4; ++j) std::swap(a[col][j], a[pivot][j]);
-            for (int j = 0; j < columns; ++j) std::swap(b[col][j], b[pivot][j]);
-        }
-        for (int r = col + 1; r < 4; ++r) {
-            const Complex f = a[r][col] / a[col][col];
-            for (int j = col; j < 4; ++j) a[r][j] -= f * a[col][j];
-            for (int j = 0; j < columns; ++j) b[r][j] -= f * b[col][j];
-        }
-    }
-    for (int col = 3; col >= 0; --col)
-        for (int j = 0; j < columns; ++j) {
-            Complex sum = b[col][j];
-            for (int k = col + 1; k < 4; ++k) sum -= a[col][k] * b[k][j];
-            b[col][j] = sum / a[col][col];
-        }
+template <class T>
+PlaneWave toPlaneWave(const UniaxialMedium* crystal, const Wave<T>& w) {
+    return toPlaneWave(crystal, w, normalize(realPart(w.field)));
 }
 
 // The four tangential components (E.t1, E.t2, H.t1, H.t2) of a wave, t1 = s, t2 = N x s.
-void tangential(const Wave& w, const Vec3& t1, const Vec3& t2, Complex out[4]) {
-    const CVec3 h = cross(w.k, w.field);
-    const CVec3 a = toComplex(t1), b = toComplex(t2);
+template <class T>
+void tangential(const Wave<T>& w, const Vec3& t1, const Vec3& t2, T out[4]) {
+    const Vec3Of<T> h = cross(w.k, w.field);
+    const Vec3Of<T> a = lift<T>(t1), b = lift<T>(t2);
     out[0] = dot(w.field, a);
     out[1] = dot(w.field, b);
     out[2] = dot(h, a);
     out[3] = dot(h, b);
 }
 
-// Matches tangential E and H across the interface for `count` incident waves: incident + reflected =
-// transmitted, the unknowns being the two reflected and the two transmitted amplitudes. Fills the outgoing
-// waves' amplitudes, flux ratios and shares.
-void matchFields(const UniaxialMedium& crystal, bool crystalReflects, const Wave incident[2], int count,
-                 const Wave reflected[2], const Wave transmitted[2], const Vec3& N, const Vec3& s,
-                 InterfaceWaves& out) {
-    const Vec3 t2 = cross(N, s);
-    Complex a[4][4], b[4][2], column[4];
-    for (int j = 0; j < 2; ++j) {
-        tangential(reflected[j], s, t2, column);
-        for (int r = 0; r < 4; ++r) a[r][j] = -column[r];
-        tangential(transmitted[j], s, t2, column);
-        for (int r = 0; r < 4; ++r) a[r][2 + j] = column[r];
+// z / w, complex without the library's scaled division (__divdc3): |w| is far from overflow here.
+template <class T>
+T divide(T z, T w) {
+    if constexpr (std::is_same_v<T, double>) {
+        return z / w;
+    } else {
+        return z * std::conj(w) / std::norm(w);
     }
-    for (int i = 0; i < count; ++i) {
-        tangential(incident[i], s, t2, column);
-        for (int r = 0; r < 4; ++r) b[r][i] = column[r];
-    }
-    solve4(a, b, count);
+}
 
-    // Every incident basis wave has a unit real field and the same wave vector, so one incident flux serves.
-    const double incidentFlux = normalFlux(incident[0]);
-    const UniaxialMedium* reflectedIn = crystalReflects ? &crystal : nullptr;
-    const UniaxialMedium* transmittedIn = crystalReflects ? nullptr : &crystal;
-    auto fill = [&](OutgoingWave& o, const Wave& w, const UniaxialMedium* medium, int row, double sign) {
+// Matches tangential E and H across the interface for `count` incident waves: incident + reflected =
+// transmitted, the unknowns being the two reflected and the two transmitted amplitudes (n the isotropic
+// medium's index). Fills the outgoing waves' amplitudes, flux ratios and shares.
+//
+// The isotropic medium's s and p waves need no general 4x4 solve: with q = N.k their tangential components
+// are s: (1, 0, 0, q) and p: (0, q / n, -n, 0) (E = k x s / n, H = k x E = -n s as k.k = n^2), so s appears
+// only in rows 0 and 3 and p only in rows 1 and 2. Eliminating them leaves a 2x2 system for the crystal's
+// two waves (Yariv & Yeh ch. 4; Lekner 1991 reduces it the same way), solved by Cramer's rule. The crystal's
+// waves are reflected or transmitted as crystalReflects says, the isotropic waves iso[] (s, p) the others.
+template <class C, class I, class In>
+void matchFields(const UniaxialMedium& crystal, bool crystalReflects, const Wave<In> incident[2], int count,
+                 const Wave<C> crystalWaves[2], const Wave<I> iso[2], const Vec3& N, const Vec3& s, double n,
+                 InterfaceWaves& out) {
+    using T = std::conditional_t<std::is_same_v<C, double> && std::is_same_v<I, double>, double, Complex>;
+    const Vec3 t2 = cross(N, s);
+    // incident = sum of u_j A_j: A_j = +transmitted_j, -reflected_j.
+    const double crystalSign = crystalReflects ? -1 : 1, isoSign = -crystalSign;
+    C c[2][4];  // the crystal waves' columns A
+    for (int j = 0; j < 2; ++j) {
+        tangential(crystalWaves[j], s, t2, c[j]);
+        for (C& v : c[j]) v *= crystalSign;
+    }
+    const I q = iso[0].q, g = q / (n * n);
+    const T m00 = c[0][3] - q * c[0][0], m01 = c[1][3] - q * c[1][0];
+    const T m10 = c[0][1] + g * c[0][2], m11 = c[1][1] + g * c[1][2];
+    const T det = m00 * m11 - m01 * m10;
+    if (!(std::norm(det) > 0)) throw Error("birefringence: the interface equations are singular");
+
+    // x[row][i]: the amplitude of wave `row` (reflected 0, 1, transmitted 0, 1) for incident wave i.
+    Complex x[4][2];
+    const int crystalRow = crystalReflects ? 0 : 2, isoRow = 2 - crystalRow;
+    for (int i = 0; i < count; ++i) {
+        In b[4];
+        tangential(incident[i], s, t2, b);
+        const T r0 = b[3] - q * b[0], r1 = b[1] + g * b[2];
+        const T u0 = divide(r0 * m11 - m01 * r1, det), u1 = divide(m00 * r1 - m10 * r0, det);
+        x[crystalRow][i] = u0;
+        x[crystalRow + 1][i] = u1;
+        x[isoRow][i] = isoSign * (b[0] - c[0][0] * u0 - c[1][0] * u1);
+        x[isoRow + 1][i] = isoSign * (c[0][2] * u0 + c[1][2] * u1 - b[2]) / n;
+    }
+
+    // Every incident basis wave has a unit real field and the same wave vector, so one incident flux serves
+    // (out.incident[0] is set).
+    const double incidentFlux = normalFlux(out.incident[0], incident[0].rayNormal);
+    auto fill = [&](OutgoingWave& o, const auto& w, const UniaxialMedium* medium, int row, double sign) {
         o.propagating = w.propagating;
-        double fieldScale = std::sqrt(norm2(w.field));
+        double fieldScale;
         if (w.propagating) {
-            o.wave = toPlaneWave(medium, w);
-            fieldScale = length(realPart(w.field));
-            o.fluxRatio = sign * normalFlux(w) / incidentFlux;
+            const Vec3 field = realPart(w.field);
+            fieldScale = length(field);
+            o.wave = toPlaneWave(medium, w, field / fieldScale);
+            o.fluxRatio = sign * normalFlux(o.wave, w.rayNormal) / incidentFlux;
+        } else {
+            fieldScale = std::sqrt(norm2(w.field));
         }
         for (int i = 0; i < count; ++i) {
             // The amplitude refers to the unit field (wave.field), not to the unnormalised one solved for.
-            o.amplitude[i] = b[row][i] * fieldScale;
+            o.amplitude[i] = x[row][i] * fieldScale;
             o.share[i] = o.fluxRatio * std::norm(o.amplitude[i]);
         }
     };
     for (int j = 0; j < 2; ++j) {
-        fill(out.reflected[j], reflected[j], reflectedIn, j, -1);
-        fill(out.transmitted[j], transmitted[j], transmittedIn, 2 + j, 1);
+        fill(crystalReflects ? out.reflected[j] : out.transmitted[j], crystalWaves[j], &crystal,
+             crystalRow + j, crystalSign);
+        fill(crystalReflects ? out.transmitted[j] : out.reflected[j], iso[j], nullptr, isoRow + j, isoSign);
     }
 }
 
@@ -247,17 +318,80 @@ double extraordinaryIndex(const UniaxialMedium& medium, const Vec3& waveNormal) 
 }
 
 PlaneWave ordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal) {
-    const Wave w{WaveMode::Ordinary, toComplex(waveNormal * medium.nO),
-                 ordinaryField(medium, toComplex(waveNormal), perpendicularTo(medium.axis)), true, 0};
+    const Wave<double> w{WaveMode::Ordinary,
+                         waveNormal * medium.nO,
+                         ordinaryField(medium, waveNormal, perpendicularTo(medium.axis)),
+                         true,
+                         0,
+                         0};
     return toPlaneWave(&medium, w);
 }
 
 PlaneWave extraordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal) {
     const Vec3 k = waveNormal * extraordinaryIndex(medium, waveNormal);
-    const Wave w{WaveMode::Extraordinary, toComplex(k),
-                 extraordinaryField(medium, toComplex(k), perpendicularTo(medium.axis)), true, 0};
+    const Wave<double> w{
+        WaveMode::Extraordinary, k, extraordinaryField(medium, k, perpendicularTo(medium.axis)), true, 0, 0};
     return toPlaneWave(&medium, w);
 }
+
+namespace {
+
+// enterCrystal() once its number types are known (C for the crystal's waves, I for those outside): N is
+// along the incident energy flow, into the crystal.
+template <class C, class I>
+InterfaceWaves enterWith(const UniaxialMedium& crystal, const ExtraordinaryRoots& roots, const Vec3& kt,
+                         const Vec3& N, const Vec3& s, double nOutside) {
+    const Wave<I> incident[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
+                                 isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
+    const Wave<I> reflected[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, -1),
+                                  isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, -1)};
+    const Wave<C> transmitted[2] = {ordinaryInterfaceWave<C>(crystal, kt, N, s, 1),
+                                    extraordinaryInterfaceWave<C>(crystal, roots, kt, N, s, 1)};
+    InterfaceWaves out;
+    out.incidentCount = 2;
+    for (int i = 0; i < 2; ++i) out.incident[i] = toPlaneWave(nullptr, incident[i]);
+    matchFields(crystal, false, incident, 2, transmitted, reflected, N, s, nOutside, out);
+    return out;
+}
+
+// leaveCrystal() once its number types are known: N is along the incident energy flow, out of the crystal; k
+// the incident wave vector.
+template <class C, class I>
+InterfaceWaves leaveWith(const UniaxialMedium& crystal, const PlaneWave& incident,
+                         const ExtraordinaryRoots& roots, const Vec3& k, const Vec3& kt, const Vec3& N,
+                         const Vec3& s, double nOutside) {
+    // The incident wave as given (its field may be any one of a degenerate pair), its ray's normal
+    // component from the same root as its reflected twin's (Wave), unless rounding at grazing loses the root;
+    // an ordinary twin's is the reflected ordinary wave's negated.
+    const Wave<C> reflected[2] = {ordinaryInterfaceWave<C>(crystal, kt, N, s, -1),
+                                  extraordinaryInterfaceWave<C>(crystal, roots, kt, N, s, -1)};
+    const double twinRayNormal =
+        incident.mode == WaveMode::Ordinary ? -reflected[0].rayNormal
+        : roots.discriminant > 0 ? extraordinaryRayNormal(roots, 1, std::real(extraordinaryRoot<C>(roots, 1)))
+                                 : 0;
+    const double rayNormal = twinRayNormal > 0 ? twinRayNormal : dot(incident.ray, N);
+    const Wave<double> in[1] = {{incident.mode, k, incident.field, true, rayNormal, dot(k, N)}};
+    const Wave<I> transmitted[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
+                                    isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
+    InterfaceWaves out;
+    out.incidentCount = 1;
+    out.incident[0] = incident;
+    matchFields(crystal, true, in, 1, reflected, transmitted, N, s, nOutside, out);
+    return out;
+}
+
+// f(C{}, I{}) with the number types of an interface of tangential kt: double for the crystal's waves (C) or
+// the outside ones (I) where both of them propagate, by the conditions of the waves' `propagating`.
+template <class F>
+InterfaceWaves withNumberTypes(const UniaxialMedium& crystal, const ExtraordinaryRoots& roots, const Vec3& kt,
+                               double nOutside, F f) {
+    const double kt2 = dot(kt, kt);
+    const bool crystalReal = crystal.nO * crystal.nO - kt2 > 0 && roots.discriminant > 0;
+    if (nOutside * nOutside - kt2 > 0) return crystalReal ? f(double{}, double{}) : f(Complex{}, double{});
+    return crystalReal ? f(double{}, Complex{}) : f(Complex{}, Complex{});
+}
+
+}  // namespace
 
 InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction, const Vec3& outwardNormal,
                             double nOutside) {
@@ -267,18 +401,10 @@ InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction
     if (!(cosI > 0)) throw Error("birefringence: the light does not travel into the facet");
     const Vec3 kt = (direction - N * cosI) * nOutside;
     const Vec3 s = sDirection(kt, N);
-
-    const Wave incident[2] = {isotropicWave(WaveMode::S, nOutside, kt, N, s, 1),
-                              isotropicWave(WaveMode::P, nOutside, kt, N, s, 1)};
-    const Wave reflected[2] = {isotropicWave(WaveMode::S, nOutside, kt, N, s, -1),
-                               isotropicWave(WaveMode::P, nOutside, kt, N, s, -1)};
-    const Wave transmitted[2] = {ordinaryInterfaceWave(crystal, kt, N, s, 1),
-                                 extraordinaryInterfaceWave(crystal, kt, N, s, 1)};
-    InterfaceWaves out;
-    out.incidentCount = 2;
-    for (int i = 0; i < 2; ++i) out.incident[i] = toPlaneWave(nullptr, incident[i]);
-    matchFields(crystal, false, incident, 2, reflected, transmitted, N, s, out);
-    return out;
+    const ExtraordinaryRoots roots = extraordinaryRoots(crystal, kt, N);
+    return withNumberTypes(crystal, roots, kt, nOutside, [&](auto c, auto i) {
+        return enterWith<decltype(c), decltype(i)>(crystal, roots, kt, N, s, nOutside);
+    });
 }
 
 InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& incident,
@@ -292,22 +418,10 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
     const Vec3 k = incident.waveNormal * incident.index;
     const Vec3 kt = k - N * dot(k, N);
     const Vec3 s = sDirection(kt, N);
-
-    // The incident wave as given (its field may be any one of a degenerate pair), its ray's normal
-    // component from the same root as its reflected twin's (Wave), unless rounding at grazing loses the root.
-    const Wave twin = incident.mode == WaveMode::Ordinary ? ordinaryInterfaceWave(crystal, kt, N, s, 1)
-                                                          : extraordinaryInterfaceWave(crystal, kt, N, s, 1);
-    const double rayNormal = twin.rayNormal > 0 ? twin.rayNormal : dot(incident.ray, N);
-    const Wave in[1] = {{incident.mode, toComplex(k), toComplex(incident.field), true, rayNormal}};
-    const Wave reflected[2] = {ordinaryInterfaceWave(crystal, kt, N, s, -1),
-                               extraordinaryInterfaceWave(crystal, kt, N, s, -1)};
-    const Wave transmitted[2] = {isotropicWave(WaveMode::S, nOutside, kt, N, s, 1),
-                                 isotropicWave(WaveMode::P, nOutside, kt, N, s, 1)};
-    InterfaceWaves out;
-    out.incidentCount = 1;
-    out.incident[0] = incident;
-    matchFields(crystal, true, in, 1, reflected, transmitted, N, s, out);
-    return out;
+    const ExtraordinaryRoots roots = extraordinaryRoots(crystal, kt, N);
+    return withNumberTypes(crystal, roots, kt, nOutside, [&](auto c, auto i) {
+        return leaveWith<decltype(c), decltype(i)>(crystal, incident, roots, k, kt, N, s, nOutside);
+    });
 }
 
 double shareOf(const OutgoingWave& wave, const Coherency& j) {

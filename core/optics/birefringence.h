@@ -15,9 +15,10 @@
 // refraction by uniaxial crystals", J. Phys.: Condens. Matter 3, 6121 (1991), whose amplitudes r_ss ... t_pe
 // this solves numerically.
 //
-// Why a small 4x4 complex solve rather than Lekner's closed forms: one code path serves both sides of the
-// interface, any axis, and total internal reflection, and the isotropic limit (n_o == n_e) reduces to
-// Fresnel's s/p amplitudes to rounding. Everything is fixed-size: no heap allocation per call.
+// Why a numerical solve rather than Lekner's closed forms: one code path serves both sides of the interface,
+// any axis, and total internal reflection, and the isotropic limit (n_o == n_e) reduces to Fresnel's s/p
+// amplitudes to rounding. The isotropic side's s and p waves are eliminated in closed form, which leaves a
+// 2x2 complex system for the crystal's two waves. Everything is fixed-size: no heap allocation per call.
 #include <complex>
 
 #include "geometry/ray.h"
