@@ -122,9 +122,13 @@ TEST(JobCost, PolarisedAndDoublyRefractingTracesCostTheirMeasuredFactors) {
     s.trace.material = "sapphire";  // traced at n_o alone when unpolarised
     EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / polarised, 1, 1e-9);
     s.trace.polarization = PolarizationMode::On;
-    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / polarised, 30, 1e-9);
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / polarised, 12, 1e-9);
     s.trace.constantIndex = 1.77;  // one index: no double refraction
     EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / polarised, 1, 1e-9);
+    s.trace.constantIndex.reset();  // a job's own uniaxial material splits as a named one does
+    s.trace.material = "auto";
+    s.trace.customMaterial = readMaterialDefinition({{"n_o", 1.644}, {"n_e", 1.624}}, "custom_material");
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / polarised, 12, 1e-9);
 }
 
 TEST(JobCost, APolariscopeCostsItsPositionsPolarised) {
