@@ -33,12 +33,12 @@ void run(const DoublingOptions& o) {
     j["settings"] = toJson(settings);
     j["doubling"] = doublingSettingsSchema().write(view);
     if (!o.jsonPath.empty()) writeFile(o.jsonPath, j.dump(2) + "\n");
-    std::cout << doublingTitle(stone.name, settings) << "\n" << doublingSummary(d) << "\n";
+    std::cout << doublingTitle(stone, settings) << "\n" << doublingSummary(d) << "\n";
     if (!o.outDir.empty()) {
         const std::filesystem::path out(o.outDir);
         std::filesystem::create_directories(out);
         writeFile(out / "doubling.json", j.dump(2) + "\n");
-        writeFile(out / "doubling.png", encodePng(doublingPicture(d, doublingTitle(stone.name, settings))));
+        writeFile(out / "doubling.png", encodePng(doublingPicture(d, doublingTitle(stone, settings))));
     }
 }
 

@@ -7,10 +7,11 @@
 
 #include "commands.h"
 #include "cuts/mesh_resolver.h"
-#include "terminal_output.h"
 #include "image/image.h"
 #include "pictures/polariscope_chart.h"
 #include "pictures/webp_animation.h"
+#include "scene/scene.h"
+#include "terminal_output.h"
 #include "trace_options.h"
 #include "viewer/polariscope.h"
 
@@ -55,7 +56,8 @@ void run(const PolariscopeOptions& o) {
         std::filesystem::create_directories(out);
         writeFile(out / "polariscope.json", j.dump(2) + "\n");
         writeFile(out / "polariscope.png",
-                  encodePng(polariscopeChart(p, "Polariscope: " + stone.name + ", " + settings.material)));
+                  encodePng(polariscopeChart(p, "Polariscope: " + stone.name + ", " +
+                                                    chooseMaterial(settings, stone).material.name())));
         const std::vector<Image> frames = polariscopeFrames(p);
         writeFile(out / "polariscope.webp", encodeAnimatedWebp(frames, kPolariscopeFrameMs));
     }

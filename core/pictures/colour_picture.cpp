@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "pictures/face_up_frame.h"
+#include "scene/scene.h"
 #include "util/number_text.h"
 
 namespace facetlight {
@@ -37,9 +38,9 @@ Rgb display(const Vec3& xyz) {
 
 }  // namespace
 
-std::string colourTitle(const std::string& stoneName, const TraceSettings& settings) {
-    return "True colour face-up: " + stoneName + ", " + settings.material + ", " +
-           formatNumber("%g", settings.sizeMm) + " mm";
+std::string colourTitle(const Stone& stone, const TraceSettings& settings) {
+    return "True colour face-up: " + stone.name + ", " + chooseMaterial(settings, stone).material.name() +
+           ", " + formatNumber("%g", settings.sizeMm) + " mm";
 }
 
 std::string colourSummary(const ColourView& v) {

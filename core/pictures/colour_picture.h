@@ -4,11 +4,13 @@
 #include <string>
 
 #include "image/image.h"
+#include "stone/stone.h"
+#include "trace/trace_settings.h"
 #include "viewer/colour_view.h"
 
 namespace facetlight {
 
-std::string colourTitle(const std::string& stoneName, const TraceSettings& settings);
+std::string colourTitle(const Stone& stone, const TraceSettings& settings);
 // "L* 62.1 +- 0.3 (spread 14.2), a* ..., windowed 3.1 %": the figures in one line.
 std::string colourSummary(const ColourView& view);
 Image colourPicture(const ColourView& view, const std::string& title);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/scene.h"
+
 #include "pictures/face_up_frame.h"
 #include "util/number_text.h"
 
@@ -23,10 +25,11 @@ std::string mm(double v) {
 
 }  // namespace
 
-std::string doublingTitle(const std::string& stoneName, const TraceSettings& settings) {
-    return "Doubling: " + stoneName + ", " + settings.material + ", optic axis " +
-           formatNumber("%g", settings.opticAxis.tiltDeg) + " deg from the table's normal toward " +
-           formatNumber("%g", settings.opticAxis.azimuthDeg) + " deg";
+std::string doublingTitle(const Stone& stone, const TraceSettings& settings) {
+    return "Doubling: " + stone.name + ", " + chooseMaterial(settings, stone).material.name() +
+           ", optic axis " + formatNumber("%g", settings.opticAxis.tiltDeg) +
+           " deg from the table's normal toward " + formatNumber("%g", settings.opticAxis.azimuthDeg) +
+           " deg";
 }
 
 std::string doublingSummary(const Doubling& d) {

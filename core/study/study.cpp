@@ -148,20 +148,21 @@ StudyResult runStudy(const Stone& stone, const StudySettings& settings, RunContr
             const Polariscope p = polariscope(stone, settings.trace, *settings.polariscope, &control);
             result.stats["polariscope"] = toJson(p);
             result.file("polariscope.png") =
-                encodePng(polariscopeChart(p, "Polariscope: " + stone.name + ", " + settings.trace.material));
+                encodePng(polariscopeChart(p, "Polariscope: " + stone.name + ", " +
+                                                  chooseMaterial(settings.trace, stone).material.name()));
             if (settings.polariscope->pictureSize > 0)
                 result.file("polariscope.webp") = encodeAnimatedWebp(polariscopeFrames(p), kPolariscopeFrameMs);
         }
         if (comm.isRoot() && settings.doubling && !control.cancelled()) {
             const Doubling d = doubling(stone, settings.trace, *settings.doubling, &control);
             result.stats["doubling"] = toJson(d);
-            result.file("doubling.png") = encodePng(doublingPicture(d, doublingTitle(stone.name, settings.trace)));
+            result.file("doubling.png") = encodePng(doublingPicture(d, doublingTitle(stone, settings.trace)));
         }
         if (comm.isRoot() && settings.colour && !control.cancelled()) {
             const ColourView v = colourView(stone, settings.trace, *settings.colour, &control);
             if (v.cancelled) throw Canceled();
             result.stats["colour"] = toJson(v);
-            result.file("colour.png") = encodePng(colourPicture(v, colourTitle(stone.name, settings.trace)));
+            result.file("colour.png") = encodePng(colourPicture(v, colourTitle(stone, settings.trace)));
         }
         if (anyRank(comm, control.cancelled())) throw Canceled();
     }

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "pictures/colormap.h"
+#include "pictures/colour_picture.h"
+#include "pictures/doubling_picture.h"
 #include "pictures/heatmap.h"
 #include "pictures/tilt_chart.h"
 #include "support/fixtures.h"
@@ -26,6 +28,17 @@ TiltSeries switchedOf(uint64_t switched, uint64_t pixelPairs) {
 
 // The scintillation is written to its standard error's digits: a small error is not rounded to "0.0", a
 // larger one keeps its second digit when it starts with 1, and a share with no error is written alone.
+// The pictures name the material traced, not the job's "auto": the default's diamond, or a job's own.
+TEST(PictureTitles, NameTheMaterialTraced) {
+    TraceSettings settings;
+    EXPECT_NE(colourTitle(test::roundBrilliant(), settings).find(", diamond, 6.5 mm"), std::string::npos);
+    settings.customMaterial = MaterialDefinition{};
+    settings.customMaterial->name = "my spinel";
+    settings.customMaterial->n = 1.718;
+    EXPECT_NE(colourTitle(test::roundBrilliant(), settings).find(", my spinel, "), std::string::npos);
+    EXPECT_NE(doublingTitle(test::roundBrilliant(), settings).find(", my spinel, "), std::string::npos);
+}
+
 TEST(TiltChart, SubtitleWritesTheErrorToItsDigits) {
     // 7.4 % of a million pixel pairs: +- 0.026 %.
     EXPECT_EQ(tiltChartSubtitle(switchedOf(74'000, 1'000'000)),
