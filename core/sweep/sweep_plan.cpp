@@ -4,6 +4,7 @@
 #include <optional>
 #include <set>
 
+#include "scene/scene.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -22,6 +23,10 @@ void applyAxis(const SweepAxis& axis, size_t i, CutValues& cut, TraceSettings& t
         trace.light.headShadowDeg = axis.values[i];
     } else if (axis.name == "n") {
         trace.constantIndex = axis.values[i];
+    } else if (axis.name == "optic_axis_tilt") {
+        trace.opticAxis.tiltDeg = axis.values[i];
+    } else if (axis.name == "optic_axis_azimuth") {
+        trace.opticAxis.azimuthDeg = axis.values[i];
     } else if (axis.name == "size_mm") {
         trace.sizeMm = axis.values[i];
     } else if (axis.name == "material") {
@@ -45,12 +50,31 @@ size_t SweepPlan::pointCount() const {
 }
 
 std::string SweepPlan::unit(const SweepAxis& axis) const {
-    if (axis.name == "tilt" || axis.name == "head_shadow") return "deg";
+    if (axis.name == "tilt" || axis.name == "head_shadow" || axis.name == "optic_axis_tilt" ||
+        axis.name == "optic_axis_azimuth")
+        return "deg";
     if (axis.name == "size_mm") return "mm";
     if (isTraceAxis(axis.name)) return "";
     for (const CutParameter& p : cutShape().parameters)
         if (p.name == axis.name) return p.unit;
     return "";
+}
+
+// The optic axis means something to a uniaxial stone traced polarised (docs/optics.md, "Birefringent
+// stones"), and only the job's own material's: a material axis would change the stone under it.
+void SweepPlan::checkOpticAxisSweep(const std::string& name) const {
+    if (std::any_of(axes.begin(), axes.end(), [](const SweepAxis& a) { return a.name == "material"; }))
+        throw Error("sweep axis " + name +
+                    " turns one material's optic axis: sweep it without a material axis");
+    if (chosenOptic(trace) != Optic::Uniaxial)
+        throw Error("sweep axis " + name + " needs a uniaxial material, whose optic axis it turns (got " +
+                    (trace.constantIndex    ? std::string("a constant n")
+                     : trace.customMaterial ? trace.customMaterial->name
+                                            : trace.material) +
+                    ")");
+    if (trace.polarization == PolarizationMode::Off)
+        throw Error("sweep axis " + name +
+                    " needs polarization on: unpolarised tracing sees one index and no optic axis");
 }
 
 void SweepPlan::validate() const {
@@ -73,6 +97,8 @@ void SweepPlan::validate() const {
                         " nor a trace setting; the axes are: " + names);
         }
         if (axis.size() == 0) throw Error("sweep axis " + axis.name + " has no values");
+        if (axis.name == "optic_axis_tilt" || axis.name == "optic_axis_azimuth")
+            checkOpticAxisSweep(axis.name);
         if (axis.numeric() == isChoiceAxis(axis.name))
             throw Error("sweep axis " + axis.name + (axis.numeric() ? " takes names" : " takes numbers"));
         for (size_t i = 0; i < axis.size(); ++i) {

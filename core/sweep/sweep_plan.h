@@ -32,13 +32,18 @@ struct SweepPlan {
     std::optional<ColourSettings> colour;
 
     // Throws Error naming the fault: an unknown shape, parameter or axis, an axis given twice, a value
-    // outside its parameter's range, no axis or more than kMaxSweepAxes, more than kMaxSweepPoints points.
+    // outside its parameter's range, no axis or more than kMaxSweepAxes, more than kMaxSweepPoints points, an
+    // optic axis turned in a stone that is not uniaxial and polarised.
     void validate() const;
     // The shape swept: `file`'s, else the library's shape of that name.
     const CutShape& cutShape() const { return file ? file->shape : findCutShape(shape); }
     size_t pointCount() const;
-    // The unit of an axis: the parameter's ("deg", "%", ""), "deg" for tilt and head shadow, "mm" for size.
+    // The unit of an axis: the parameter's ("deg", "%", ""), "deg" for tilt, head shadow and the optic axis,
+    // "mm" for size.
     std::string unit(const SweepAxis& axis) const;
+
+  private:
+    void checkOpticAxisSweep(const std::string& name) const;
 };
 
 // One point of the grid: its position on each axis, the design and settings traced there, and what came out.

@@ -102,7 +102,7 @@ export function initSweepForm() {
 }
 
 // The quantities any stone can be swept over besides its own parameters (sweep_axis.h's trace axes).
-const TRACE_QUANTITIES = ['tilt', 'head_shadow', 'n', 'size_mm'];
+const TRACE_QUANTITIES = ['tilt', 'head_shadow', 'n', 'size_mm', 'optic_axis_tilt', 'optic_axis_azimuth'];
 // Every mesh the form offers, by its `mesh` name: a library shape's parameters, an upload's tiers.
 const sweepMeshes = new Map();
 
