@@ -1,4 +1,6 @@
-// facetlight trace: shoot photons at a stone and print the verdict and figures, or the statistics as JSON.
+// facetlight trace: shoot photons at a stone and print the verdict and figures, or the statistics as JSON;
+// with
+// --colour also the face-up colour's figures (the picture is render --colour's).
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -7,12 +9,14 @@
 #include "cuts/mesh_resolver.h"
 #include "process_communicator.h"
 #include "progress_json.h"
+#include "settings_flags.h"
 #include "stats_summary.h"
 #include "terminal_output.h"
 #include "trace/distributed_trace.h"
 #include "trace/photon_tracer.h"
 #include "trace_options.h"
 #include "util/error.h"
+#include "viewer/colour_view.h"
 #include "viewer/verdict.h"
 
 namespace facetlight::cli {
@@ -25,10 +29,18 @@ struct TraceCommandOptions {
     std::string jsonPath;
     std::string csvPath;
     bool progressJson = false;
+    bool colour = false;
+    SettingsFlags colourFlags;
 };
 
 void run(const TraceCommandOptions& o) {
     const TraceSettings settings = toTraceSettings(o.trace);
+    // The colour view's own flags turn it on, as render's do.
+    std::optional<ColourSettings> colour;
+    if (o.colour || o.colourFlags.given()) {
+        colour.emplace();
+        o.colourFlags.apply(colourSettingsSchema(), *colour);
+    }
     const Stone stone = resolveStone(o.trace.mesh, stoneOptions(o.trace));
     // Under mpirun the ranks split the blocks and rank 0 alone reports (docs/distributed.md).
     Communicator& comm = processCommunicator();
@@ -37,7 +49,7 @@ void run(const TraceCommandOptions& o) {
     RunControl control;
     control.startPhase(RunPhase::Tracing, localPhotons(comm, settings.photons));
     TraceResult result;
-    nlohmann::json viewer;
+    nlohmann::json viewer, colourFigures;
     {
         const uint64_t viewing = 2 * viewerUnits(settings.viewer);
         ProgressLine bar(comm.isRoot() && !o.progressJson, control);
@@ -50,6 +62,7 @@ void run(const TraceCommandOptions& o) {
             control.startPhase(RunPhase::Viewing, viewing);
             viewer = viewerReport(stone, settings, &control);
         }
+        if (comm.isRoot() && colour) colourFigures = toJson(colourView(stone, settings, *colour, &control));
     }
 
     if (!comm.isRoot()) return;
@@ -57,11 +70,13 @@ void run(const TraceCommandOptions& o) {
     addDesignFacts(stats, designFacts(stone, settings));
     if (comm.size() > 1) stats["timing"]["ranks"] = comm.size();
     if (!viewer.is_null()) stats["viewer"] = std::move(viewer);
+    if (!colourFigures.is_null()) stats["colour"] = std::move(colourFigures);
     const bool jsonToStdout = o.json && (o.jsonPath.empty() || o.jsonPath == "-");
     if (jsonToStdout)
         std::cout << stats.dump(2) << "\n";
     else
         printStatsSummary(std::cout, stats);
+    if (!jsonToStdout && stats.contains("colour")) printColourFigures(std::cout, stats["colour"]);
     if (o.json && !jsonToStdout) writeFile(o.jsonPath, stats.dump(2) + "\n");
     if (!o.csvPath.empty()) {
         std::ostringstream csv;
@@ -85,6 +100,12 @@ void addTraceCommand(CLI::App& app) {
     cmd->add_option("--csv", o->csvPath, "Also write the facet table as CSV here");
     cmd->add_flag("--progress-json", o->progressJson,
                   "Write progress as JSON lines on stderr (for a parent process)");
+    cmd->add_flag("--colour", o->colour,
+                  "Also measure the stone's face-up colour under a CIE illuminant, absorbing at its size "
+                  "(docs/optics.md), into the summary and stats colour (render --colour also draws it); any "
+                  "--colour-... flag implies it");
+    o->colourFlags.add(cmd, colourSettingsSchema().fields(), colourSettingsSchema().write(ColourSettings{}),
+                       "colour");
     cmd->callback([o, json] {
         o->json = json->count() > 0;
         run(*o);

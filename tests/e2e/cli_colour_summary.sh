@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # What trace and render print for a coloured stone (issue 29, item 6): the absorbed share with its error when
-# the material absorbs (and no such line for a clear stone), and render --colour's face-up colour figures.
+# the material absorbs (and no such line for a clear stone), and render --colour's and trace --colour's face-up
+# colour figures.
 set -euo pipefail
 tool=$1
 dir=$(mktemp -d)
@@ -37,4 +38,21 @@ for f in windowed extinct saturated; do
   grep -q "^  $f  *[0-9.]*% +- [0-9.]*$" "$dir/render.txt"
 done
 test -s "$dir/render/colour.png"
+
+# trace --colour measures the same figures without drawing them: the render's L* at the same settings, bit for
+# bit (the colour view does not depend on the photons), in the summary and in stats.json.
+"$tool" trace "${small[@]}" --absorption "$spectrum" --colour-picture 24 --colour-samples 1 --colour-wavelengths 8 \
+  --json "$dir/trace-colour.json" >/dev/null
+"$tool" trace "${small[@]}" --absorption "$spectrum" --colour-picture 24 --colour-samples 1 --colour-wavelengths 8 \
+  >"$dir/trace-colour.txt"
+grep -q '^Face-up colour under D65 at 6.5 mm ([0-9]* pixels, [0-9]* view rays):$' "$dir/trace-colour.txt"
+python3 - "$dir/trace-colour.json" "$dir/render/stats.json" <<'PY'
+import json, sys
+traced, rendered = (json.load(open(f))["colour"] for f in sys.argv[1:])
+assert traced["L"] == rendered["L"] and traced["extinct"] == rendered["extinct"], (traced["L"], rendered["L"])
+PY
+if "$tool" trace "${small[@]}" >/dev/null 2>&1 && "$tool" trace "${small[@]}" | grep -q 'Face-up colour'; then
+  echo "trace without --colour measured the colour" >&2
+  exit 1
+fi
 echo "cli colour summary: ok"
