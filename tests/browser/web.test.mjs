@@ -619,8 +619,9 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const pics = await picturesLoaded('.compare-grid');
     assert.equal(pics.length, 4);
     for (const p of pics) assert.ok(p.width > 0, `${p.src} did not load`);
-    // The heat-maps are drawn on the page on one colour scale: the facet with the most light of either
-    // design is the brightest of both, and the design with less light per facet has no facet as bright.
+    // The heat-maps are drawn on the page on one colour scale, which the table (often half the light) does not
+    // set: the facet with the most light of either design but the tables is the brightest of both, and the
+    // design with less light per facet has no facet as bright; a table beyond the scale says its share.
     await page.waitForFunction(() => document.querySelectorAll('.compare-card .heatmap-drawing').length === 2);
     const legends = await page.$$eval('.compare-card .heat-max', (els) => els.map((e) => e.textContent));
     assert.equal(legends.length, 2);
@@ -628,10 +629,17 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const brightest = {};
     for (const id of expected) {
       const facets = (await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json()).facets;
-      const greens = await page.$$eval(`.compare-card[data-id="${id}"] .heatmap-drawing polygon`,
-        (ps) => ps.map((p) => Number(p.getAttribute('fill').match(/\d+/g)[1])));
-      assert.equal(greens.length, facets.filter((f) => f.region !== 'girdle').length);
-      brightest[id] = { green: Math.max(...greens), share: Math.max(...facets.map((f) => f.leaving_share)) };
+      const tables = facets.filter((f) => f.region === 'table').map((f) => String(f.id));
+      const fills = await page.$$eval(`.compare-card[data-id="${id}"] .heatmap-drawing polygon`,
+        (ps) => ps.map((p) => [p.dataset.facet, Number(p.getAttribute('fill').match(/\d+/g)[1])]));
+      assert.equal(fills.length, facets.filter((f) => f.region !== 'girdle').length);
+      const greens = fills.filter(([facet]) => !tables.includes(facet)).map(([, green]) => green);
+      brightest[id] = { green: Math.max(...greens), share: Math.max(...facets.filter((f) => f.region !== 'table').map((f) => f.leaving_share)) };
+      const table = facets.find((f) => f.region === 'table');
+      if (table && table.leaving_share > parseFloat(legends[0]) / 100) {
+        assert.equal(await page.textContent(`.compare-card[data-id="${id}"] .heat-beyond[data-facet="${table.id}"]`),
+          `${(table.leaving_share * 100).toFixed(1)} %`);
+      }
     }
     const [a, b] = expected;
     if (brightest[a].share > brightest[b].share) assert.ok(brightest[a].green > brightest[b].green, JSON.stringify(brightest));
@@ -825,6 +833,47 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     }
     assert.ok(await page.locator('.fire-histogram-chart rect').count() > 2, 'the histogram has filled cells');
     await shot('09c-fire');
+  });
+
+  // Issue 30: the compare view's fire heat-maps are drawn on the page on one colour scale, as its light heat-maps
+  // are: the same colour is the same share of the fire in each.
+  test('the comparison draws the fire heat-maps on one colour scale', async () => {
+    const ids = [];
+    for (const pavilion of [40.7, 43]) {
+      const res = await fetch(`${baseUrl}/api/jobs`, {
+        method: 'POST', headers: { 'Content-Type': 'application/json' },
+        body: JSON.stringify({ mesh: 'round_brilliant', photons: 20000, threads: 2, render: false, fire: { enabled: true }, cut: { pavilion } }),
+      });
+      assert.equal(res.status, 202);
+      ids.push((await res.json()).id);
+    }
+    await page.goto(`${baseUrl}/#/`);
+    for (const id of ids) await waitForFinished(id);
+    await page.goto(`${baseUrl}/#/compare/${ids.join(',')}`);
+    await page.waitForSelector('[data-section="fire-compare"]');
+    await page.locator('[data-section="fire-compare"]').scrollIntoViewIfNeeded();
+    await page.waitForFunction(() => document.querySelectorAll('.fire-compare-card .heatmap-drawing').length === 2);
+    const legends = await page.$$eval('.fire-compare-card .heat-max', (els) => els.map((e) => e.textContent));
+    assert.equal(legends.length, 2);
+    assert.equal(legends[0], legends[1], 'one scale');
+    assert.match(await page.textContent('[data-section="fire-compare"] .hint'), new RegExp(`0 to ${legends[0].replace(' %', '')} % of the fire`));
+    const brightest = {};
+    for (const id of ids) {
+      const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+      const tables = stats.facets.filter((f) => f.region === 'table').map((f) => f.id);
+      const facets = stats.fire.facets.filter((f) => !tables.includes(f.id));
+      const greens = await page.$$eval(`.fire-compare-card[data-id="${id}"] .heatmap-drawing polygon`,
+        (ps, skip) => ps.filter((p) => !skip.includes(Number(p.dataset.facet))).map((p) => Number(p.getAttribute('fill').match(/\d+/g)[1])), tables);
+      brightest[id] = { green: Math.max(...greens), share: Math.max(...facets.map((f) => f.share)) };
+    }
+    const [a, b] = ids;
+    assert.notEqual(brightest[a].share, brightest[b].share, JSON.stringify(brightest));
+    assert.equal(brightest[a].share > brightest[b].share, brightest[a].green > brightest[b].green, JSON.stringify(brightest));
+    // Pointing at a facet names its share of the fire.
+    const first = await page.$(`.fire-compare-card[data-id="${a}"] .heatmap-drawing polygon`);
+    await first.hover();
+    assert.match(await page.textContent(`.fire-compare-card[data-id="${a}"] .heatmap-readout`), /of the fire leaving/);
+    await shot('09d-compare-fire');
   });
 
   test('the comparison shows each design\'s ASET picture with its shares, and the tilt series where present', async () => {

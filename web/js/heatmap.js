@@ -36,9 +36,24 @@ export function scaleEnd(max) {
   return Math.ceil(max / step - 1e-9) * step;
 }
 
+// What a heat-map shades each facet by: the share of the light leaving it (heatmap.png), or of the fire
+// (heatmap_fire.png, the statistics' fire.facets).
+const LIGHT = { facets: (s) => s.facets || [], share: (f) => f.leaving_share, stderr: (f) => f.leaving_share_stderr, of: 'of the light leaving' };
+export const FIRE = { facets: (s) => (s.fire && s.fire.facets) || [], share: (f) => f.share, stderr: (f) => f.share_stderr, of: 'of the fire leaving' };
+
+// The largest share of `measure` any facet but the table has, over `statsList`: a common scale's end is
+// scaleEnd of it. The table, which often takes most of the light or the fire, would otherwise leave every other
+// facet at the dark end; it is drawn at the top of the scale with its own share written on it.
+export function largestShare(statsList, measure = LIGHT) {
+  return Math.max(0, ...statsList.flatMap((s) => {
+    const table = new Set((s.facets || []).filter((f) => f.region === 'table').map((f) => f.id));
+    return measure.facets(s).filter((f) => !table.has(f.id)).map(measure.share);
+  }));
+}
+
 // Fetches the heat-map's layout and either lays its facets over the picture (overlay) or, with a common
 // colour scale (the comparison), draws them in its place filled on that scale; both name the facet pointed at.
-async function heatmapShapes(figure, href, stats, commonScale) {
+async function heatmapShapes(figure, href, stats, commonScale, measure = LIGHT) {
   const anchor = figure.querySelector('a');
   let layout = null;
   try {
@@ -52,14 +67,14 @@ async function heatmapShapes(figure, href, stats, commonScale) {
     if (drawing) anchor.replaceChildren(h('img', { src: anchor.href, alt: 'Facet heat-map', decoding: 'async' }));
     return;
   }
-  const facets = new Map(((stats && stats.facets) || []).map((f) => [f.id, f]));
+  const facets = new Map((stats ? measure.facets(stats) : []).map((f) => [f.id, f]));
   const describe = (f) => {
     const s = facets.get(f.id);
-    return s ? `${humanize(f.name)} (${f.side}): ${fmtPctErr(s.leaving_share, s.leaving_share_stderr)} of the light leaving`
+    return s ? `${humanize(f.name)} (${f.side}): ${fmtPctErr(measure.share(s), measure.stderr(s))} ${measure.of}`
       : humanize(f.name);
   };
   const polygons = layout.facets.map((f) => {
-    const share = facets.has(f.id) ? facets.get(f.id).leaving_share : 0;
+    const share = facets.has(f.id) ? measure.share(facets.get(f.id)) : 0;
     const fill = drawing ? { fill: viridis(share / commonScale), stroke: '#1a1a1a', 'stroke-width': 1.2 } : {};
     return svg('polygon', { points: f.points.map((p) => p.join(',')).join(' '), 'data-facet': f.id, ...fill },
       svg('title', {}, describe(f)));
@@ -74,14 +89,21 @@ async function heatmapShapes(figure, href, stats, commonScale) {
       const sx = layout.facets.filter((f) => f.side === side).flatMap((f) => f.points.map((p) => p[0]));
       return sx.length ? svg('text', { x: (Math.min(...sx) + Math.max(...sx)) / 2, y: y0 + 24, 'text-anchor': 'middle', class: 'heat-side' }, title) : null;
     }).filter(Boolean);
+    // A facet beyond the scale (the table) is drawn at its top and says its own share.
+    const beyond = layout.facets.filter((f) => facets.has(f.id) && measure.share(facets.get(f.id)) > commonScale).map((f) => {
+      const [cx, cy] = [0, 1].map((k) => f.points.reduce((sum, p) => sum + p[k], 0) / f.points.length);
+      return svg('text', { x: cx, y: cy, 'text-anchor': 'middle', 'dominant-baseline': 'middle', class: 'heat-beyond', 'data-facet': f.id },
+        `${(measure.share(facets.get(f.id)) * 100).toFixed(1)} %`);
+    });
     shapes = svg('svg', { class: 'heatmap-drawing', viewBox: `${x0} ${y0} ${w} ${hgt}`, role: 'img',
-      'aria-label': `Facet heat-map: crown from above, pavilion from below, on the comparison's common scale (0 to ${(commonScale * 100).toFixed(1)} %)` },
-    ...titles, ...polygons);
+      'aria-label': `Facet heat-map: crown from above, pavilion from below, on the comparison's common scale (0 to ${(commonScale * 100).toFixed(1)} % ${measure.of} a facet${beyond.length ? '; the table beyond it, its share written on it' : ''})` },
+    ...titles, ...polygons, ...beyond);
     anchor.replaceChildren(shapes);
     figure.insertBefore(h('div', { class: 'heat-legend' },
       h('span', {}, '0 %'),
       h('span', { class: 'heat-ramp', 'aria-hidden': 'true', style: `background: linear-gradient(to right, ${[0, 0.25, 0.5, 0.75, 1].map(viridis).join(', ')})` }),
-      h('span', { class: 'heat-max' }, `${(commonScale * 100).toFixed(1)} %`)), figure.querySelector('figcaption'));
+      h('span', { class: 'heat-max' }, `${(commonScale * 100).toFixed(1)} %`),
+      beyond.length ? h('span', { class: 'muted' }, 'and beyond (the table)') : null), figure.querySelector('figcaption'));
   } else {
     shapes = svg('svg', { class: 'heatmap-overlay', viewBox: `0 0 ${layout.width} ${layout.height}`, 'aria-hidden': 'true' }, ...polygons);
     anchor.append(shapes);
@@ -97,6 +119,18 @@ async function heatmapShapes(figure, href, stats, commonScale) {
   });
   shapes.addEventListener('mouseleave', () => linkFacet(root, null));
   figure.append(readout);
+}
+
+// The fire heat-map of a compared job drawn on the page on the comparison's common scale (heatmap_fire.png's
+// facets, from its layout and the statistics' fire.facets); the picture itself where there is no layout.
+export function fireHeatmapDrawn(job, name, stats, commonScale) {
+  const links = job.links || {};
+  const figure = h('figure', { class: 'picture pic-heatmap-fire' },
+    h('a', { href: links.heatmap_fire, target: '_blank', rel: 'noopener', class: 'zoom', title: 'Open the picture at full size' },
+      links.heatmap_layout ? h('div', { class: 'heatmap-pending' }) : h('img', { src: links.heatmap_fire, alt: `Fire heat-map of ${name}`, loading: 'lazy' })),
+    h('figcaption', {}, 'Fire heat-map', h('span', { class: 'muted picture-light' }, ` · ${name}`)));
+  if (links.heatmap_layout) heatmapShapes(figure, links.heatmap_layout, stats, commonScale, FIRE);
+  return figure;
 }
 
 // `commonScale` (the comparison): the heat-map is drawn on the page, its colours running from 0 to this share
