@@ -205,6 +205,25 @@ void checkColourPlan(const SweepPlan& plan) {
     }
 }
 
+// An optic axis along the table's normal (tilt 0 or 180 deg) has no azimuth: turning it changes no figure, to
+// the bit, so an azimuth axis needs the axis tilted, or a tilt axis beside it.
+void checkAzimuthPlan(const SweepPlan& plan) {
+    const auto named = [&](const char* name) {
+        return std::find_if(plan.axes.begin(), plan.axes.end(),
+                            [&](const SweepAxis& a) { return a.name == name; });
+    };
+    const auto azimuth = named("optic_axis_azimuth");
+    const double tilt = plan.trace.opticAxis.tiltDeg;
+    if (azimuth == plan.axes.end() || named("optic_axis_tilt") != plan.axes.end() ||
+        (tilt != 0 && tilt != 180))
+        return;
+    const std::string at = itemPath("sweep.axes", size_t(azimuth - plan.axes.begin()));
+    throw Error(at, at + ": the optic axis lies along the table's normal (optic_axis tilt " +
+                        std::string(tilt == 0 ? "0" : "180") +
+                        " deg), where its azimuth changes nothing; tilt it (optic_axis.tilt_deg, "
+                        "--optic-axis-tilt) or sweep optic_axis_tilt too");
+}
+
 // Checks `plan` (its shape already found) against the request, naming the field at fault.
 SweepPlan checkedPlan(SweepPlan plan, const SweepRequest& request, const TraceSettings& trace) {
     try {
@@ -229,6 +248,7 @@ SweepPlan checkedPlan(SweepPlan plan, const SweepRequest& request, const TraceSe
     } catch (const Error& e) {
         throw Error("sweep.axes", e.what());
     }
+    checkAzimuthPlan(plan);
     checkColourPlan(plan);
     checkSweepFigures(request, trace, plan.colour.has_value());
     return plan;

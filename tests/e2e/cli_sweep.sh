@@ -50,6 +50,20 @@ small, large = (p["colour"]["colour_lightness"] for p in points)
 assert large < small, (small, large)
 PY
 
+# Along the optic axis: blue sapphire seen through the table with c lying in it is lighter than along c
+# (its E || c spectrum absorbs less, docs/physics.md, "Colour against the optic axis").
+"$tool" sweep round_brilliant --material blue_sapphire --size-mm 8 --vary optic_axis_tilt=0,90 --colour \
+  --colour-picture 120 --colour-samples 1 --colour-wavelengths 8 --no-view --photons 200 --threads 2 \
+  --figure colour_lightness --out "$dir/axis" >/dev/null
+head -1 "$dir/axis/sweep.csv" | grep -q '^optic_axis_tilt,'
+python3 - "$dir/axis/sweep.json" <<'PY'
+import json, sys
+along, across = (p["colour"] for p in json.load(open(sys.argv[1]))["points"])
+lift = across["colour_lightness"] - along["colour_lightness"]
+sigma = (along["colour_lightness_stderr"] ** 2 + across["colour_lightness_stderr"] ** 2) ** 0.5
+assert lift > 3 * sigma, (lift, sigma)
+PY
+
 # A real GemCad design's tiers (issue 27): GemCad's own standard round brilliant for quartz. A search over two
 # tiers writes best.asc, which opens again with the design's 73 facets and the searched tier's slope measured
 # back.
@@ -104,6 +118,12 @@ fails "no point of the sweep absorbs (the material auto, diamond or a design's o
   round_brilliant --vary size_mm=3,6 --colour
 fails "sweep.axes\[0\]: the colour view sees the stone face-up" round_brilliant --vary tilt=0,10 --colour \
   --material emerald
+fails "sweep axis optic_axis_tilt needs a uniaxial material, whose optic axis it turns (got diamond)" \
+  round_brilliant --vary optic_axis_tilt=0:90:15 --material diamond
+fails "sweep axis optic_axis_tilt needs polarization on" round_brilliant --vary optic_axis_tilt=0,90 \
+  --material sapphire --polarization off
+fails "sweep.axes\[0\]: the optic axis lies along the table's normal (optic_axis tilt 0 deg), where its azimuth" \
+  round_brilliant --vary optic_axis_azimuth=0,45 --material sapphire
 fails "SRB has no parameter 'tier:P9'" "$design" --vary tier:1=40,41 --set tier:P9=30
 fails "neither a parameter of SRB" "$design" --vary tier:X=40,41
 echo "cli sweep: ok"

@@ -1410,6 +1410,25 @@ TEST_F(ServiceTest, SweepWithColourReportsTheColourFigures) {
     bad = job;
     bad["colour"]["wavelengths"] = 1;
     expectProblem(submit(bad), 422, "colour.wavelengths");
+
+    // The optic axis's colour: a uniaxial stone traced polarised, its axis tilted for an azimuth to mean
+    // anything; else refused naming the axis.
+    json axis = job;
+    axis["sweep"]["axes"] = {{{"name", "optic_axis_tilt"}, {"values", {0, 90}}}};
+    const json turned = waitFinished(submitOk(axis));
+    ASSERT_EQ(turned["state"], "succeeded") << turned.dump();
+    EXPECT_EQ(getJson(turned["links"]["sweep"])["points"][1]["values"]["optic_axis_tilt"], 90);
+    bad = axis;
+    bad["polarization"] = "off";
+    expectProblem(submit(bad), 422, "sweep.axes[0]");
+    bad = axis;
+    bad["material"] = "diamond";
+    expectProblem(submit(bad), 422, "sweep.axes[0]");
+    bad = axis;
+    bad["sweep"]["axes"][0]["name"] = "optic_axis_azimuth";
+    expectProblem(submit(bad), 422, "sweep.axes[0]");
+    bad["optic_axis"] = {{"tilt_deg", 45}};
+    EXPECT_EQ(waitFinished(submitOk(bad))["state"], "succeeded") << "tilted, the azimuth turns it";
 }
 
 // A sweep stopped with the service keeps the points it finished, resumes from them after the restart (they

@@ -2,10 +2,17 @@
 // or the cut, equal to a single study's colour view of that design at those settings.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <functional>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "colour/cie.h"
+#include "colour/colour_space.h"
 #include "cuts/cut_library.h"
+#include "optics/gem_spectra.h"
 #include "study/study.h"
 #include "sweep/sweep_figures.h"
 #include "sweep/sweep_files.h"
@@ -182,35 +189,84 @@ TEST(ColourSweep, RefusesWhatTheColourViewCannotMeasure) {
     EXPECT_EQ(plan({"size_mm=0.01,6"}, "colour_lightness", sapphire, coarseColour()), "sweep.axes[0]");
 }
 
-// The colour through the table against the optic axis: blue sapphire absorbs by its E perp c spectrum along
-// the axis (both waves ordinary) and partly by its E || c spectrum across it. Its E || c slab transmits more
-// (docs/optics.md, "Coloured materials": A 0.57-0.92 against 1.16-2.09 from 580 nm), so the stone seen along
-// its axis (tilt 0, the axis on the table's normal) is darker than seen across it (tilt 90), by many errors.
-// A ruby's table has no E || c column (e absorbs as o): its lightness moves far less.
-TEST(ColourSweep, TheOpticAxisTurnsAPleochroicStonesColour) {
+namespace {
+
+// The colour through the table against the optic axis, traced at 8 mm from tilt 0 (c along the table's
+// normal) to tilt 90 (c lying in the table): the change of L*, a*, b* between them and its error.
+struct AxisTurn {
+    Lab change, sigma;
+};
+AxisTurn turnTheAxis(TraceSettings trace) {
     ColourSettings colour = coarseColour();
     colour.pictureSize = 120;
+    trace.sizeMm = 8;
+    RunControl control;
+    const SweepResult r = runSweep(
+        planSweep("round_brilliant", requestOf({"optic_axis_tilt=0,90"}, "colour_lightness"), trace, colour),
+        control);
+    EXPECT_EQ(r.points.size(), 2u);
+    for (const SweepPoint& p : r.points) EXPECT_TRUE(p.ok()) << p.error;
+    if (r.points.size() != 2) return {};
+    const SweepPoint &along = r.points[0], &across = r.points[1];
+    const auto change = [&](const char* f) { return across.figure(f) - along.figure(f); };
+    const auto sigma = [&](const char* f) { return std::hypot(along.stderrOf(f), across.stderrOf(f)); };
+    return {{change("colour_lightness"), change("colour_a"), change("colour_b")},
+            {sigma("colour_lightness"), sigma("colour_a"), sigma("colour_b")}};
+}
+
+// What the spectra alone predict (the CIE sums of tests/optics/gem_spectra_test.cpp, D65, no surface):
+// through `mm` along c both waves absorb by alpha_o; across c unpolarised light halves into an o and an e
+// wave.
+Lab predictedTurn(const AbsorptionSpectrum& s, double mm) {
+    const auto lab = [&](const std::function<double(double)>& tau) {
+        return xyzToLab(tristimulus(Illuminant::D65, tau), whitePoint(Illuminant::D65));
+    };
+    const Lab along = lab([&](double nm) { return std::exp(-s.ordinary(nm) * mm); });
+    const Lab across = lab([&](double nm) {
+        return (std::exp(-s.ordinary(nm) * mm) + std::exp(-s.extraordinary(nm) * mm)) / 2;
+    });
+    return {across.L - along.L, across.a - along.a, across.b - along.b};
+}
+
+}  // namespace
+
+// Blue sapphire's o and e spectra differ (docs/optics.md, "Coloured materials"): turning its optic axis from
+// the table's normal into the table moves the face-up colour by many errors, in L*, a* and b* each the way
+// its spectra predict over the face-up view's paths (4 to 16 mm through an 8 mm stone).
+TEST(ColourSweep, TheOpticAxisTurnsAPleochroicStonesColour) {
+    const AbsorptionSpectrum spectrum = *gemSpectrum("blue_sapphire");
+    const Lab shortPath = predictedTurn(spectrum, 4), longPath = predictedTurn(spectrum, 16);
     TraceSettings trace = quickTrace();
     trace.material = "blue_sapphire";
-    trace.sizeMm = 8;
-    const SweepRequest request = requestOf({"optic_axis_tilt=0,90"}, "colour_lightness");
-    RunControl control;
-    const SweepResult sapphire = runSweep(planSweep("round_brilliant", request, trace, colour), control);
-    ASSERT_EQ(sapphire.points.size(), 2u);
-    for (const SweepPoint& p : sapphire.points) ASSERT_TRUE(p.ok()) << p.error;
-    const auto lift = [](const SweepResult& r) {
-        const SweepPoint &along = r.points[0], &across = r.points[1];
-        return std::pair{across.figure("colour_lightness") - along.figure("colour_lightness"),
-                         std::hypot(along.stderrOf("colour_lightness"), across.stderrOf("colour_lightness"))};
-    };
-    const auto [sapphireLift, sapphireSigma] = lift(sapphire);
-    EXPECT_GT(sapphireLift, 5 * sapphireSigma)
-        << "across the axis the sapphire shows its lighter E || c colour";
-    trace.material = "ruby";
-    const SweepResult ruby = runSweep(planSweep("round_brilliant", request, trace, colour), control);
-    for (const SweepPoint& p : ruby.points) ASSERT_TRUE(p.ok()) << p.error;
-    EXPECT_LT(std::abs(lift(ruby).first), sapphireLift / 3)
-        << "a ruby without an E || c column barely changes";
+    const AxisTurn turn = turnTheAxis(trace);
+    const std::array<std::tuple<const char*, double, double, double, double>, 3> figures{
+        {{"L*", shortPath.L, longPath.L, turn.change.L, turn.sigma.L},
+         {"a*", shortPath.a, longPath.a, turn.change.a, turn.sigma.a},
+         {"b*", shortPath.b, longPath.b, turn.change.b, turn.sigma.b}}};
+    for (const auto& [name, predictedShort, predictedLong, change, sigma] : figures) {
+        SCOPED_TRACE(name);
+        // The spectra agree with themselves over the path lengths, by more than a unit of Lab.
+        ASSERT_GT(predictedShort * predictedLong, 0);
+        ASSERT_GT(std::min(std::abs(predictedShort), std::abs(predictedLong)), 1);
+        EXPECT_GT(predictedShort > 0 ? change : -change, 5 * sigma)
+            << "traced " << change << " +- " << sigma << ", the spectra say " << predictedShort << " to "
+            << predictedLong;
+    }
+}
+
+// A uniaxial stone whose table has no e column absorbs both waves alike (e as o): the same sapphire with its
+// E perp c column alone shows one colour whichever way its axis lies, within the errors. What is left is the
+// doubly refracting stone's geometry (the e wave's own path), not colour.
+TEST(ColourSweep, AStoneWithoutAnEColumnKeepsItsColourAcrossTheAxis) {
+    AbsorptionSpectrum ordinaryOnly = *gemSpectrum("blue_sapphire");
+    ordinaryOnly.extraordinaryPerMm.clear();
+    TraceSettings trace = quickTrace();
+    trace.material = "blue_sapphire";
+    trace.absorption = ordinaryOnly;
+    const AxisTurn turn = turnTheAxis(trace);
+    EXPECT_LT(std::abs(turn.change.L), 3 * turn.sigma.L) << turn.change.L << " +- " << turn.sigma.L;
+    EXPECT_LT(std::abs(turn.change.a), 3 * turn.sigma.a) << turn.change.a << " +- " << turn.sigma.a;
+    EXPECT_LT(std::abs(turn.change.b), 3 * turn.sigma.b) << turn.change.b << " +- " << turn.sigma.b;
 }
 
 TEST(ColourSweep, TheOpticAxisIsSweptOnlyWhereItMeansSomething) {
@@ -242,4 +298,16 @@ TEST(ColourSweep, TheOpticAxisIsSweptOnlyWhereItMeansSomething) {
               }).find("sweep.axes"),
               std::string::npos)
         << "beyond the setting's own range";
+    // An axis along the table's normal has no azimuth to turn: an azimuth axis needs it tilted, or a tilt
+    // axis.
+    const auto azimuthField = [&](const std::vector<std::string>& axes) {
+        return fieldOf(
+            [&] { planSweep("round_brilliant", requestOf(axes, "crown_return"), trace, std::nullopt); });
+    };
+    EXPECT_EQ(azimuthField({"optic_axis_azimuth=0,45"}), "sweep.axes[0]");
+    EXPECT_EQ(azimuthField({"optic_axis_tilt=0,45", "optic_axis_azimuth=0,45"}), "");
+    trace.opticAxis.tiltDeg = 180;
+    EXPECT_EQ(azimuthField({"pavilion=40,41", "optic_axis_azimuth=0,45"}), "sweep.axes[1]");
+    trace.opticAxis.tiltDeg = 30;
+    EXPECT_EQ(azimuthField({"optic_axis_azimuth=0,45"}), "");
 }
