@@ -7,12 +7,16 @@
 // Photons are caustic-like: Gaussian spots and a ring on a floor over a uniform background. Queries walk a
 // grid over the floor in raster order, like a camera's primary hits, and again in random order.
 //
-// Usage: photon_map_bench [--photons N] [--sizes N,N,...] [--queries-side S] [--k K] [--reps R]
+// Usage: photon_map_bench [--photons N] [--sizes N,N,...] [--queries-side S] [--k K] [--reps R] [--focus 1]
+// --focus 1: only PhotonMap's tree build (1 and 2 threads) and cached-radius gather (1 and 2 threads), with
+// hashes of the tree and of every gather's answer, so that two builds of the library can be compared for
+// speed and for identical results in one script (bench/photon_map_ab.sh).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <functional>
 #include <random>
 #include <string>
@@ -21,6 +25,7 @@
 #include <nanoflann.hpp>
 
 #include "photonmap/photon_map.h"
+#include "util/parallel.h"
 
 namespace facetlight {
 namespace {
@@ -274,6 +279,98 @@ void runSideBySide(std::vector<Method>& methods, const std::vector<Vec3>& querie
     }
 }
 
+// FNV-1a, 64 bits.
+struct Hash {
+    uint64_t h = 1469598103934665603ull;
+    void add(const void* data, size_t bytes) {
+        const auto* b = static_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < bytes; ++i) h = (h ^ b[i]) * 1099511628211ull;
+    }
+};
+
+// Wall and process CPU seconds of one run: on a shared machine the CPU seconds count the work alone, the
+// wall seconds the work and the waits for a core.
+struct Timer {
+    Clock::time_point wall = Clock::now();
+    double cpu = cpuNow();
+    static double cpuNow() {
+        timespec t;
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+        return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+    }
+    void stop(std::vector<double>& wallSeconds, std::vector<double>& cpuSeconds) const {
+        wallSeconds.push_back(seconds(wall, Clock::now()));
+        cpuSeconds.push_back(cpuNow() - cpu);
+    }
+};
+
+// The tree build and the cached-radius gather alone, interleaved repetitions, with hashes of the results.
+void runFocus(size_t photonCount, int side, size_t k, int reps) {
+    const std::vector<Photon> photons = causticPhotons(photonCount, 1);
+    std::vector<double> wall[2], cpu[2];
+    for (int r = 0; r < reps; ++r)
+        for (int threads : {1, 2}) {
+            std::vector<Photon> copy = photons;
+            const Timer t;
+            const PhotonMap map(std::move(copy), threads);
+            t.stop(wall[threads - 1], cpu[threads - 1]);
+        }
+    const PhotonMap map(photons, 2);
+    Hash tree;
+    tree.add(map.photons().data(), map.size() * sizeof(Photon));
+    std::printf(
+        "tree, %zu photons, median of %d: 1 thread %.0f ms (CPU %.0f ms), 2 threads %.0f ms (CPU %.0f "
+        "ms); tree hash %016llx\n",
+        photonCount, reps, median(wall[0]) * 1e3, median(cpu[0]) * 1e3, median(wall[1]) * 1e3,
+        median(cpu[1]) * 1e3, (unsigned long long)tree.h);
+
+    const std::vector<Vec3> raster = rasterQueries(side);
+    const std::vector<Vec3> shuffled = [&] {
+        std::vector<Vec3> s = raster;
+        std::shuffle(s.begin(), s.end(), std::mt19937(5));
+        return s;
+    }();
+    for (const auto* order : {&raster, &shuffled}) {
+        for (auto* v : {&wall[0], &wall[1], &cpu[0], &cpu[1]}) v->clear();
+        Hash answers;
+        for (int r = 0; r < reps; ++r) {
+            {
+                std::vector<Neighbor> buffer(k);
+                GatherState state;
+                Hash h;
+                const Timer t;
+                for (const Vec3& q : *order) {
+                    const GatherResult g = map.gather(q, buffer, state);
+                    h.add(g.neighbors.data(), g.neighbors.size_bytes());
+                    h.add(&g.radius2, sizeof g.radius2);
+                }
+                t.stop(wall[0], cpu[0]);
+                answers = h;
+            }
+            // Two threads, each with its own state, on blocks of consecutive queries.
+            struct Worker {
+                std::vector<Neighbor> buffer;
+                GatherState state;
+            };
+            const Timer t;
+            parallelForBlocks(BlockLoop{0, order->size(), 4096, 2}, nullptr,
+                              Worker{std::vector<Neighbor>(k), {}},
+                              [&](Worker& w, uint64_t first, uint64_t last) {
+                                  for (uint64_t i = first; i < last; ++i)
+                                      map.gather((*order)[i], w.buffer, w.state);
+                                  return uint64_t(0);
+                              });
+            t.stop(wall[1], cpu[1]);
+        }
+        const double q = double(order->size()) / 1e3;
+        std::printf(
+            "gather, k = %zu, %zu queries in %s order, median of %d: 1 thread %.1f k/s (%.1f k per CPU s), "
+            "2 threads %.1f k/s (%.1f k per CPU s); answers hash (1 thread) %016llx\n",
+            k, order->size(), order == &raster ? "raster" : "random", reps, q / median(wall[0]),
+            q / median(cpu[0]), q / median(wall[1]), q / median(cpu[1]), (unsigned long long)answers.h);
+    }
+}
+
 std::vector<size_t> parseSizes(const char* s) {
     std::vector<size_t> sizes;
     for (const char* p = s; *p;) {
@@ -290,6 +387,7 @@ int run(int argc, char** argv) {
     int side = 256;
     size_t k = 100;
     int reps = 5;
+    bool focus = false;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         if (flag == "--photons")
@@ -302,10 +400,16 @@ int run(int argc, char** argv) {
             k = std::strtoull(argv[i + 1], nullptr, 10);
         else if (flag == "--reps")
             reps = std::atoi(argv[i + 1]);
+        else if (flag == "--focus")
+            focus = std::atoi(argv[i + 1]) != 0;
         else {
             std::fprintf(stderr, "unknown flag %s\n", argv[i]);
             return 2;
         }
+    }
+    if (focus) {
+        runFocus(photonCount, side, k, reps);
+        return 0;
     }
     const std::vector<Vec3> raster = rasterQueries(side);
     const std::vector<Vec3> shuffled = [&] {

@@ -19,14 +19,34 @@ size_t leftSubtreeSize(size_t n) {
     return half - 1 + std::min(last, half);
 }
 
-int widestAxis(const Photon* begin, const Photon* end) {
-    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (const Photon* p = begin; p != end; ++p)
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], p->position[a]);
-            hi[a] = std::max(hi[a], p->position[a]);
-        }
-    const float ext[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+// What the build moves while it selects medians: a photon's position and, in the fourth lane, the bits of its
+// index in the input; 16 aligned bytes where a Photon takes 20 unaligned ones. A vector type (GCC and Clang)
+// so that every copy is one load and one store: copied field by field, the compiler's narrow stores stalled
+// the next wide load of the same item (store forwarding) and the build ran 2x slower. The selection sees only
+// the positions, so it permutes these exactly as it would the photons.
+typedef float Item __attribute__((vector_size(16)));
+
+uint32_t inputIndex(const Item& item) {
+    return std::bit_cast<uint32_t>(item[3]);
+}
+
+// The axis of the largest extent. Two boxes side by side: one min and one max a photon, each waiting for
+// the last, left the loop bound by their latency.
+int widestAxis(const Item* begin, const Item* end) {
+    Item lo0 = {INFINITY, INFINITY, INFINITY, INFINITY}, hi0 = -lo0, lo1 = lo0, hi1 = hi0;
+    const Item* p = begin;
+    for (; end - p >= 2; p += 2) {
+        lo0 = p[0] < lo0 ? p[0] : lo0;
+        hi0 = hi0 < p[0] ? p[0] : hi0;
+        lo1 = p[1] < lo1 ? p[1] : lo1;
+        hi1 = hi1 < p[1] ? p[1] : hi1;
+    }
+    if (p != end) {
+        lo0 = *p < lo0 ? *p : lo0;
+        hi0 = hi0 < *p ? *p : hi0;
+    }
+    const Item lo = lo1 < lo0 ? lo1 : lo0, hi = hi0 < hi1 ? hi1 : hi0;
+    const Item ext = hi - lo;  // lane 3 (index bits) unused
     return ext[0] >= ext[1] ? (ext[0] >= ext[2] ? 0 : 2) : (ext[1] >= ext[2] ? 1 : 2);
 }
 
@@ -35,31 +55,30 @@ int widestAxis(const Photon* begin, const Photon* end) {
 // predictor, which made the build 2 to 2.5 times slower. After too many rounds it hands over to
 // std::nth_element, as an introselect would.
 template <int Axis, bool OrEqual>
-Photon* partitionBelow(Photon* first, Photon* last, float pivot) {
-    Photon* write = first;
-    for (Photon* read = first; read != last; ++read) {
-        const Photon x = *read;
+Item* partitionBelow(Item* first, Item* last, float pivot) {
+    Item* write = first;
+    for (Item* read = first; read != last; ++read) {
+        const Item x = *read;
         *read = *write;
         *write = x;
-        write += OrEqual ? !(pivot < x.position[Axis]) : x.position[Axis] < pivot;
+        write += OrEqual ? !(pivot < x[Axis]) : x[Axis] < pivot;
     }
     return write;
 }
 
 template <int Axis>
-void selectMedian(Photon* first, Photon* nth, Photon* last) {
-    auto key = [](const Photon* p) { return p->position[Axis]; };
+void selectMedian(Item* first, Item* nth, Item* last) {
+    auto key = [](const Item* p) { return (*p)[Axis]; };
     int rounds = 2 * std::bit_width(size_t(last - first)) + 8;
     while (last - first > 16) {
         if (--rounds < 0) {
-            std::nth_element(first, nth, last, [](const Photon& a, const Photon& b) {
-                return a.position[Axis] < b.position[Axis];
-            });
+            std::nth_element(first, nth, last,
+                             [](const Item& a, const Item& b) { return a[Axis] < b[Axis]; });
             return;
         }
         const float a = key(first), b = key(first + (last - first) / 2), c = key(last - 1);
         const float pivot = std::max(std::min(a, b), std::min(std::max(a, b), c));
-        Photon* split = partitionBelow<Axis, false>(first, last, pivot);
+        Item* split = partitionBelow<Axis, false>(first, last, pivot);
         if (nth < split) {
             last = split;
             continue;
@@ -70,58 +89,71 @@ void selectMedian(Photon* first, Photon* nth, Photon* last) {
         }
         first = split;
     }
-    for (Photon* i = first + 1; i < last; ++i) {
-        const Photon x = *i;
-        Photon* j = i;
-        for (; j > first && x.position[Axis] < key(j - 1); --j) *j = *(j - 1);
+    for (Item* i = first + 1; i < last; ++i) {
+        const Item x = *i;
+        Item* j = i;
+        for (; j > first && x[Axis] < key(j - 1); --j) *j = *(j - 1);
         *j = x;
     }
 }
 
-// scratch[0, n) to be placed as the subtree rooted at heap node `node`.
+// items[0, n) to be placed as the subtree rooted at heap node `node`.
 struct Subtree {
-    Photon* scratch;
+    Item* items;
     size_t n;
     size_t node;
 };
 
+// Where the build puts the tree: the input index and split axis of every heap node; the photons are copied
+// into heap order once, at the end.
+struct Placement {
+    uint32_t* index;
+    uint8_t* axis;
+};
+
 // Places the subtree's root (its median on the widest axis) and returns what is left of it: the left and the
 // right subtree, permuted in place. Subtrees are disjoint, so any worker may place any of them.
-std::array<Subtree, 2> placeRoot(const Subtree& t, Photon* heap) {
+std::array<Subtree, 2> placeRoot(const Subtree& t, const Placement& out) {
     if (t.n == 1) {
-        heap[t.node] = t.scratch[0];
-        heap[t.node].setAxis(0);  // a leaf: no split plane
-        return {Subtree{t.scratch, 0, 0}, Subtree{t.scratch, 0, 0}};
+        out.index[t.node] = inputIndex(t.items[0]);
+        out.axis[t.node] = 0;  // a leaf: no split plane
+        return {Subtree{t.items, 0, 0}, Subtree{t.items, 0, 0}};
     }
-    const int axis = widestAxis(t.scratch, t.scratch + t.n);
+    const int axis = widestAxis(t.items, t.items + t.n);
     const size_t m = leftSubtreeSize(t.n);
-    Photon* median = t.scratch + m;
-    if (axis == 0) selectMedian<0>(t.scratch, median, t.scratch + t.n);
-    if (axis == 1) selectMedian<1>(t.scratch, median, t.scratch + t.n);
-    if (axis == 2) selectMedian<2>(t.scratch, median, t.scratch + t.n);
-    heap[t.node] = *median;
-    heap[t.node].setAxis(axis);
-    return {Subtree{t.scratch, m, 2 * t.node + 1}, Subtree{median + 1, t.n - m - 1, 2 * t.node + 2}};
+    Item* median = t.items + m;
+    if (axis == 0) selectMedian<0>(t.items, median, t.items + t.n);
+    if (axis == 1) selectMedian<1>(t.items, median, t.items + t.n);
+    if (axis == 2) selectMedian<2>(t.items, median, t.items + t.n);
+    out.index[t.node] = inputIndex(*median);
+    out.axis[t.node] = uint8_t(axis);
+    return {Subtree{t.items, m, 2 * t.node + 1}, Subtree{median + 1, t.n - m - 1, 2 * t.node + 2}};
 }
 
 // The whole subtree, on this thread.
-void build(Subtree t, Photon* heap) {
+void build(Subtree t, const Placement& out) {
     while (t.n > 0) {
-        const auto [left, right] = placeRoot(t, heap);
-        if (right.n > 0) build(right, heap);
+        const auto [left, right] = placeRoot(t, out);
+        if (right.n > 0) build(right, out);
         t = left;
     }
 }
 
 // Replaces the top (largest) of a max-heap by a smaller x: one sift down where pop_heap + push_heap take
-// two passes (5 to 60% more gathers per second in bench/photon_map_bench).
+// two passes (5 to 60% more gathers per second in bench/photon_map_bench). The larger child is picked by
+// arithmetic, not a branch: which sibling is larger is a coin flip to the branch predictor.
 inline void replaceTop(Neighbor* heap, uint32_t k, Neighbor x) {
-    uint32_t i = 0;
-    for (;;) {
-        uint32_t c = 2 * i + 1;
-        if (c >= k) break;
-        if (c + 1 < k && heap[c].distance2 < heap[c + 1].distance2) ++c;
-        if (!(x.distance2 < heap[c].distance2)) break;
+    uint32_t i = 0, c = 1;
+    for (; c + 1 < k; c = 2 * c + 1) {
+        c += heap[c].distance2 < heap[c + 1].distance2;
+        if (!(x.distance2 < heap[c].distance2)) {
+            heap[i] = x;
+            return;
+        }
+        heap[i] = heap[c];
+        i = c;
+    }
+    if (c < k && x.distance2 < heap[c].distance2) {  // a last parent with one child
         heap[i] = heap[c];
         i = c;
     }
@@ -132,19 +164,30 @@ inline void replaceTop(Neighbor* heap, uint32_t k, Neighbor x) {
 
 PhotonMap::PhotonMap(std::vector<Photon> photons, int threads) {
     if (photons.size() >= UINT32_MAX / 2) throw Error("too many photons for one photon map");
-    for (const Photon& p : photons)
-        if (!std::isfinite(p.position[0]) || !std::isfinite(p.position[1]) || !std::isfinite(p.position[2]))
-            throw Error("photon map: a photon has a non-finite position");
-    photons_.resize(photons.size());
+    const size_t n = photons.size();
+    if (n == 0) return;
+    const int workers = std::max(threads, 1);
+    constexpr uint64_t kBlock = 1 << 16;
+    std::vector<Item> items(n);
+    parallelForBlocks(BlockLoop{0, n, kBlock, workers}, nullptr, [&](int, uint64_t first, uint64_t last) {
+        for (uint64_t i = first; i < last; ++i) {
+            const float* p = photons[i].position;
+            if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+                throw Error("photon map: a photon has a non-finite position");
+            items[i] = Item{p[0], p[1], p[2], std::bit_cast<float>(uint32_t(i))};
+        }
+        return uint64_t(0);
+    });
+    std::vector<uint32_t> index(n);
+    std::vector<uint8_t> axis(n);
+    const Placement out{index.data(), axis.data()};
     // The top levels one level at a time, each level's roots placed in parallel, until there is a subtree for
     // every thread; then the subtrees whole, in parallel.
-    Photon* heap = photons_.data();
-    std::vector<Subtree> level;
-    if (!photons.empty()) level.push_back({photons.data(), photons.size(), 0});
-    while (!level.empty() && level.size() < size_t(std::max(threads, 1))) {
+    std::vector<Subtree> level{{items.data(), n, 0}};
+    while (!level.empty() && level.size() < size_t(workers)) {
         std::vector<std::array<Subtree, 2>> split(level.size());
-        parallelForBlocks(BlockLoop{0, level.size(), 1, threads}, nullptr, [&](int, uint64_t i, uint64_t) {
-            split[i] = placeRoot(level[i], heap);
+        parallelForBlocks(BlockLoop{0, level.size(), 1, workers}, nullptr, [&](int, uint64_t i, uint64_t) {
+            split[i] = placeRoot(level[i], out);
             return uint64_t(0);
         });
         level.clear();
@@ -152,8 +195,18 @@ PhotonMap::PhotonMap(std::vector<Photon> photons, int threads) {
             for (const Subtree& t : pair)
                 if (t.n > 0) level.push_back(t);
     }
-    parallelForBlocks(BlockLoop{0, level.size(), 1, threads}, nullptr, [&](int, uint64_t i, uint64_t) {
-        build(level[i], heap);
+    parallelForBlocks(BlockLoop{0, level.size(), 1, workers}, nullptr, [&](int, uint64_t i, uint64_t) {
+        build(level[i], out);
+        return uint64_t(0);
+    });
+    photons_.resize(n);
+    parallelForBlocks(BlockLoop{0, n, kBlock, workers}, nullptr, [&](int, uint64_t first, uint64_t last) {
+        for (uint64_t i = first; i < last; ++i) {
+            // Reads in input order miss the cache: fetch a few ahead.
+            if (i + 32 < last) __builtin_prefetch(&photons[index[i + 32]]);
+            photons_[i] = photons[index[i]];
+            photons_[i].setAxis(axis[i]);
+        }
         return uint64_t(0);
     });
 }
@@ -176,8 +229,13 @@ uint32_t PhotonMap::nearest(const float q[3], Neighbor* heap, uint32_t k, float&
     for (;;) {
         for (;;) {
             const uint32_t left = 2 * node + 1;
-            // The lower levels miss the cache: fetch the children while this node is tested.
-            if (left < n) __builtin_prefetch(photons + left);
+            // The lower levels miss the cache: fetch the grandchildren (4 nodes, 80 contiguous bytes) while
+            // this node is tested, two levels ahead of the walk (the children were fetched by the parent).
+            const uint64_t grand = 4 * uint64_t(node) + 3;
+            if (grand < n) {
+                __builtin_prefetch(photons + grand);
+                __builtin_prefetch(photons + grand + 3);
+            }
             const Photon& p = photons[node];
             ++count;
             const float dx = q[0] - p.position[0], dy = q[1] - p.position[1], dz = q[2] - p.position[2];

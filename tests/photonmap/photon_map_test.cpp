@@ -149,6 +149,67 @@ TEST(PhotonMap, BuildIsDeterministicWhateverTheThreadCount) {
     EXPECT_EQ(std::memcmp(one.photons().data(), five.photons().data(), input.size() * sizeof(Photon)), 0);
 }
 
+// FNV-1a over bytes, to pin a tree and a run of gathers to the bit.
+struct Fnv {
+    uint64_t h = 1469598103934665603ull;
+    template <class T>
+    void add(const T* data, size_t count) {
+        const auto* b = reinterpret_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < count * sizeof(T); ++i) h = (h ^ b[i]) * 1099511628211ull;
+    }
+};
+
+// Photons from raw mt19937 words (the same on every standard library): clusters on a floor over a
+// background, on a grid of 2^-12 so that coordinates tie by the thousand, with exact duplicates.
+std::vector<Photon> tiedCaustic(size_t n) {
+    std::mt19937 rng(21);
+    auto unit = [&] { return double(rng() >> 20) / 4096; };  // [0, 1) in steps of 2^-12
+    std::vector<Photon> photons;
+    while (photons.size() < n) {
+        const uint32_t pick = rng() % 8;
+        Vec3 p{unit(), unit(), 0};
+        if (pick >= 2) p = Vec3{0.1 * pick, 0.05 * pick, 0} + Vec3{unit(), unit(), unit()} * 0.03;
+        photons.push_back(Photon::make(p, float(1 + pick), {1, 0.5, -1.0 - pick}, 400 + 30 * pick));
+        if (pick == 7 && photons.size() < n) photons.push_back(photons.back());
+    }
+    return photons;
+}
+
+// The tree's bytes and every gather's answer (the photons, their order in the heap, the radius) and
+// irradiance bits, as main's photon map gave them before issue 32's speed-ups (f963aad): faster trees and
+// gathers must leave the renders' bits alone, ties and all. A change that means to move them changes these.
+TEST(PhotonMap, TreeAndGathersAreBitForBitThoseOfTheReference) {
+    const std::vector<Photon> input = tiedCaustic(20000);
+    for (int threads : {1, 2, 3}) {
+        const PhotonMap map(input, threads);
+        Fnv tree;
+        tree.add(map.photons().data(), map.size());
+        EXPECT_EQ(tree.h, 12820187859836620088ull) << threads << " threads";
+    }
+    const PhotonMap map(input, 2);
+    std::mt19937 rng(22);
+    Fnv answers;
+    for (bool cached : {true, false}) {
+        for (size_t k : {1, 16, 100}) {
+            std::vector<Neighbor> buffer(k);
+            GatherState state;
+            GatherSettings settings;
+            settings.cachedRadius = cached;
+            for (int i = 0; i < 300; ++i) {
+                // Raster-like runs of near queries, then jumps; a third on a photon (ties at distance 0).
+                const Vec3 q = i % 3 == 0 ? input[rng() % input.size()].pos()
+                                          : Vec3{(i % 30) / 40.0, (i / 30) / 12.0, 0.01 * (i % 5)};
+                const GatherResult g = map.gather(q, buffer, state, settings);
+                answers.add(g.neighbors.data(), g.neighbors.size());
+                answers.add(&g.radius2, 1);
+                const double e = map.irradiance(q, {0, 0.3, 1}, buffer, state, settings);
+                answers.add(&e, 1);
+            }
+        }
+    }
+    EXPECT_EQ(answers.h, 8481069473912406851ull);
+}
+
 TEST(PhotonMap, GathersExactlyTheKNearestOfRandomPhotons) {
     const PhotonMap map(uniformCube(4000, 3));
     std::mt19937 rng(4);
