@@ -34,9 +34,10 @@ inline constexpr std::array<ResultFile, 23> kResultFiles{{
     {"stats.csv", "text/csv", "stats.csv", "stats_csv", ""},
     {"render.png", "image/png", "render.png", "render", "render"},
     {"fire.png", "image/png", "fire.png", "fire_picture", "fire_picture"},
-    {"heatmap.png", "image/png", "heatmap.png", "heatmap", "render"},
-    // heatmap.png's facets in pixels (docs/stats-schema.md); the heat-map comes with every study.
-    {"heatmap.json", "application/json", "heatmap.json", "heatmap_layout", "render"},
+    // The heat-map and its facets in pixels (docs/stats-schema.md) come with every study, rendered or not
+    // (heatmap_fire.png's facets lie where heatmap.png's do).
+    {"heatmap.png", "image/png", "heatmap.png", "heatmap", ""},
+    {"heatmap.json", "application/json", "heatmap.json", "heatmap_layout", ""},
     // The stone as traced, facet by facet in mm, for the page's 3-D view (docs/stats-schema.md).
     {"stone.json", "application/json", "stone.json", "stone", ""},
     {"heatmap_fire.png", "image/png", "heatmap_fire.png", "heatmap_fire", "fire"},

@@ -195,6 +195,45 @@ async function stoneCanvasPixels() {
   });
 }
 
+// The comparison's heat-maps of `ids` in `cards` (a card selector with data-id) drawn on the page on one colour
+// scale: the same legend in each, the largest of the scales each picture has on its own (the 95th percentile of
+// the facets other than the table, rounded up); every facet filled with the page's viridis of its share over
+// that scale, those beyond it hatched and named under the legend. `shares(stats)`: [{id, share, stderr}].
+async function assertCommonHeatScale(cards, ids, shares) {
+  await page.waitForFunction(([sel, n]) => document.querySelectorAll(`${sel} .heatmap-drawing`).length === n, [cards, ids.length]);
+  const legends = await page.$$eval(`${cards} .heat-max`, (els) => els.map((e) => e.textContent));
+  assert.equal(legends.length, ids.length);
+  for (const l of legends) assert.equal(l, legends[0], 'one scale');
+  const scale = parseFloat(legends[0]) / 100;
+  const own = [];
+  let hatched = 0;
+  for (const id of ids) {
+    const stats = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+    const region = new Map(stats.facets.map((f) => [f.id, f.region]));
+    const all = shares(stats);
+    const others = all.filter((f) => region.get(f.id) !== 'table').map((f) => f.share).sort((x, y) => x - y);
+    own.push(others[Math.ceil(0.95 * others.length) - 1]);
+    const byId = new Map(all.map((f) => [String(f.id), f]));
+    const drawn = await page.$$eval(`${cards}[data-id="${id}"] .heatmap-drawing polygon[data-facet]`,
+      (ps) => ps.map((p) => ({ id: p.dataset.facet, fill: p.getAttribute('fill'), points: p.getAttribute('points') })));
+    const overlays = await page.$$eval(`${cards}[data-id="${id}"] .heatmap-drawing polygon.heat-beyond`, (ps) => ps.map((p) => p.getAttribute('points')));
+    const expected = await page.evaluate(async ([list, top]) => {
+      const { viridis } = await import('/js/heatmap.js');
+      return list.map((s) => viridis(s / top));
+    }, [drawn.map((d) => (byId.get(d.id) || { share: 0 }).share), scale]);
+    drawn.forEach((d, k) => {
+      assert.equal(d.fill, expected[k], `facet ${d.id} of ${id}`);
+      const beyond = (byId.get(d.id) || { share: 0 }).share > scale * (1 + 1e-9);
+      assert.equal(overlays.includes(d.points), beyond, `facet ${d.id} of ${id} hatched when beyond the scale`);
+      if (beyond) hatched += 1;
+    });
+    if (overlays.length) assert.match(await page.textContent(`${cards}[data-id="${id}"] .heat-beyond-list`), /^Hatched, beyond the scale: \S/);
+  }
+  const largest = Math.max(...own);
+  assert.ok(scale >= largest - 1e-12 && scale <= 1.5 * largest + 1e-12, `scale ${scale} against the pictures' own ${own}`);
+  return { scale, hatched };
+}
+
 async function noHorizontalOverflow() {
   return page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth + 1);
 }
@@ -619,23 +658,11 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const pics = await picturesLoaded('.compare-grid');
     assert.equal(pics.length, 4);
     for (const p of pics) assert.ok(p.width > 0, `${p.src} did not load`);
-    // The heat-maps are drawn on the page on one colour scale: the facet with the most light of either
-    // design is the brightest of both, and the design with less light per facet has no facet as bright.
-    await page.waitForFunction(() => document.querySelectorAll('.compare-card .heatmap-drawing').length === 2);
-    const legends = await page.$$eval('.compare-card .heat-max', (els) => els.map((e) => e.textContent));
-    assert.equal(legends.length, 2);
-    assert.equal(legends[0], legends[1]);
-    const brightest = {};
-    for (const id of expected) {
-      const facets = (await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json()).facets;
-      const greens = await page.$$eval(`.compare-card[data-id="${id}"] .heatmap-drawing polygon`,
-        (ps) => ps.map((p) => Number(p.getAttribute('fill').match(/\d+/g)[1])));
-      assert.equal(greens.length, facets.filter((f) => f.region !== 'girdle').length);
-      brightest[id] = { green: Math.max(...greens), share: Math.max(...facets.map((f) => f.leaving_share)) };
-    }
-    const [a, b] = expected;
-    if (brightest[a].share > brightest[b].share) assert.ok(brightest[a].green > brightest[b].green, JSON.stringify(brightest));
-    if (brightest[a].share < brightest[b].share) assert.ok(brightest[a].green < brightest[b].green, JSON.stringify(brightest));
+    // The heat-maps are drawn on the page on one colour scale (here the cube's, whose facets other than a table
+    // take more of the light than the brilliant's table).
+    const light = await assertCommonHeatScale('.compare-card', expected,
+      (s) => s.facets.map((f) => ({ id: f.id, share: f.leaving_share })));
+    assert.match(await page.textContent('[aria-labelledby="side-title"] > .hint'), new RegExp(`0 to ${(light.scale * 100).toFixed(1)} % of the light`));
     // The best value of each figure is marked in words, not only by colour.
     assert.ok(await page.locator('.compare-table .best-mark').count() >= 7);
     await shot('07-compare-desktop');
@@ -825,6 +852,35 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     }
     assert.ok(await page.locator('.fire-histogram-chart rect').count() > 2, 'the histogram has filled cells');
     await shot('09c-fire');
+  });
+
+  // Issue 30: the compare view's fire heat-maps are drawn on the page on one colour scale, as its light heat-maps
+  // are: the same colour is the same share of the fire in each.
+  test('the comparison draws the fire heat-maps on one colour scale', async () => {
+    const ids = [];
+    for (const pavilion of [40.7, 43]) {
+      const res = await fetch(`${baseUrl}/api/jobs`, {
+        method: 'POST', headers: { 'Content-Type': 'application/json' },
+        body: JSON.stringify({ mesh: 'round_brilliant', photons: 20000, threads: 2, render: false, fire: { enabled: true }, cut: { pavilion } }),
+      });
+      assert.equal(res.status, 202);
+      ids.push((await res.json()).id);
+    }
+    await page.goto(`${baseUrl}/#/`);
+    for (const id of ids) await waitForFinished(id);
+    await page.goto(`${baseUrl}/#/compare/${ids.join(',')}`);
+    await page.waitForSelector('[data-section="fire-compare"]');
+    await page.locator('[data-section="fire-compare"]').scrollIntoViewIfNeeded();
+    // Two brilliants: the scale is their crown facets', the tables beyond it, hatched.
+    const fire = await assertCommonHeatScale('.fire-compare-card', ids, (s) => s.fire.facets);
+    assert.ok(fire.hatched >= 1, 'a table beyond the scale');
+    assert.match(await page.textContent('[data-section="fire-compare"] .hint'), new RegExp(`0 to ${(fire.scale * 100).toFixed(1)} % of the fire`));
+    const [a] = ids;
+    // Pointing at a facet names its share of the fire.
+    const first = await page.$(`.fire-compare-card[data-id="${a}"] .heatmap-drawing polygon`);
+    await first.hover();
+    assert.match(await page.textContent(`.fire-compare-card[data-id="${a}"] .heatmap-readout`), /of the fire leaving/);
+    await shot('09d-compare-fire');
   });
 
   test('the comparison shows each design\'s ASET picture with its shares, and the tilt series where present', async () => {

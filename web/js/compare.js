@@ -5,7 +5,7 @@ import { FIGURES } from './constants.js';
 import { $, h } from './dom.js';
 import { fireCompare } from './fire.js';
 import { decimalsFor, fmtNumber, fmtPctErr, shortId } from './format.js';
-import { pictures, scaleEnd } from './heatmap.js';
+import { commonScale, pictures } from './heatmap.js';
 import { jobName } from './meshes.js';
 import { jobSummary } from './progress.js';
 import { crystalCompare } from './compare_crystal.js';
@@ -105,17 +105,17 @@ function designSummary(e) {
 
 function compareCards(entries) {
   // One colour scale for every heat-map, so that the same colour means the same share in each design.
-  const commonScale = scaleEnd(Math.max(0, ...entries.flatMap((e) => (e.stats.facets || []).map((f) => f.leaving_share))));
+  const scale = commonScale(entries.map((e) => e.stats));
   return h('section', { 'aria-labelledby': 'side-title' },
     h('h2', { id: 'side-title' }, 'Side by side'),
-    h('p', { class: 'hint' }, `Heat-maps share one colour scale, 0 to ${(commonScale * 100).toFixed(1)} % of the light leaving a facet.`),
+    h('p', { class: 'hint' }, `Heat-maps share one colour scale, 0 to ${(scale * 100).toFixed(1)} % of the light leaving a facet: the largest of the scales the pictures have on their own; facets beyond it (mostly the table) are hatched.`),
     h('div', { class: 'compare-grid' }, entries.map((e, i) => {
       const t = e.stats.totals;
       return h('article', { class: 'card compare-card', 'data-id': e.job.id },
         h('h3', {}, h('span', { class: 'rank-no small' }, `#${i + 1}`), ' ', h('a', { href: `#/jobs/${e.job.id}` }, entryName(e))),
         h('p', { class: 'rank-meta' }, jobSummary(e.job.settings)),
         h('p', { class: 'compare-value' }, fmtPctErr(t.crown_return, t.crown_return_stderr), h('span', { class: 'muted' }, ' crown return')),
-        pictures(e.job, entryName(e), e.stats, commonScale),
+        pictures(e.job, entryName(e), e.stats, scale),
         designSummary(e),
         regionTable(e.stats.regions || {}, `Light leaving each region, ${entryName(e)}`, true));
     })));

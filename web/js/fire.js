@@ -3,6 +3,7 @@
 // the heat-map, and the same side by side for several designs.
 import { h, svg } from './dom.js';
 import { decimalsFor, fmtInt, fmtNumber, fmtPctErr, shortId } from './format.js';
+import { FIRE, commonScale, fireHeatmapDrawn } from './heatmap.js';
 
 export const FIRE_FIGURES = [
   { key: 'mean_separation_deg', label: 'Mean red–blue separation', degrees: true,
@@ -98,6 +99,8 @@ export function fireSection(job, stats) {
 export function fireCompare(entries, nameOf) {
   const withFire = entries.filter((e) => e.stats.fire);
   if (!withFire.length) return null;
+  // One colour scale for every fire heat-map, so that the same colour is the same share in each.
+  const scale = commonScale(withFire.map((e) => e.stats), FIRE);
   return h('section', { class: 'card', 'aria-labelledby': 'fire-compare-title', 'data-section': 'fire-compare' },
     h('h2', { id: 'fire-compare-title' }, 'Fire, side by side'),
     h('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-labelledby': 'fire-compare-title' },
@@ -111,8 +114,9 @@ export function fireCompare(entries, nameOf) {
             return h('td', { class: `num${isBest ? ' best-cell' : ''}` }, fmtFire(f, e.stats.fire), isBest ? h('span', { class: 'best-mark' }, ' ▲ most') : null);
           }));
         })))),
+    h('p', { class: 'hint' }, `Fire heat-maps share one colour scale, 0 to ${(scale * 100).toFixed(1)} % of the fire leaving a facet; facets beyond it hatched.`),
     h('div', { class: 'compare-grid' }, withFire.map((e) => h('figure', { class: 'fire-compare-card', 'data-id': e.job.id },
       fireHistogramChart(e.stats.fire),
-      e.job.links && e.job.links.heatmap_fire ? h('img', { src: e.job.links.heatmap_fire, alt: `Fire heat-map of ${nameOf(e)}`, loading: 'lazy' }) : null,
+      e.job.links && e.job.links.heatmap_fire ? fireHeatmapDrawn(e.job, nameOf(e), e.stats, scale) : null,
       h('figcaption', {}, nameOf(e))))));
 }
