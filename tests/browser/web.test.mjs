@@ -180,9 +180,9 @@ async function chartTextsCutOff() {
   });
 }
 
-// The 3-D view's canvas, sampled every 5th pixel: how many differ from the background, and the samples.
-async function stoneCanvasPixels() {
-  return page.$eval('canvas.stone3d-canvas', (c) => {
+// The 3-D view's canvas (within `scope`), sampled every 5th pixel: how many differ from the background, and the samples.
+async function stoneCanvasPixels(scope = '') {
+  return page.$eval(`${scope} canvas.stone3d-canvas`, (c) => {
     const copy = document.createElement('canvas');
     copy.width = c.width;
     copy.height = c.height;
@@ -671,6 +671,61 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await shot('08-compare-phone');
     assert.ok(await noHorizontalOverflow(), 'the comparison fits a phone');
     await page.setViewportSize(DESKTOP);
+  });
+
+  test('the comparison shows the designs in 3-D, one at a time, on one colour scale, loaded when scrolled to', async () => {
+    await page.goto(`${baseUrl}/#/compare/${jobIds.brilliant},${jobIds.cube}`);
+    const section = '[data-section="compare3d"]';
+    const view = `${section} .stone3d`;
+    await page.waitForSelector(section);
+    const order = await page.$$eval('.compare-card', (cs) => cs.map((c) => c.dataset.id));
+    // Out of the window, nothing loads; brought near, the first design of the ranking is drawn.
+    assert.equal(await page.locator(`${section} canvas`).count(), 0, 'the 3-D view waits until scrolled to');
+    await page.locator(section).scrollIntoViewIfNeeded();
+    await page.waitForSelector(`${view}[data-triangles]`);
+    const shapes = {};
+    const stats = {};
+    for (const id of order) {
+      shapes[id] = await (await fetch(`${baseUrl}/api/jobs/${id}/stone.json`)).json();
+      stats[id] = await (await fetch(`${baseUrl}/api/jobs/${id}/stats`)).json();
+    }
+    const triangles = (id) => shapes[id].facets.reduce((n, f) => n + f.vertices.length - 2, 0);
+    assert.equal(await page.getAttribute(view, 'data-stone'), order[0]);
+    assert.equal(Number(await page.getAttribute(view, 'data-triangles')), triangles(order[0]));
+    // One scale: the largest of the designs' own (the 95th percentile of the facets other than the table).
+    const own = await page.evaluate(async (lists) => {
+      const { scaleEnd } = await import('/js/heatmap.js');
+      return lists.map((l) => {
+        const others = l.filter((f) => f.region !== 'table').map((f) => f.leaving_share).sort((x, y) => x - y);
+        return scaleEnd(others[Math.ceil(0.95 * others.length) - 1]);
+      });
+    }, order.map((id) => stats[id].facets));
+    assert.notEqual(own[0], own[1], 'designs whose own scales differ');
+    const top = Number(await page.getAttribute(view, 'data-top'));
+    assert.equal(top, Math.max(...own));
+    assert.equal(await page.textContent(`${section} .stone3d-shared`), 'One scale for the 2 designs compared');
+    assert.doesNotMatch(await page.textContent(`${section} .stone3d-legend`), /null|undefined|NaN/);
+    const before = await stoneCanvasPixels(section);
+    assert.ok(before.drawn > 0.1 * before.samples.length, `${before.drawn} of ${before.samples.length} samples drawn`);
+
+    // The other design: its shape, on the same scale.
+    await page.selectOption('#compare3d-stone', '1');
+    await page.waitForSelector(`${view}[data-stone="${order[1]}"]`);
+    assert.equal(Number(await page.getAttribute(view, 'data-triangles')), triangles(order[1]));
+    assert.equal(Number(await page.getAttribute(view, 'data-top')), top, 'the scale stays');
+    const after = await stoneCanvasPixels(section);
+    assert.ok(after.samples.some((v, i) => v !== before.samples[i]), 'another stone drawn');
+    assert.match(await page.textContent('#compare3d-summary'), new RegExp(`${stats[order[1]].facets.length} facets coloured by light leaving`));
+
+    // A click at the centre names the facet there with its numbers, from this design's statistics.
+    await page.locator(`${section} canvas.stone3d-canvas`).click();
+    await page.waitForSelector(`${view}[data-picked]`);
+    const pickedId = await page.getAttribute(view, 'data-picked');
+    const picked = stats[order[1]].facets.find((f) => String(f.id) === pickedId);
+    assert.ok(picked);
+    assert.equal(await page.textContent(`${section} .stone3d-readout h3`), picked.name.replace(/_/g, ' '));
+    assert.equal(await page.textContent(`${section} .stone3d-numbers dd[data-figure="entering"]`), picked.entering.toLocaleString('en-US'));
+    await shot('07c-compare-3d');
   });
 
   test('a comparison prints as a clean report: the ranking, the figures and each design, without the page\'s controls', async () => {

@@ -52,7 +52,7 @@ export async function showCompare(ids) {
   if (failed.length) {
     parts.push(h('p', { class: 'form-error', role: 'alert' }, failed.map((f) => `Job ${shortId(f.id)}: ${f.error}`).join('; ')));
   }
-  if (ok.length) parts.push(...[verdictCompare(ok, entryName), ranking(ok), compareCards(ok), viewerCompare(ok, entryName), colourCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName), crystalCompare(ok, entryName)].filter(Boolean));
+  if (ok.length) parts.push(...[verdictCompare(ok, entryName), ranking(ok), compareCards(ok), stonesCompare(ok), viewerCompare(ok, entryName), colourCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName), crystalCompare(ok, entryName)].filter(Boolean));
   body.replaceChildren(...parts);
 }
 
@@ -119,6 +119,28 @@ function compareCards(entries) {
         designSummary(e),
         regionTable(e.stats.regions || {}, `Light leaving each region, ${entryName(e)}`, true));
     })));
+}
+
+// The designs in 3-D, one view with a menu of them, every one coloured on one scale. stone3d.js (and three.js)
+// are loaded only when the section comes near the window: a comparison read for its tables loads neither.
+function stonesCompare(entries) {
+  const stones = entries.filter((e) => e.job.links && e.job.links.stone).map((e) => ({ job: e.job, stats: e.stats, name: entryName(e) }));
+  if (!stones.length) return null;
+  const body = h('div', { class: 'stone3d' }, h('p', { class: 'hint' }, 'The 3-D view loads when you scroll to it.'));
+  const section = h('section', { class: 'card', 'aria-labelledby': 'compare3d-title', 'data-section': 'compare3d' },
+    h('h2', { id: 'compare3d-title' }, 'In 3-D'),
+    h('p', { class: 'hint' }, 'Pick a design to turn it; each is coloured on the same scale as the others, so that the same colour is the same value in each.'),
+    body);
+  const seen = new IntersectionObserver((events) => {
+    if (!events.some((e) => e.isIntersecting)) return;
+    seen.disconnect();
+    body.replaceChildren(h('p', { class: 'hint' }, 'Loading the 3-D view…'));
+    import('./stone3d.js').then((m) => m.showStones(body, stones, 'compare3d')).catch((e) => {
+      body.replaceChildren(h('p', { class: 'hint stone3d-missing', role: 'status' }, `The 3-D view could not be loaded: ${e.message}`));
+    });
+  }, { rootMargin: '200px' });
+  seen.observe(section);
+  return section;
 }
 
 function compareTable(entries) {
