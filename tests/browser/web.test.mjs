@@ -1126,8 +1126,40 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
       `the GIA reference ringed at ${rings[0].x},${rings[0].y}, not ${expectX},${expectY}`);
     assert.ok(chartText.includes('◯ reference designs'));
     assert.deepEqual(await chartTextsCutOff(), []);
-    assert.ok(await page.isHidden('#sweep-figures'), 'a map shows one figure');
     await shot('13-sweep-map');
+
+    // The map of another of the sweep's figures, picked from those it measured (the job's first), as the CLI's
+    // map_<figure>.png draws it: viridis from its lowest point to its highest, its name on the legend, the star
+    // on its own highest point.
+    const offered = await page.$$eval('#sweep-map-figure option', (os) => os.map((o) => o.value));
+    assert.deepEqual([...offered].sort(), [...points.figures].sort());
+    assert.equal(offered[0], 'coloured_share');
+    assert.equal(await page.inputValue('#sweep-map-figure'), 'coloured_share');
+    const starAt = async () => page.$eval('#sweep-chart .sweep-best', (t) => [Number(t.getAttribute('x')), Number(t.getAttribute('y')) - 7]);
+    const centreOf = async (at) => page.$eval(`#sweep-chart rect.sweep-cell[data-at="${at}"]`, (r) => [
+      Number(r.getAttribute('x')) + Number(r.getAttribute('width')) / 2, Number(r.getAttribute('y')) + Number(r.getAttribute('height')) / 2]);
+    const valueOf = (p, key) => [p.totals, p.viewer, p.colour, p.fire].find((o) => o && key in o)[key];
+    const traced = points.points.filter((p) => !p.error);
+    const highestOf = (key) => traced.reduce((b, p) => (valueOf(p, key) > valueOf(b, key) ? p : b)).at.join(',');
+    const lowestOf = (key) => traced.reduce((b, p) => (valueOf(p, key) < valueOf(b, key) ? p : b)).at.join(',');
+    assert.deepEqual(await starAt(), await centreOf(highestOf('coloured_share')));
+    // A figure whose highest point lies elsewhere.
+    const other = points.figures.find((k) => highestOf(k) !== highestOf('coloured_share'));
+    assert.ok(other, JSON.stringify(points.figures));
+    const label = await page.textContent(`#sweep-map-figure option[value="${other}"]`);
+    await page.selectOption('#sweep-map-figure', other);
+    await page.waitForFunction((l) => document.querySelector('#sweep-chart .legend-title').textContent === l, label);
+    assert.deepEqual(await starAt(), await centreOf(highestOf(other)));
+    const fillAt = async (at) => page.getAttribute(`#sweep-chart rect.sweep-cell[data-at="${at}"]`, 'fill');
+    const ends = await page.evaluate(async () => {
+      const { viridis } = await import('/js/heatmap.js');
+      return [viridis(0), viridis(1)];
+    });
+    assert.deepEqual([await fillAt(lowestOf(other)), await fillAt(highestOf(other))], ends);
+    assert.ok((await page.getAttribute('#sweep-chart svg', 'aria-label')).startsWith(`${label.replace(/ \(.*\)$/, '')} over pavilion and crown`));
+    assert.ok((await page.textContent('#sweep-view-title')).endsWith(`: ${label.replace(/ \(.*\)$/, '').toLowerCase()}`), 'the title names the figure mapped');
+    assert.deepEqual(await chartTextsCutOff(), []);
+    await shot('13b-sweep-map-figure');
   });
 
   test('a sweep over one axis draws several figures, each its own colour, fire among them, its legend whole', async () => {
