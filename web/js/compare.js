@@ -109,7 +109,7 @@ function compareCards(entries) {
   return h('section', { 'aria-labelledby': 'side-title' },
     h('h2', { id: 'side-title' }, 'Side by side'),
     h('p', { class: 'hint' }, `Heat-maps share one colour scale, 0 to ${(scale * 100).toFixed(1)} % of the light leaving a facet: the largest of the scales the pictures have on their own; facets beyond it (mostly the table) are hatched.`),
-    h('div', { class: 'compare-grid' }, entries.map((e, i) => {
+    h('div', { class: 'compare-grid side-grid' }, entries.map((e, i) => {
       const t = e.stats.totals;
       return h('article', { class: 'card compare-card', 'data-id': e.job.id },
         h('h3', {}, h('span', { class: 'rank-no small' }, `#${i + 1}`), ' ', h('a', { href: `#/jobs/${e.job.id}` }, entryName(e))),

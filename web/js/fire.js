@@ -115,7 +115,7 @@ export function fireCompare(entries, nameOf) {
           }));
         })))),
     h('p', { class: 'hint' }, `Fire heat-maps share one colour scale, 0 to ${(scale * 100).toFixed(1)} % of the fire leaving a facet; facets beyond it hatched.`),
-    h('div', { class: 'compare-grid' }, withFire.map((e) => h('figure', { class: 'fire-compare-card', 'data-id': e.job.id },
+    h('div', { class: 'compare-grid fire-compare-grid' }, withFire.map((e) => h('figure', { class: 'fire-compare-card', 'data-id': e.job.id },
       fireHistogramChart(e.stats.fire),
       e.job.links && e.job.links.heatmap_fire ? fireHeatmapDrawn(e.job, nameOf(e), e.stats, scale) : null,
       h('figcaption', {}, nameOf(e))))));
