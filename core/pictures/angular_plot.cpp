@@ -77,14 +77,7 @@ Image angularPlot(const AngularHistogram& h, const std::string& subtitle) {
                  std::fabs(ca) < 0.3 ? Align::Center : (ca > 0 ? Align::Left : Align::Right));
     }
     drawText(image, kWidth / 2.0, 16, "Where the light leaving the crown goes", 3, ink, Align::Center);
-    // A subtitle too wide for one line breaks at its last ", " that leaves a first line that fits.
-    std::string first = subtitle, second;
-    for (size_t at = subtitle.rfind(", ");
-         textWidth(first, 2) > kWidth - 20 && at != std::string::npos && at > 0;
-         at = subtitle.rfind(", ", at - 1)) {
-        first = subtitle.substr(0, at + 1);
-        second = subtitle.substr(at + 2);
-    }
+    const auto [first, second] = breakToFit(subtitle, 2, kWidth - 20);
     const double scale = std::max(textWidth(first, 2), textWidth(second, 2)) > kWidth - 20 ? 1.5 : 2;
     drawText(image, kWidth / 2.0, 46, first, scale, ink, Align::Center);
     if (!second.empty()) drawText(image, kWidth / 2.0, 64, second, scale, ink, Align::Center);

@@ -319,6 +319,21 @@ TEST(Pictures, AngularPlotBreaksALongSubtitleAtTheLegibleSize) {
     EXPECT_GT(inkIn(64, 78), 100u) << "a second line";
 }
 
+// A line too wide breaks after its last ", " or "; " that lets the first part fit; one that fits, or has no
+// such break, stays whole.
+TEST(Pictures, BreakToFitBreaksAtTheLastSeparatorThatFits) {
+    const std::string text = "ASET view, lit = bright or low light; scintillation 7.20 +- 0.18 % per frame";
+    EXPECT_EQ(breakToFit(text, 2, 630),
+              std::make_pair(std::string("ASET view, lit = bright or low light;"),
+                             std::string("scintillation 7.20 +- 0.18 % per frame")));
+    EXPECT_EQ(
+        breakToFit(text, 2, 150),
+        std::make_pair(std::string("ASET view,"),
+                       std::string("lit = bright or low light; scintillation 7.20 +- 0.18 % per frame")));
+    EXPECT_EQ(breakToFit(text, 2, 2000).second, "");
+    EXPECT_EQ(breakToFit("no separator here at all", 2, 50).first, "no separator here at all");
+}
+
 TEST(Pictures, PngSignatureAndSize) {
     Image image(20, 10, {0.5f, 0.25f, 1});
     drawText(image, 1, 1, "42%", 1, {0, 0, 0});
