@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace facetlight {
@@ -49,5 +50,9 @@ void drawText(Image& image, double x, double y, std::string_view text, double sc
               Align align = Align::Left);
 double textWidth(std::string_view text, double scale);
 double textHeight(double scale);  // of one line
+// `text` as one line no wider than `width` at `scale` or, where it is wider, two: broken after its last ", "
+// or "; " that lets the first line fit (a picture's subtitle at a legible size rather than shrunk). The
+// second is empty when one line fits or no break helps.
+std::pair<std::string, std::string> breakToFit(std::string_view text, double scale, double width);
 
 }  // namespace facetlight

@@ -9,8 +9,9 @@
 namespace facetlight {
 
 Image angularPlot(const AngularHistogram& h, const std::string& subtitle) {
-    constexpr int kWidth = 720, kHeight = 860;
-    constexpr double kRadius = 290, cx = kWidth / 2.0, cy = 400;
+    // Room above the circle for a subtitle in two lines at the legible size (scale 2, 14 px glyphs).
+    constexpr int kWidth = 720, kHeight = 880;
+    constexpr double kRadius = 290, cx = kWidth / 2.0, cy = 420;
     // Exits bunch into a few bright directions: a square-root colour scale keeps the faint ones visible.
     constexpr double kGamma = 0.5;
     Image image(kWidth, kHeight, {1, 1, 1});
@@ -76,10 +77,12 @@ Image angularPlot(const AngularHistogram& h, const std::string& subtitle) {
                  std::fabs(ca) < 0.3 ? Align::Center : (ca > 0 ? Align::Left : Align::Right));
     }
     drawText(image, kWidth / 2.0, 16, "Where the light leaving the crown goes", 3, ink, Align::Center);
-    drawText(image, kWidth / 2.0, 46, subtitle, textWidth(subtitle, 2) > kWidth - 20 ? 1.5 : 2, ink,
-             Align::Center);
-    drawText(image, kWidth / 2.0, 66, "radius: angle from vertical (deg); around: azimuth (deg)", 2, ink,
-             Align::Center);
+    const auto [first, second] = breakToFit(subtitle, 2, kWidth - 20);
+    const double scale = std::max(textWidth(first, 2), textWidth(second, 2)) > kWidth - 20 ? 1.5 : 2;
+    drawText(image, kWidth / 2.0, 46, first, scale, ink, Align::Center);
+    if (!second.empty()) drawText(image, kWidth / 2.0, 64, second, scale, ink, Align::Center);
+    drawText(image, kWidth / 2.0, second.empty() ? 66 : 84,
+             "radius: angle from vertical (deg); around: azimuth (deg)", 2, ink, Align::Center);
     drawColourBar(image, 110, cy + kRadius + 50, kWidth - 220, 22, 1.0,
                   "photons per steradian, relative to the brightest direction", 2, kGamma);
     return image;

@@ -9,7 +9,8 @@ namespace facetlight {
 namespace {
 
 constexpr int kWidth = 640, kHeight = 440;
-constexpr double kLeft = 80, kRight = 20, kTop = 96, kBottom = 60;
+// kTop: room for the title and a subtitle of two lines (breakToFit) above the y axis's label.
+constexpr double kLeft = 80, kRight = 20, kTop = 104, kBottom = 60;
 
 }  // namespace
 
@@ -63,8 +64,10 @@ Image shareChart(const std::vector<SharePoint>& points, const ShareChartLabels& 
     drawText(image, kWidth / 2.0, 10, title, textWidth(title, 2.5) > kWidth - 10 ? 1.5 : 2.5, ink,
              Align::Center);
     const std::string& subtitle = labels.subtitle;
-    drawText(image, kWidth / 2.0, 40, subtitle, textWidth(subtitle, 2) > kWidth - 10 ? 1.5 : 2, ink,
-             Align::Center);
+    const auto [first, second] = breakToFit(subtitle, 2, kWidth - 10);
+    const double scale = std::max(textWidth(first, 2), textWidth(second, 2)) > kWidth - 10 ? 1.5 : 2;
+    drawText(image, kWidth / 2.0, 40, first, scale, ink, Align::Center);
+    if (!second.empty()) drawText(image, kWidth / 2.0, 57, second, scale, ink, Align::Center);
     drawText(image, kLeft + plotW / 2, kHeight - 24, labels.across, 2, ink, Align::Center);
     drawText(image, 8, kTop - 26, labels.up, 2, ink);
     return image;

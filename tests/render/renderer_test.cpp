@@ -304,6 +304,36 @@ TEST(Pictures, AngularPlotLightsTheBinOfEachDirection) {
     EXPECT_LT(patchY[0] + 200, patchY[1]);
 }
 
+// A subtitle too wide for one line is broken in two at the legible size (scale 2: glyphs 14 pixels high, from
+// y 46 down to 60), not shrunk to scale 1.5 (down to 56.5, 8 pixels high on a 1400-pixel page).
+TEST(Pictures, AngularPlotBreaksALongSubtitleAtTheLegibleSize) {
+    const Image plot = angularPlot(
+        AngularHistogram(), "3735 of 5000 photons (collimated light), refracted out of table and crown");
+    const auto inkIn = [&](int y0, int y1) {
+        size_t n = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < plot.width(); ++x) n += plot.at(x, y).r < 0.5f;
+        return n;
+    };
+    EXPECT_GT(inkIn(57, 60), 20u) << "the first line's glyphs end at y 60";
+    EXPECT_GT(inkIn(64, 78), 100u) << "a second line";
+}
+
+// A line too wide breaks after its last ", " or "; " that lets the first part fit; one that fits, or has no
+// such break, stays whole.
+TEST(Pictures, BreakToFitBreaksAtTheLastSeparatorThatFits) {
+    const std::string text = "ASET view, lit = bright or low light; scintillation 7.20 +- 0.18 % per frame";
+    EXPECT_EQ(breakToFit(text, 2, 630),
+              std::make_pair(std::string("ASET view, lit = bright or low light;"),
+                             std::string("scintillation 7.20 +- 0.18 % per frame")));
+    EXPECT_EQ(
+        breakToFit(text, 2, 150),
+        std::make_pair(std::string("ASET view,"),
+                       std::string("lit = bright or low light; scintillation 7.20 +- 0.18 % per frame")));
+    EXPECT_EQ(breakToFit(text, 2, 2000).second, "");
+    EXPECT_EQ(breakToFit("no separator here at all", 2, 50).first, "no separator here at all");
+}
+
 TEST(Pictures, PngSignatureAndSize) {
     Image image(20, 10, {0.5f, 0.25f, 1});
     drawText(image, 1, 1, "42%", 1, {0, 0, 0});

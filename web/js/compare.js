@@ -5,7 +5,7 @@ import { FIGURES } from './constants.js';
 import { $, h } from './dom.js';
 import { fireCompare } from './fire.js';
 import { decimalsFor, fmtNumber, fmtPctErr, shortId } from './format.js';
-import { largestShare, pictures, scaleEnd } from './heatmap.js';
+import { commonScale, pictures } from './heatmap.js';
 import { jobName } from './meshes.js';
 import { jobSummary } from './progress.js';
 import { crystalCompare } from './compare_crystal.js';
@@ -52,7 +52,7 @@ export async function showCompare(ids) {
   if (failed.length) {
     parts.push(h('p', { class: 'form-error', role: 'alert' }, failed.map((f) => `Job ${shortId(f.id)}: ${f.error}`).join('; ')));
   }
-  if (ok.length) parts.push(...[verdictCompare(ok, entryName), ranking(ok), compareCards(ok), viewerCompare(ok, entryName), colourCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName), crystalCompare(ok, entryName)].filter(Boolean));
+  if (ok.length) parts.push(...[verdictCompare(ok, entryName), ranking(ok), compareCards(ok), stonesCompare(ok), viewerCompare(ok, entryName), colourCompare(ok, entryName), compareTable(ok), fireCompare(ok, entryName), crystalCompare(ok, entryName)].filter(Boolean));
   body.replaceChildren(...parts);
 }
 
@@ -105,20 +105,42 @@ function designSummary(e) {
 
 function compareCards(entries) {
   // One colour scale for every heat-map, so that the same colour means the same share in each design.
-  const commonScale = scaleEnd(largestShare(entries.map((e) => e.stats)));
+  const scale = commonScale(entries.map((e) => e.stats));
   return h('section', { 'aria-labelledby': 'side-title' },
     h('h2', { id: 'side-title' }, 'Side by side'),
-    h('p', { class: 'hint' }, `Heat-maps share one colour scale, 0 to ${(commonScale * 100).toFixed(1)} % of the light leaving a facet; a table beyond it is drawn at the top with its own share.`),
-    h('div', { class: 'compare-grid' }, entries.map((e, i) => {
+    h('p', { class: 'hint' }, `Heat-maps share one colour scale, 0 to ${(scale * 100).toFixed(1)} % of the light leaving a facet: the largest of the scales the pictures have on their own; facets beyond it (mostly the table) are hatched.`),
+    h('div', { class: 'compare-grid side-grid' }, entries.map((e, i) => {
       const t = e.stats.totals;
       return h('article', { class: 'card compare-card', 'data-id': e.job.id },
         h('h3', {}, h('span', { class: 'rank-no small' }, `#${i + 1}`), ' ', h('a', { href: `#/jobs/${e.job.id}` }, entryName(e))),
         h('p', { class: 'rank-meta' }, jobSummary(e.job.settings)),
         h('p', { class: 'compare-value' }, fmtPctErr(t.crown_return, t.crown_return_stderr), h('span', { class: 'muted' }, ' crown return')),
-        pictures(e.job, entryName(e), e.stats, commonScale),
+        pictures(e.job, entryName(e), e.stats, scale),
         designSummary(e),
         regionTable(e.stats.regions || {}, `Light leaving each region, ${entryName(e)}`, true));
     })));
+}
+
+// The designs in 3-D, one view with a menu of them, every one coloured on one scale. stone3d.js (and three.js)
+// are loaded only when the section comes near the window: a comparison read for its tables loads neither.
+function stonesCompare(entries) {
+  const stones = entries.filter((e) => e.job.links && e.job.links.stone).map((e) => ({ job: e.job, stats: e.stats, name: entryName(e) }));
+  if (!stones.length) return null;
+  const body = h('div', { class: 'stone3d' }, h('p', { class: 'hint' }, 'The 3-D view loads when you scroll to it.'));
+  const section = h('section', { class: 'card', 'aria-labelledby': 'compare3d-title', 'data-section': 'compare3d' },
+    h('h2', { id: 'compare3d-title' }, 'In 3-D'),
+    h('p', { class: 'hint' }, 'Pick a design to turn it; each is coloured on the same scale as the others, so that the same colour is the same value in each.'),
+    body);
+  const seen = new IntersectionObserver((events) => {
+    if (!events.some((e) => e.isIntersecting)) return;
+    seen.disconnect();
+    body.replaceChildren(h('p', { class: 'hint' }, 'Loading the 3-D view…'));
+    import('./stone3d.js').then((m) => m.showStones(body, stones, 'compare3d')).catch((e) => {
+      body.replaceChildren(h('p', { class: 'hint stone3d-missing', role: 'status' }, `The 3-D view could not be loaded: ${e.message}`));
+    });
+  }, { rootMargin: '200px' });
+  seen.observe(section);
+  return section;
 }
 
 function compareTable(entries) {

@@ -3,7 +3,7 @@
 // the heat-map, and the same side by side for several designs.
 import { h, svg } from './dom.js';
 import { decimalsFor, fmtInt, fmtNumber, fmtPctErr, shortId } from './format.js';
-import { FIRE, fireHeatmapDrawn, largestShare, scaleEnd } from './heatmap.js';
+import { FIRE, commonScale, fireHeatmapDrawn } from './heatmap.js';
 
 export const FIRE_FIGURES = [
   { key: 'mean_separation_deg', label: 'Mean red–blue separation', degrees: true,
@@ -100,7 +100,7 @@ export function fireCompare(entries, nameOf) {
   const withFire = entries.filter((e) => e.stats.fire);
   if (!withFire.length) return null;
   // One colour scale for every fire heat-map, so that the same colour is the same share in each.
-  const commonScale = scaleEnd(largestShare(withFire.map((e) => e.stats), FIRE));
+  const scale = commonScale(withFire.map((e) => e.stats), FIRE);
   return h('section', { class: 'card', 'aria-labelledby': 'fire-compare-title', 'data-section': 'fire-compare' },
     h('h2', { id: 'fire-compare-title' }, 'Fire, side by side'),
     h('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-labelledby': 'fire-compare-title' },
@@ -114,9 +114,9 @@ export function fireCompare(entries, nameOf) {
             return h('td', { class: `num${isBest ? ' best-cell' : ''}` }, fmtFire(f, e.stats.fire), isBest ? h('span', { class: 'best-mark' }, ' ▲ most') : null);
           }));
         })))),
-    h('p', { class: 'hint' }, `Fire heat-maps share one colour scale, 0 to ${(commonScale * 100).toFixed(1)} % of the fire leaving a facet; a table beyond it is drawn at the top with its own share.`),
-    h('div', { class: 'compare-grid' }, withFire.map((e) => h('figure', { class: 'fire-compare-card', 'data-id': e.job.id },
+    h('p', { class: 'hint' }, `Fire heat-maps share one colour scale, 0 to ${(scale * 100).toFixed(1)} % of the fire leaving a facet; facets beyond it hatched.`),
+    h('div', { class: 'compare-grid fire-compare-grid' }, withFire.map((e) => h('figure', { class: 'fire-compare-card', 'data-id': e.job.id },
       fireHistogramChart(e.stats.fire),
-      e.job.links && e.job.links.heatmap_fire ? fireHeatmapDrawn(e.job, nameOf(e), e.stats, commonScale) : null,
+      e.job.links && e.job.links.heatmap_fire ? fireHeatmapDrawn(e.job, nameOf(e), e.stats, scale) : null,
       h('figcaption', {}, nameOf(e))))));
 }

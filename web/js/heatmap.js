@@ -41,15 +41,21 @@ export function scaleEnd(max) {
 const LIGHT = { facets: (s) => s.facets || [], share: (f) => f.leaving_share, stderr: (f) => f.leaving_share_stderr, of: 'of the light leaving' };
 export const FIRE = { facets: (s) => (s.fire && s.fire.facets) || [], share: (f) => f.share, stderr: (f) => f.share_stderr, of: 'of the fire leaving' };
 
-// The largest share of `measure` any facet but the table has, over `statsList`: a common scale's end is
-// scaleEnd of it. The table, which often takes most of the light or the fire, would otherwise leave every other
-// facet at the dark end; it is drawn at the top of the scale with its own share written on it.
-export function largestShare(statsList, measure = LIGHT) {
-  return Math.max(0, ...statsList.flatMap((s) => {
-    const table = new Set((s.facets || []).filter((f) => f.region === 'table').map((f) => f.id));
-    return measure.facets(s).filter((f) => !table.has(f.id)).map(measure.share);
+// The end of one colour scale for the heat-maps of `statsList`: the largest of the scales their pictures have
+// on their own (core/pictures/heatmap.cpp, scaleTop: the 95th percentile of the facets other than the table,
+// the table's large share would leave every other facet the same dark colour), so that no design's map
+// saturates more than its own picture does. Facets beyond it are drawn hatched and named under the legend.
+export function commonScale(statsList, measure = LIGHT) {
+  return Math.max(...statsList.map((s) => {
+    const region = new Map((s.facets || []).map((f) => [f.id, f.region]));
+    const shares = measure.facets(s);
+    const others = shares.filter((f) => region.get(f.id) !== 'table').map(measure.share).sort((a, b) => a - b);
+    const p95 = others.length ? others[Math.ceil(0.95 * others.length) - 1] : 0;
+    return scaleEnd(p95 > 0 ? p95 : Math.max(0, ...shares.map(measure.share)));
   }));
 }
+
+let hatches = 0;  // each drawing's hatch pattern has an id of its own
 
 // Fetches the heat-map's layout and either lays its facets over the picture (overlay) or, with a common
 // colour scale (the comparison), draws them in its place filled on that scale; both name the facet pointed at.
@@ -73,12 +79,16 @@ async function heatmapShapes(figure, href, stats, commonScale, measure = LIGHT) 
     return s ? `${humanize(f.name)} (${f.side}): ${fmtPctErr(measure.share(s), measure.stderr(s))} ${measure.of}`
       : humanize(f.name);
   };
+  const shareOf = (f) => (facets.has(f.id) ? measure.share(facets.get(f.id)) : 0);
+  const beyond = drawing ? layout.facets.filter((f) => shareOf(f) > commonScale * (1 + 1e-9)) : [];
+  const hatch = `heat-hatch-${++hatches}`;
   const polygons = layout.facets.map((f) => {
-    const share = facets.has(f.id) ? measure.share(facets.get(f.id)) : 0;
-    const fill = drawing ? { fill: viridis(share / commonScale), stroke: '#1a1a1a', 'stroke-width': 1.2 } : {};
-    return svg('polygon', { points: f.points.map((p) => p.join(',')).join(' '), 'data-facet': f.id, ...fill },
-      svg('title', {}, describe(f)));
-  });
+    const points = f.points.map((p) => p.join(',')).join(' ');
+    const fill = drawing ? { fill: viridis(shareOf(f) / commonScale), stroke: '#1a1a1a', 'stroke-width': 1.2 } : {};
+    const shape = svg('polygon', { points, 'data-facet': f.id, ...fill }, svg('title', {}, describe(f)));
+    // Beyond the scale: its top colour, hatched, as the server's picture marks it.
+    return beyond.includes(f) ? [shape, svg('polygon', { points, fill: `url(#${hatch})`, class: 'heat-beyond', 'pointer-events': 'none' })] : [shape];
+  }).flat();
   let shapes;
   if (drawing) {
     const xs = layout.facets.flatMap((f) => f.points.map((p) => p[0]));
@@ -89,21 +99,21 @@ async function heatmapShapes(figure, href, stats, commonScale, measure = LIGHT) 
       const sx = layout.facets.filter((f) => f.side === side).flatMap((f) => f.points.map((p) => p[0]));
       return sx.length ? svg('text', { x: (Math.min(...sx) + Math.max(...sx)) / 2, y: y0 + 24, 'text-anchor': 'middle', class: 'heat-side' }, title) : null;
     }).filter(Boolean);
-    // A facet beyond the scale (the table) is drawn at its top and says its own share.
-    const beyond = layout.facets.filter((f) => facets.has(f.id) && measure.share(facets.get(f.id)) > commonScale).map((f) => {
-      const [cx, cy] = [0, 1].map((k) => f.points.reduce((sum, p) => sum + p[k], 0) / f.points.length);
-      return svg('text', { x: cx, y: cy, 'text-anchor': 'middle', 'dominant-baseline': 'middle', class: 'heat-beyond', 'data-facet': f.id },
-        `${(measure.share(facets.get(f.id)) * 100).toFixed(1)} %`);
-    });
     shapes = svg('svg', { class: 'heatmap-drawing', viewBox: `${x0} ${y0} ${w} ${hgt}`, role: 'img',
-      'aria-label': `Facet heat-map: crown from above, pavilion from below, on the comparison's common scale (0 to ${(commonScale * 100).toFixed(1)} % ${measure.of} a facet${beyond.length ? '; the table beyond it, its share written on it' : ''})` },
-    ...titles, ...polygons, ...beyond);
+      'aria-label': `Facet heat-map: crown from above, pavilion from below, on the comparison's common scale (0 to ${(commonScale * 100).toFixed(1)} % ${measure.of} a facet)` },
+    svg('defs', {}, svg('pattern', { id: hatch, width: 14, height: 14, patternUnits: 'userSpaceOnUse', patternTransform: 'rotate(45)' },
+      svg('line', { x1: 0, y1: 0, x2: 0, y2: 14, stroke: '#1a1a1a', 'stroke-width': 4 }))),
+    ...titles, ...polygons);
     anchor.replaceChildren(shapes);
+    const caption = figure.querySelector('figcaption');
     figure.insertBefore(h('div', { class: 'heat-legend' },
       h('span', {}, '0 %'),
       h('span', { class: 'heat-ramp', 'aria-hidden': 'true', style: `background: linear-gradient(to right, ${[0, 0.25, 0.5, 0.75, 1].map(viridis).join(', ')})` }),
-      h('span', { class: 'heat-max' }, `${(commonScale * 100).toFixed(1)} %`),
-      beyond.length ? h('span', { class: 'muted' }, 'and beyond (the table)') : null), figure.querySelector('figcaption'));
+      h('span', { class: 'heat-max' }, `${(commonScale * 100).toFixed(1)} %`)), caption);
+    if (beyond.length) {
+      figure.insertBefore(h('p', { class: 'heat-beyond-list' }, 'Hatched, beyond the scale: ',
+        beyond.map((f) => `${humanize(f.name)} ${fmtPctErr(shareOf(f), measure.stderr(facets.get(f.id)))}`).join(', ')), caption);
+    }
   } else {
     shapes = svg('svg', { class: 'heatmap-overlay', viewBox: `0 0 ${layout.width} ${layout.height}`, 'aria-hidden': 'true' }, ...polygons);
     anchor.append(shapes);
@@ -133,8 +143,8 @@ export function fireHeatmapDrawn(job, name, stats, commonScale) {
   return figure;
 }
 
-// `commonScale` (the comparison): the heat-map is drawn on the page, its colours running from 0 to this share
-// for every design compared, instead of each picture's own scale.
+// `commonScale` (the comparison, from commonScale()): the heat-map is drawn on the page, its colours running
+// from 0 to this share for every design compared, instead of each picture's own scale.
 export function pictures(job, name, stats, commonScale = 0) {
   const links = job.links || {};
   const render = job.settings && job.settings.render;

@@ -1,6 +1,7 @@
 // The stone in 3-D (stone.json): its facets as a mesh to turn and zoom, each coloured by a figure of the
 // statistics' facets on the viridis scale with its legend; clicking a facet names it and shows its numbers with
-// their standard errors. three.js comes from Debian's libjs-three, which our server serves at /vendor/three/;
+// their standard errors. The comparison shows its designs in one such view, one at a time, picked from a menu,
+// every one on the same colour scale. three.js comes from Debian's libjs-three, which our server serves at /vendor/three/;
 // this module loads it only when a result is shown (result.js imports this module lazily), and says so when the
 // server has none.
 import { api } from './api.js';
@@ -54,12 +55,15 @@ function tickText(fig, value) {
 
 // The colour scale's top: as the heat-map picture's, near the largest value of the facets other than the table
 // (95th percentile), so that the table's large share does not leave every other facet the same dark colour;
-// values beyond are drawn in the top colour and named under the legend.
-function scaleTop(facets, numbers, key) {
-  const others = facets.filter((f) => f.region !== 'table').map((f) => numbers.get(f.id)[key]).sort((a, b) => a - b);
-  const p95 = others.length ? others[Math.ceil(0.95 * others.length) - 1] : 0;
-  const largest = Math.max(0, ...facets.map((f) => numbers.get(f.id)[key]));
-  return scaleEnd(p95 > 0 ? p95 : largest);
+// values beyond are drawn in the top colour and named under the legend. Several designs: the largest of their
+// own scales, one for all.
+function scaleTop(numbersList, key) {
+  return Math.max(...numbersList.map((numbers) => {
+    const all = [...numbers.values()];
+    const others = all.filter((f) => f.region !== 'table').map((f) => f[key]).sort((a, b) => a - b);
+    const p95 = others.length ? others[Math.ceil(0.95 * others.length) - 1] : 0;
+    return scaleEnd(p95 > 0 ? p95 : Math.max(0, ...all.map((f) => f[key])));
+  }));
 }
 
 // Triangles of a planar polygon (corners in 3-D) as indices into it, turned to face along `normal`.
@@ -88,7 +92,13 @@ function dispose(view) {
 }
 
 // Fills `root` (the card's body) with the view of `job`'s stone, or with why there is none.
-export async function showStone3d(root, job, stats) {
+export function showStone3d(root, job, stats) {
+  return showStones(root, [{ job, stats }]);
+}
+
+// Fills `root` with one view of `stones` ([{job, stats, name}], the first shown; a menu picks another), every
+// one coloured on one scale; `prefix` names its controls' ids (one view per page section).
+export async function showStones(root, stones, prefix = 'stone3d') {
   dispose(active);
   active = null;
   const say = (text) => root.replaceChildren(h('p', { class: 'hint stone3d-missing', role: 'status' }, text));
@@ -103,17 +113,12 @@ export async function showStone3d(root, job, stats) {
   }
   let geometry;
   try {
-    geometry = await api(job.links.stone);
+    geometry = await loadShape(stones[0]);
   } catch (e) {
-    say(`The stone's shape (stone.json) could not be loaded: ${e.message}. Jobs finished before the 3-D view existed have none.`);
+    say(e.message);
     return;
   }
   if (!root.isConnected) return;
-  const ids = new Set((stats.facets || []).map((f) => f.id));
-  if (!geometry.facets.some((f) => ids.has(f.id))) {
-    say('The stone\'s shape (stone.json) names none of the statistics\' facets.');
-    return;
-  }
   let renderer;
   try {
     // The drawing kept after it is shown: "Save image as" and the browser tests read it back.
@@ -123,16 +128,26 @@ export async function showStone3d(root, job, stats) {
     return;
   }
   dispose(active);  // one shown meanwhile, by a quicker call
-  active = buildView(THREE, OrbitControls, renderer, root, job, stats, geometry);
+  active = buildView(THREE, OrbitControls, renderer, root, stones, geometry, prefix);
 }
 
-function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
-  const numbers = facetNumbers(stats);
-  const facets = geometry.facets.filter((f) => numbers.has(f.id));
-  const sample = numbers.get(facets[0] && facets[0].id) || {};
-  const figures = FIGURES.filter((f) => Number.isFinite(sample[f.key]));
+// A stone's shape (stone.json), once; an Error that says why there is none.
+async function loadShape(stone) {
+  if (!stone.shape) {
+    stone.shape = api(stone.job.links.stone).catch((e) => {
+      throw new Error(`The stone's shape (stone.json) could not be loaded: ${e.message}. Jobs finished before the 3-D view existed have none.`);
+    }).then((geometry) => {
+      const ids = new Set((stone.stats.facets || []).map((f) => f.id));
+      if (!geometry.facets.some((f) => ids.has(f.id))) throw new Error('The stone\'s shape (stone.json) names none of the statistics\' facets.');
+      return geometry;
+    });
+  }
+  return stone.shape;
+}
 
-  // One triangle list for the whole stone, each triangle knowing its facet; edges as line segments.
+// One triangle list for the whole stone, each triangle knowing its facet (an index into `facets`); edges as
+// line segments; each facet's outline and triangles by id for the picked facet's highlight.
+function tessellate(THREE, facets) {
   const positions = [];
   const triangleFacet = [];
   const edges = [];
@@ -157,14 +172,29 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
     edges.push(...loop);
     outlines.set(f.id, loop);
   }
+  return { positions, triangleFacet, edges, outlines, surfaces, extent };
+}
+
+function buildView(THREE, OrbitControls, renderer, root, stones, firstGeometry, prefix) {
+  const numbersOf = stones.map((s) => facetNumbers(s.stats));
+  // The figures every stone has.
+  const figures = FIGURES.filter((f) => numbersOf.every((numbers) => {
+    const sample = numbers.values().next().value || {};
+    return Number.isFinite(sample[f.key]);
+  }));
+  // The stone shown: its index into `stones`, its facets and their triangles.
+  let shown = 0;
+  let geometry = firstGeometry;
+  let numbers = numbersOf[0];
+  let facets = [];
+  let shape = null;
+  let colours = null;
+  let extent = 1;
+
   const mesh = new THREE.Mesh(new THREE.BufferGeometry(), new THREE.MeshBasicMaterial({
     vertexColors: THREE.VertexColors, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
   }));
-  mesh.geometry.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
-  const colours = new Float32Array(positions.length);
-  mesh.geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
   const edgeLines = new THREE.LineSegments(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: EDGE }));
-  edgeLines.geometry.setAttribute('position', new THREE.Float32BufferAttribute(edges, 3));
   // The picked facet: outlined, and veiled so that it stands out whatever its colour (drawn on the facet's own
   // depth: the stone's surface is pushed back by its polygon offset).
   const highlight = new THREE.LineSegments(new THREE.BufferGeometry(),
@@ -180,7 +210,7 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
   scene.background = new THREE.Color(BACKGROUND);
   scene.add(mesh, edgeLines, veil, highlight);
 
-  const camera = new THREE.PerspectiveCamera(30, 4 / 3, extent / 100, extent * 100);
+  const camera = new THREE.PerspectiveCamera(30, 4 / 3, 0.01, 100);
   camera.up.set(0, 0, 1);  // the stone's frame: table up along +z
   const home = () => {
     const r = extent * 4.2;
@@ -188,23 +218,25 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
     camera.position.set(0, -r * Math.sin(a), r * Math.cos(a));
     camera.lookAt(0, 0, 0);
   };
-  home();
+  home();  // away from the target before the controls measure their distance; again once the stone is known
   const canvas = renderer.domElement;
   const controls = new OrbitControls(camera, canvas);
   controls.enableKeys = false;  // its keys pan; ours (below) turn and zoom, and pick facets
   controls.enablePan = false;
-  controls.minDistance = extent * 1.5;
-  controls.maxDistance = extent * 20;
 
-  // The card: the canvas with its text alternative, and beside it the figure, the legend and the facet picked.
-  const name = geometry.name || job.mesh || 'the stone';
-  const summaryId = 'stone3d-summary';
+  // The card: the canvas with its text alternative, and beside it the stone (several), the figure, the legend
+  // and the facet picked.
+  const nameOf = (k) => stones[k].name || (k === shown && geometry.name) || stones[k].job.mesh || 'the stone';
+  const summaryId = `${prefix}-summary`;
   canvas.setAttribute('tabindex', '0');
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-describedby', `${summaryId} stone3d-keys`);
+  canvas.setAttribute('aria-describedby', `${summaryId} ${prefix}-keys`);
   canvas.classList.add('stone3d-canvas');
-  const select = h('select', { id: 'stone3d-figure' },
-    figures.map((f) => h('option', { value: f.key }, f.label)));
+  const select = h('select', { id: `${prefix}-figure` },
+    figures.map((f) => h('option', { value: f.key }, f.short || f.label)));
+  const stoneSelect = stones.length > 1 ? h('select', { id: `${prefix}-stone` },
+    stones.map((s, k) => h('option', { value: String(k) }, nameOf(k)))) : null;
+  const status = h('p', { class: 'hint stone3d-status', role: 'status' });
   const legend = h('div', { class: 'stone3d-legend' });
   const readout = h('div', { class: 'stone3d-readout', 'aria-live': 'polite' },
     h('p', { class: 'hint' }, 'Click a facet to see its numbers.'));
@@ -212,9 +244,10 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
   root.replaceChildren(h('div', { class: 'stone3d-layout' },
     h('div', { class: 'stone3d-stage' }, canvas),
     h('div', { class: 'stone3d-side' },
-      h('div', { class: 'field' }, h('label', { for: 'stone3d-figure' }, 'Colour facets by'), select),
+      stoneSelect ? h('div', { class: 'field' }, h('label', { for: `${prefix}-stone` }, 'Design'), stoneSelect, status) : null,
+      h('div', { class: 'field' }, h('label', { for: `${prefix}-figure` }, 'Colour facets by'), select),
       legend, readout,
-      h('p', { class: 'hint', id: 'stone3d-keys' },
+      h('p', { class: 'hint', id: `${prefix}-keys` },
         'Drag to turn, scroll to zoom, click a facet for its numbers. With the view focused: arrow keys turn it, '
         + '+ and − zoom, N and P pick the next and previous facet, Home goes back to the first view.'))),
   summary);
@@ -230,9 +263,9 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
   // Colours every facet by the chosen figure, draws the legend and writes the text alternative.
   const colour = () => {
     const fig = figures.find((f) => f.key === select.value) || figures[0];
-    const top = scaleTop(facets, numbers, fig.key);
+    const top = scaleTop(numbersOf, fig.key);
     const c = new THREE.Color();
-    triangleFacet.forEach((index, t) => {
+    shape.triangleFacet.forEach((index, t) => {
       const value = numbers.get(facets[index].id)[fig.key];
       c.setStyle(viridis(top > 0 ? value / top : 0));
       for (let k = 0; k < 3; ++k) colours.set([c.r, c.g, c.b], 9 * t + 3 * k);
@@ -240,16 +273,19 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
     mesh.geometry.attributes.color.needsUpdate = true;
     const beyond = facets.filter((f) => numbers.get(f.id)[fig.key] > top * (1 + 1e-9));
     const ticks = [0, 0.25, 0.5, 0.75, 1].map((t) => h('span', {}, tickText(fig, t * top)));
-    legend.replaceChildren(
+    legend.replaceChildren(...[
       h('p', { class: 'stone3d-legend-title' }, fig.label),
+      stones.length > 1 ? h('p', { class: 'hint stone3d-shared' }, `One scale for the ${stones.length} designs compared`) : null,
       h('div', { class: 'stone3d-ramp', 'aria-hidden': 'true',
         style: `background: linear-gradient(to right, ${Array.from({ length: 11 }, (_, i) => viridis(i / 10)).join(', ')})` }),
       h('div', { class: 'stone3d-ticks' }, ticks),
       beyond.length ? h('p', { class: 'hint stone3d-beyond' }, 'Beyond the scale, in its top colour: ',
-        beyond.map((f) => `${humanize(f.name)} ${tickText(fig, numbers.get(f.id)[fig.key])}`).join(', ')) : null);
+        beyond.map((f) => `${humanize(f.name)} ${tickText(fig, numbers.get(f.id)[fig.key])}`).join(', ')) : null,
+    ].filter(Boolean));
     const ranked = [...facets].sort((a, b) => numbers.get(b.id)[fig.key] - numbers.get(a.id)[fig.key]);
     const hi = ranked[0];
     const lo = ranked[ranked.length - 1];
+    const name = nameOf(shown);
     const text = `${humanize(name)} in 3-D: ${facets.length} facets coloured by ${fig.label.toLowerCase()}, on a scale from `
       + `${tickText(fig, 0)} to ${tickText(fig, top)}; highest ${humanize(hi.name)} (${humanize(hi.region)}) `
       + `${formatValue(fig, numbers.get(hi.id)[fig.key], numbers.get(hi.id)[`${fig.key}_stderr`])}, lowest `
@@ -258,7 +294,34 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
     summary.textContent = text;
     canvas.setAttribute('aria-label', `${humanize(name)} in 3-D, coloured by ${fig.label.toLowerCase()}`);
     root.dataset.figure = fig.key;
+    root.dataset.top = String(top);
     render();
+  };
+
+  // Shows stone `k` (its shape loaded): its triangles in the mesh, the camera at its size, coloured.
+  const showShape = (k, shapeJson) => {
+    shown = k;
+    geometry = shapeJson;
+    numbers = numbersOf[k];
+    facets = geometry.facets.filter((f) => numbers.has(f.id));
+    shape = tessellate(THREE, facets);
+    extent = shape.extent;
+    for (const [object, array] of [[mesh, shape.positions], [edgeLines, shape.edges]]) {
+      object.geometry.dispose();
+      object.geometry = new THREE.BufferGeometry();
+      object.geometry.setAttribute('position', new THREE.Float32BufferAttribute(array, 3));
+    }
+    colours = new Float32Array(shape.positions.length);
+    mesh.geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+    camera.near = extent / 100;
+    camera.far = extent * 100;
+    camera.updateProjectionMatrix();
+    controls.minDistance = extent * 1.5;
+    controls.maxDistance = extent * 20;
+    root.dataset.stone = stones[k].job.id;
+    picked = null;
+    colour();
+    pick(null);
   };
 
   // Shows facet `index` (into `facets`; null: none) beside the view and outlines it; its row of the facet table
@@ -275,8 +338,8 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
     }
     const f = facets[index];
     const n = numbers.get(f.id);
-    highlight.geometry.setAttribute('position', new THREE.Float32BufferAttribute(outlines.get(f.id), 3));
-    veil.geometry.setAttribute('position', new THREE.Float32BufferAttribute(surfaces.get(f.id), 3));
+    highlight.geometry.setAttribute('position', new THREE.Float32BufferAttribute(shape.outlines.get(f.id), 3));
+    veil.geometry.setAttribute('position', new THREE.Float32BufferAttribute(shape.surfaces.get(f.id), 3));
     highlight.visible = true;
     veil.visible = true;
     root.dataset.picked = String(f.id);
@@ -300,7 +363,7 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
     pointer.set(((e.clientX - box.left) / box.width) * 2 - 1, -((e.clientY - box.top) / box.height) * 2 + 1);
     raycaster.setFromCamera(pointer, camera);
     const hit = raycaster.intersectObject(mesh)[0];
-    pick(hit ? triangleFacet[hit.faceIndex] : null);
+    pick(hit ? shape.triangleFacet[hit.faceIndex] : null);
   });
   const turn = (dAzimuth, dPolar) => {
     const offset = camera.position.clone().sub(controls.target);
@@ -337,6 +400,23 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
     colour();
     if (picked !== null) pick(picked);
   });
+  if (stoneSelect) {
+    stoneSelect.addEventListener('change', async () => {
+      const k = Number(stoneSelect.value);
+      status.textContent = 'Loading…';
+      try {
+        const next = await loadShape(stones[k]);
+        if (Number(stoneSelect.value) !== k) return;  // another picked meanwhile
+        status.textContent = '';
+        showShape(k, next);
+        home();
+        controls.target.set(0, 0, 0);
+        controls.update();
+      } catch (e) {
+        status.textContent = e.message;
+      }
+    });
+  }
 
   // The canvas fills its box at the screen's pixel density.
   const stage = canvas.parentElement;
@@ -352,6 +432,8 @@ function buildView(THREE, OrbitControls, renderer, root, job, stats, geometry) {
     render();
   });
   resize.observe(stage);
-  colour();
+  showShape(0, firstGeometry);
+  home();
+  controls.update();
   return { renderer, controls, scene, resize };
 }

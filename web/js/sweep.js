@@ -13,8 +13,9 @@ import { jobName } from './meshes.js';
 
 // `compared`: the jobs of designs opened from sweeps, for the compare view.
 // `best`: the search's best.json once the sweep has finished.
-// `points`: the last points answer; `shown`: the figures a one-axis chart draws, the job's figure first.
-export const sweepView = { id: '', timer: 0, job: null, shape: '', compared: [], best: null, points: null, shown: [] };
+// `points`: the last points answer; `shown`: the figures a one-axis chart draws, the job's figure first;
+// `mapped`: the figure a two-axis map colours by (none: the job's).
+export const sweepView = { id: '', timer: 0, job: null, shape: '', compared: [], best: null, points: null, shown: [], mapped: '' };
 
 const TOOLTIP_HINT = 'Hover a point to see its figures; click it to trace that design as a job and compare it.';
 const W = 680;
@@ -241,6 +242,7 @@ export async function showSweep(id) {
   $('#sweep-best').replaceChildren();
   sweepView.best = null;
   sweepView.shown = [];
+  sweepView.mapped = '';
   $('#sweep-figures').hidden = true;
   delete $('#sweep-figures').dataset.sweep;
   await pollSweep(id);
@@ -260,7 +262,7 @@ async function pollSweep(id) {
   sweepView.job = job;
   sweepView.shape = points.shape;
   const figure = job.settings.sweep.figure;
-  $('#sweep-view-title').textContent = `${jobName(job)}: ${figureInfo(figure).label.toLowerCase()}`;
+  if (!points.points.length) $('#sweep-view-title').textContent = `${jobName(job)}: ${figureInfo(figure).label.toLowerCase()}`;
   document.title = `${jobName(job)} — facetlight`;
   if (job.state === 'succeeded' && job.links.best && !sweepView.best) {
     try {
@@ -475,7 +477,7 @@ function textBlock(x, y, lines, attrs = {}) {
 function figurePicker(data, figure) {
   const box = $('#sweep-figures');
   if (data.axes.length !== 1) {
-    box.hidden = true;
+    mapPicker(box, data, figure);
     return;
   }
   if (box.dataset.sweep !== sweepView.id) {
@@ -504,13 +506,32 @@ function figurePicker(data, figure) {
   }
 }
 
+// The figure a two-axis sweep's map colours by, one of those it measured (the job's first): the map, its
+// legend and its star are then the CLI's map_<figure>.png's (sweep_pictures.cpp's sweepMap).
+function mapPicker(box, data, figure) {
+  if (box.dataset.sweep !== sweepView.id) {
+    box.dataset.sweep = sweepView.id;
+    const keys = [figure, ...data.figures.filter((k) => k !== figure)];
+    const select = h('select', { id: 'sweep-map-figure', onchange: (ev) => {
+      sweepView.mapped = ev.target.value;
+      drawSweep(sweepView.points, figure, sweepView.best);
+    } }, keys.map((key) => h('option', { value: key }, `${figureInfo(key).label} (${unitOf(key)})`)));
+    box.replaceChildren(h('legend', {}, 'Figure on the map'),
+      h('label', { class: 'sweep-map-figure' }, h('span', { class: 'visually-hidden' }, 'Colour the map by '), select));
+  }
+  box.hidden = false;
+}
+
 function drawSweep(data, figure, best) {
   const chart = $('#sweep-chart');
   if (!data.points.length) return;
+  // A map of another figure than the search's: its own highest point starred, as the CLI's.
+  const mapped = data.axes.length === 1 ? figure : (sweepView.mapped || figure);
   const root = svg('svg', { viewBox: `0 0 ${W} ${H}`, class: 'sweep-svg', role: 'img',
-    'aria-label': `${figureInfo(figure).label} over ${data.axes.map((a) => humanize(a.name)).join(' and ')}` });
+    'aria-label': `${figureInfo(mapped).label} over ${data.axes.map((a) => humanize(a.name)).join(' and ')}` });
   if (data.axes.length === 1) drawCurves(root, data, sweepView.shown.length ? sweepView.shown : [figure], best);
-  else drawMap(root, data, figure, best);
+  else drawMap(root, data, mapped, best && best.figure === mapped ? best : null);
+  if (sweepView.job) $('#sweep-view-title').textContent = `${jobName(sweepView.job)}: ${figureInfo(mapped).label.toLowerCase()}`;
   chart.replaceChildren(root);
 }
 
