@@ -955,6 +955,10 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.ok(fire.hatched >= 1, 'a table beyond the scale');
     assert.match(await page.textContent('[data-section="fire-compare"] .hint'), new RegExp(`0 to ${(fire.scale * 100).toFixed(1)} % of the fire`));
     const [a] = ids;
+    // A job without rendering still shows its heat-map (from its statistics), and says why there is no render.
+    assert.equal(await page.locator(`.compare-card[data-id="${a}"] .pic-heatmap`).count(), 1);
+    assert.equal(await page.locator(`.compare-card[data-id="${a}"] .pic-render`).count(), 0);
+    assert.match(await page.textContent(`.compare-card[data-id="${a}"] .pictures .hint`), /ran without rendering/);
     // Pointing at a facet names its share of the fire.
     const first = await page.$(`.fire-compare-card[data-id="${a}"] .heatmap-drawing polygon`);
     await first.hover();
@@ -1347,6 +1351,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(rows.length, 7);
     assert.deepEqual(rows[0].slice(0, 5), ['P1', 'pavilion', '41°', '41°', '0.668']);
     assert.equal(rows[0][6], '03-15-27-39-51-63-75-87');
+    await page.locator('[data-section="design"] img').scrollIntoViewIfNeeded();  // lazy, below the heat-map
     const pics = await picturesLoaded('[data-section="design"]');
     assert.equal(pics.length, 1);
     assert.ok(pics[0].width >= 1000, `the diagram is ${pics[0].width} px wide`);

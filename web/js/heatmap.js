@@ -148,7 +148,8 @@ export function fireHeatmapDrawn(job, name, stats, commonScale) {
 export function pictures(job, name, stats, commonScale = 0) {
   const links = job.links || {};
   const render = job.settings && job.settings.render;
-  if (!links.render) {
+  // A job without rendering still has its heat-map, which the statistics alone draw.
+  if (!links.render && !links.heatmap) {
     return h('p', { class: 'empty' }, 'No pictures: this job ran without rendering (statistics only).');
   }
   const size = render ? { width: render.width, height: render.height } : {};
@@ -156,7 +157,7 @@ export function pictures(job, name, stats, commonScale = 0) {
   const model = (job.settings && job.settings.light && job.settings.light.model) || 'the job\'s';
   const fire = job.settings && job.settings.fire_picture;
   const items = [
-    { href: links.render, cls: 'pic-render', title: 'Render', light: 'studio light, the viewer\'s head shadow', alt: `Render of ${name} as the camera sees it` },
+    links.render ? { href: links.render, cls: 'pic-render', title: 'Render', light: 'studio light, the viewer\'s head shadow', alt: `Render of ${name} as the camera sees it` } : null,
     // Beside the render: the same camera under one small light, where dispersion shows as colour.
     links.fire_picture ? {
       href: links.fire_picture, cls: 'pic-fire', title: 'Fire, spectral colour',
@@ -165,7 +166,7 @@ export function pictures(job, name, stats, commonScale = 0) {
       alt: `Fire picture of ${name}: the flashes of colour under a small bright light`,
     } : null,
     { href: links.heatmap, cls: 'pic-heatmap', title: 'Facet heat-map', light: `${model} light`, alt: `Heat-map of ${name}: facets shaded by the share of light leaving them` },
-    { href: links.angular, cls: 'pic-angular', title: 'Exit angles', light: `${model} light`, alt: `Chart of ${name}: where the light leaves, by angle from vertical` },
+    links.angular ? { href: links.angular, cls: 'pic-angular', title: 'Exit angles', light: `${model} light`, alt: `Chart of ${name}: where the light leaves, by angle from vertical` } : null,
   ].filter(Boolean);
   const drawHeatmap = commonScale > 0 && links.heatmap_layout;
   const figures = items.map((p) => h('figure', { class: `picture ${p.cls}` },
@@ -175,5 +176,6 @@ export function pictures(job, name, stats, commonScale = 0) {
     h('figcaption', {}, p.title, h('span', { class: 'muted picture-light' }, ` · ${p.light}`))));
   const heatmap = figures[items.findIndex((p) => p.cls === 'pic-heatmap')];
   if (links.heatmap_layout) heatmapShapes(heatmap, links.heatmap_layout, stats, drawHeatmap ? commonScale : 0);
-  return h('div', { class: 'pictures' }, figures);
+  return h('div', { class: 'pictures' }, figures,
+    links.render ? null : h('p', { class: 'hint' }, 'No render or exit-angle chart: this job ran without rendering; the heat-map comes from its statistics.'));
 }

@@ -79,8 +79,10 @@ export function initSweepForm() {
     h('optgroup', { label: 'Light return' }, FIGURES.map((f) => h('option', { value: f.key }, f.label))),
     h('optgroup', { label: 'Fire (traces fire)' }, FIRE_FIGURES.map((f) => h('option', { value: f.key }, f.label))),
     h('optgroup', { label: 'Colour (measures colour)' }, COLOUR_FIGURES.map((f) => h('option', { value: f.key }, f.label))));
-  // The job form's materials, the one list of them (web/index.html).
-  $('#s-material').replaceChildren(...[...$('#f-material').children].map((el) => el.cloneNode(true)));
+  // The job form's materials, the one list of them (web/index.html), less "Your own material", which the sweep
+  // form has no fields for.
+  $('#s-material').replaceChildren(...[...$('#f-material').children]
+    .filter((el) => !el.querySelector('option[value="custom"]')).map((el) => el.cloneNode(true)));
   $('#s-material').value = 'auto';
   // A fire figure needs the fire trace; a colour figure the colour view.
   $('#s-figure').addEventListener('change', (ev) => {
@@ -381,7 +383,10 @@ function designJob(job, shape, point) {
     else if (name === 'head_shadow') design.light.head_shadow_deg = value;
     else if (name === 'light') design.light.model = value;
     else if (name === 'material') design.material = value;
-    else design.cut[name] = value;
+    else if (name === 'n' || name === 'size_mm') design[name] = value;
+    else if (name === 'optic_axis_tilt' || name === 'optic_axis_azimuth') {
+      design.optic_axis = { ...settings.optic_axis, [name.replace('optic_axis_', '') + '_deg']: value };
+    } else design.cut[name] = value;
   }
   return design;
 }
