@@ -51,11 +51,12 @@ std::vector<double> readColumn(const json& j, const std::string& path, double lo
 
 // A colour by transmission: "#rrggbb" or [L*, a*, b*] (docs/optics.md, "Colour by transmission").
 Lab readColour(const json& j, const std::string& path) {
-    if (j.is_string()) return srgbHexToLab(j.get<std::string>(), path);
     const bool lab = j.is_array() && j.size() == 3 &&
                      std::all_of(j.begin(), j.end(), [](const json& x) { return x.is_number(); });
-    if (!lab) throw Error(path, path + " must be an sRGB colour \"#rrggbb\" or CIELAB [L*, a*, b*]");
-    const Lab c{j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+    if (!j.is_string() && !lab)
+        throw Error(path, path + " must be an sRGB colour \"#rrggbb\" or CIELAB [L*, a*, b*]");
+    const Lab c = j.is_string() ? srgbHexToLab(j.get<std::string>(), path)
+                                : Lab{j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
     if (!(c.L > 0 && c.L <= 100) || !(std::abs(c.a) <= 200) || !(std::abs(c.b) <= 200))
         throw Error(path, path + " must have L* above 0 and at most 100, a* and b* from -200 to 200");
     return c;
@@ -102,7 +103,7 @@ bool AbsorptionSpectrum::absorbs() const {
 AbsorptionSpectrum readAbsorption(const json& j, const std::string& path) {
     if (!j.is_object())
         throw Error(path, path + " must be an object {\"wavelength_nm\": [...], \"ordinary_per_mm\": [...]}");
-    // Two forms: a table, or a colour by transmission; the first key of either decides.
+    // Two forms: a table, or a colour by transmission, which transmitted_colour's presence decides.
     const bool byColour = j.contains("transmitted_colour");
     for (const auto& [key, value] : j.items()) {
         const bool known =

@@ -1,5 +1,7 @@
 #include "optics/material_definition.h"
 
+#include <algorithm>
+
 #include "settings/settings_schema.h"
 #include "util/error.h"
 
@@ -9,8 +11,12 @@ namespace {
 using namespace settings;
 
 // Indices as the settings' `n` takes them; a dispersion up to twice rutile's 0.280 (GIA), the most dispersive
-// gem; densities up to platinum's 21.5 g/cm^3.
+// gem; densities up to 25 g/cm^3, above platinum's 21.5.
 constexpr NumberRange kIndex{.lo = 1, .hi = 10, .openLo = true};
+constexpr double kMaxDispersionBG = 0.56, kMaxDensity = 25;
+// Cauchy's n falls by this many times the B-G dispersion from 589.3 to 780 nm, the reddest traced:
+// (1/0.5893^2 - 1/0.78^2) / (1/0.4308^2 - 1/0.6867^2) (derived from optics/material.cpp's cauchy()).
+constexpr double kRedDropPerBG = 0.3782;
 
 const Schema<MaterialDefinition>& definitionSchema() {
     static const Schema<MaterialDefinition> schema(
@@ -27,10 +33,10 @@ const Schema<MaterialDefinition>& definitionSchema() {
                            {"", "A biaxial material's middle index"}),
             optionalNumber("gamma", &MaterialDefinition::gamma, kIndex,
                            {"", "A biaxial material's greatest index"}),
-            number("dispersion", &MaterialDefinition::dispersionBG, {.lo = 0, .hi = 0.56},
+            number("dispersion", &MaterialDefinition::dispersionBG, {.lo = 0, .hi = kMaxDispersionBG},
                    {"", "n(430.8 nm) - n(686.7 nm), as gem tables give it"}),
             optionalNumber("density_g_cm3", &MaterialDefinition::densityGcm3,
-                           {.lo = 0, .hi = 25, .openLo = true},
+                           {.lo = 0, .hi = kMaxDensity, .openLo = true},
                            {"", "For the stone's weight in carats", "g/cm^3"}),
         },
         [](const MaterialDefinition& d, const std::string& path) {
@@ -60,6 +66,13 @@ const Schema<MaterialDefinition>& definitionSchema() {
                                                              " must lie strictly between alpha and gamma "
                                                              "(alpha < beta < gamma)");
             }
+            // Every index must stay above 1 at 780 nm, where the dispersion lowers it most.
+            const double least = d.n ? *d.n : d.nO ? std::min(*d.nO, *d.nE) : *d.alpha;
+            if (least - kRedDropPerBG * d.dispersionBG <= 1)
+                throw Error(
+                    fieldPath(path, "dispersion"),
+                    fieldPath(path, "dispersion") +
+                        " is too large for the indices: the least would fall to 1 or below at 780 nm");
         });
     return schema;
 }

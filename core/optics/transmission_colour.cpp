@@ -1,6 +1,8 @@
 #include "optics/transmission_colour.h"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -127,14 +129,17 @@ std::vector<double> absorptionForTransmittedColour(const Lab& target, double pat
 Lab srgbHexToLab(const std::string& hex, const std::string& field) {
     unsigned r = 0, g = 0, b = 0;
     int used = 0;
-    if (hex.size() != 7 || std::sscanf(hex.c_str(), "#%2x%2x%2x%n", &r, &g, &b, &used) != 3 || used != 7)
+    const bool digits =
+        hex.size() == 7 && hex[0] == '#' &&
+        std::all_of(hex.begin() + 1, hex.end(), [](unsigned char c) { return std::isxdigit(c); });
+    if (!digits || std::sscanf(hex.c_str(), "#%2x%2x%2x%n", &r, &g, &b, &used) != 3 || used != 7)
         throw Error(field, field + " must be an sRGB colour \"#rrggbb\" or CIELAB [L*, a*, b*]");
     const auto decode = [](unsigned v) {
         const double x = v / 255.0;
         return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
     };
     const double R = decode(r), G = decode(g), B = decode(b);
-    // IEC 61966-2-1's matrix from linear sRGB to XYZ; its white (1, 1, 1) is D65 with Y = 1.
+    // Linear sRGB to XYZ from IEC 61966-2-1's primaries and D65 white, to 7 decimals; (1, 1, 1) is Y = 1.
     const auto xyz = [](double R, double G, double B) {
         return Vec3{0.4124564 * R + 0.3575761 * G + 0.1804375 * B,
                     0.2126729 * R + 0.7151522 * G + 0.0721750 * B,

@@ -31,7 +31,6 @@ void applyAxis(const SweepAxis& axis, size_t i, CutValues& cut, TraceSettings& t
         trace.sizeMm = axis.values[i];
     } else if (axis.name == "material") {
         trace.material = axis.choices[i];
-        trace.customMaterial.reset();  // the axis names each point's material in place of the job's own
     } else if (axis.name == "light") {
         const std::optional<LightModelKind> model = kLightModelNames.find(axis.choices[i]);
         if (!model) throw Error("sweep axis light: no light model '" + axis.choices[i] + "'");
@@ -63,9 +62,10 @@ std::string SweepPlan::unit(const SweepAxis& axis) const {
 // The optic axis means something to a uniaxial stone traced polarised (docs/optics.md, "Birefringent
 // stones"), and only the job's own material's: a material axis would change the stone under it.
 void SweepPlan::checkOpticAxisSweep(const std::string& name) const {
-    if (std::any_of(axes.begin(), axes.end(), [](const SweepAxis& a) { return a.name == "material"; }))
+    if (std::any_of(axes.begin(), axes.end(),
+                    [](const SweepAxis& a) { return a.name == "material" || a.name == "n"; }))
         throw Error("sweep axis " + name +
-                    " turns one material's optic axis: sweep it without a material axis");
+                    " turns one material's optic axis: sweep it without a material or n axis");
     if (chosenOptic(trace) != Optic::Uniaxial)
         throw Error("sweep axis " + name + " needs a uniaxial material, whose optic axis it turns (got " +
                     (trace.constantIndex    ? std::string("a constant n")
@@ -97,6 +97,9 @@ void SweepPlan::validate() const {
                         " nor a trace setting; the axes are: " + names);
         }
         if (axis.size() == 0) throw Error("sweep axis " + axis.name + " has no values");
+        if (trace.customMaterial && (axis.name == "material" || axis.name == "n"))
+            throw Error("sweep axis " + axis.name +
+                        " would replace the job's own material (custom_material): sweep one or the other");
         if (axis.name == "optic_axis_tilt" || axis.name == "optic_axis_azimuth")
             checkOpticAxisSweep(axis.name);
         if (axis.numeric() == isChoiceAxis(axis.name))

@@ -166,6 +166,8 @@ TEST(ColourByTransmission, AColourNoFilterShowsIsRefused) {
     EXPECT_EQ(errorField({{"transmitted_colour", {95, 80, 0}}}), "absorption.transmitted_colour");
     EXPECT_EQ(errorField({{"transmitted_colour", "#12345"}}), "absorption.transmitted_colour");
     EXPECT_EQ(errorField({{"transmitted_colour", "#12345g"}}), "absorption.transmitted_colour");
+    EXPECT_EQ(errorField({{"transmitted_colour", "#+f+f+f"}}), "absorption.transmitted_colour");
+    EXPECT_EQ(errorField({{"transmitted_colour", "#000000"}}), "absorption.transmitted_colour");  // L* 0
     EXPECT_EQ(errorField({{"transmitted_colour", {50, 0}}}), "absorption.transmitted_colour");
     EXPECT_EQ(errorField({{"transmitted_colour", {0, 0, 0}}}), "absorption.transmitted_colour");
     EXPECT_EQ(errorField({{"transmitted_colour", "#808080"}, {"path_mm", 0}}), "absorption.path_mm");

@@ -81,6 +81,9 @@ TEST(MaterialDefinition, BadDefinitionsNameTheField) {
     EXPECT_EQ(refusedField(json{{"n", 1.5}, {"density_g_cm3", 0}}), "custom_material.density_g_cm3");
     EXPECT_EQ(refusedField(json{{"n", 1.5}, {"name", ""}}), "custom_material.name");
     EXPECT_EQ(refusedField(json{{"n", 1.5}, {"index", 1.5}}), "custom_material.index");
+    // n 1.1 with dispersion 0.56 would fall to 0.89 at 780 nm.
+    EXPECT_EQ(refusedField(json{{"n", 1.1}, {"dispersion", 0.56}}), "custom_material.dispersion");
+    EXPECT_EQ(refusedField(json{{"n", 1.1}, {"dispersion", 0.2}}), "");
 }
 
 TEST(MaterialDefinition, AJobGivesOneMaterialOnly) {

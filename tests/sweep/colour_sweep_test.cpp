@@ -13,6 +13,7 @@
 #include "colour/colour_space.h"
 #include "cuts/cut_library.h"
 #include "optics/gem_spectra.h"
+#include "optics/material_definition.h"
 #include "study/study.h"
 #include "sweep/sweep_figures.h"
 #include "sweep/sweep_files.h"
@@ -310,4 +311,25 @@ TEST(ColourSweep, TheOpticAxisIsSweptOnlyWhereItMeansSomething) {
     EXPECT_EQ(azimuthField({"pavilion=40,41", "optic_axis_azimuth=0,45"}), "sweep.axes[1]");
     trace.opticAxis.tiltDeg = 30;
     EXPECT_EQ(azimuthField({"optic_axis_azimuth=0,45"}), "");
+    // An n axis leaves no optic axis to turn; a job's own material is not swept away by a material or n axis.
+    EXPECT_NE(fieldOf([&] {
+                  planSweep("round_brilliant",
+                            requestOf({"optic_axis_tilt=0,90", "n=1.7,1.8"}, "crown_return"), trace,
+                            std::nullopt);
+              }).find("sweep.axes"),
+              std::string::npos);
+    TraceSettings own = quickTrace();
+    own.customMaterial = readMaterialDefinition({{"n_o", 1.644}, {"n_e", 1.624}}, "custom_material");
+    for (const char* axis : {"material=sapphire,quartz", "n=1.7,1.8"})
+        EXPECT_NE(fieldOf([&] {
+                      planSweep("round_brilliant", requestOf({axis}, "crown_return"), own, std::nullopt);
+                  }).find("sweep.axes"),
+                  std::string::npos)
+            << axis;
+    EXPECT_EQ(fieldOf([&] {
+                  planSweep("round_brilliant", requestOf({"optic_axis_tilt=0,90"}, "crown_return"), own,
+                            std::nullopt);
+              }),
+              "")
+        << "a job's own uniaxial material has an optic axis to turn";
 }
