@@ -36,6 +36,11 @@ Optic chosenOptic(const SceneSettings& settings) {
     return settings.material == "auto" ? Optic::Isotropic : Material::byName(settings.material).optic();
 }
 
+std::string chosenMaterialName(const SceneSettings& settings) {
+    if (settings.constantIndex) return "a constant n";
+    return settings.customMaterial ? settings.customMaterial->name : settings.material;
+}
+
 MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone) {
     MaterialChoice choice = chooseIndex(settings, stone);
     // A job's table replaces the material's own spectrum (docs/optics.md, "Coloured materials").

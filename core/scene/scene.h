@@ -32,6 +32,9 @@ MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone)
 // The optic class of the material the settings choose, before a stone is known: "auto" and `n` are
 // singly refracting (a design file states one index).
 Optic chosenOptic(const SceneSettings& settings);
+// The material the settings choose, named for a message before a stone is known: "a constant n", the job's
+// own material's name, or the material's ("auto" when the design file or the default decides).
+std::string chosenMaterialName(const SceneSettings& settings);
 
 class ConvexBeamEntry;
 class ConvexIntersector;

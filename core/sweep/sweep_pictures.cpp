@@ -7,6 +7,7 @@
 #include "pictures/sweep_plot.h"
 #include "sweep/sweep_figures.h"
 #include "sweep/sweep_references.h"
+#include "scene/scene.h"
 #include "util/error.h"
 #include "util/name_table.h"
 
@@ -83,7 +84,8 @@ std::string settingsLine(const SweepResult& result) {
         };
         colour = "; colour under " + std::string(kIlluminantNames.name(c->illuminant));
         if (!varied("material") && !varied("n"))
-            colour += ", " + (t.constantIndex ? "n " + formatNumber(*t.constantIndex) : t.material);
+            colour +=
+                ", " + (t.constantIndex ? "n " + formatNumber(*t.constantIndex) : chosenMaterialName(t));
         if (!varied("size_mm")) colour += " at " + formatNumber(t.sizeMm) + " mm";
     }
     return result.plan.shape + held + "; " + std::string(kLightModelNames.name(t.light.model)) + " light, " +

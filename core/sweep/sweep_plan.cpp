@@ -68,10 +68,7 @@ void SweepPlan::checkOpticAxisSweep(const std::string& name) const {
                     " turns one material's optic axis: sweep it without a material or n axis");
     if (chosenOptic(trace) != Optic::Uniaxial)
         throw Error("sweep axis " + name + " needs a uniaxial material, whose optic axis it turns (got " +
-                    (trace.constantIndex    ? std::string("a constant n")
-                     : trace.customMaterial ? trace.customMaterial->name
-                                            : trace.material) +
-                    ")");
+                    chosenMaterialName(trace) + ")");
     if (trace.polarization == PolarizationMode::Off)
         throw Error("sweep axis " + name +
                     " needs polarization on: unpolarised tracing sees one index and no optic axis");

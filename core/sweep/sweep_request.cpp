@@ -6,6 +6,7 @@
 #include "optics/material.h"
 #include "sweep/optimizer.h"
 #include "sweep/sweep_figures.h"
+#include "scene/scene.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -193,10 +194,10 @@ void checkColourPlan(const SweepPlan& plan) {
     const std::vector<SweepPoint> points = sweepPoints(plan);
     if (std::none_of(points.begin(), points.end(), [](const SweepPoint& p) { return absorbs(p.trace); })) {
         const TraceSettings& t = plan.trace;
-        const std::string what = t.constantIndex ? "a constant n"
-                                 : t.material == "auto"
-                                     ? "the material auto, diamond or a design's own index,"
-                                     : "the material " + t.material;
+        const std::string name = chosenMaterialName(t);
+        const std::string what = t.constantIndex  ? name
+                                 : name == "auto" ? "the material auto, diamond or a design's own index,"
+                                                  : "the material " + name;
         throw Error(
             "material",
             "the colour figures measure absorption, and no point of the sweep absorbs (" + what +

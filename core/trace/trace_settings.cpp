@@ -98,11 +98,7 @@ const Schema<TraceSettings>& traceSettingsSchema() {
             if (s.absorption && !s.absorption->extraordinaryPerMm.empty() &&
                 chosenOptic(s) != Optic::Uniaxial) {
                 const std::string field = fieldPath(path, "absorption.extraordinary_per_mm");
-                throw Error(field, field + " needs a uniaxial material (got " +
-                                       (s.constantIndex    ? std::string("a constant n")
-                                        : s.customMaterial ? s.customMaterial->name
-                                                           : s.material) +
-                                       ")");
+                throw Error(field, field + " needs a uniaxial material (got " + chosenMaterialName(s) + ")");
             }
             if (s.light.polarizerDeg && s.polarization == PolarizationMode::Off) {
                 const std::string field = fieldPath(path, "light.polarizer_deg");

@@ -125,6 +125,11 @@ TEST(MaterialDefinition, TracesAsTheShippedMaterial) {
     const TraceResult a = test::traceStone(stone, shipped), b = test::traceStone(stone, own);
     EXPECT_EQ(traceReport(a, stone, shipped).at("totals"), traceReport(b, stone, own).at("totals"));
     EXPECT_EQ(chooseMaterial(own, stone).source, "custom_material");
+    // Messages and the sweep's pictures name it before a stone is known.
+    EXPECT_EQ(chosenMaterialName(own), "tourmaline");
+    EXPECT_EQ(chosenMaterialName(shipped), "tourmaline");
+    own.constantIndex = 1.6;
+    EXPECT_EQ(chosenMaterialName(own), "a constant n");
 }
 
 }  // namespace
