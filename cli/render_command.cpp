@@ -25,12 +25,10 @@ struct RenderOptions {
     TraceOptions trace;
     SettingsFlags render;
     std::string out = ".";
-    bool aset = false;
-    SettingsFlags asetFlags, tiltFlags;
-    bool firePicture = false;
-    SettingsFlags firePictureFlags;
-    bool colour = false;
-    SettingsFlags colourFlags;
+    ViewFlags<AsetSettings> aset;
+    SettingsFlags tiltFlags;
+    ViewFlags<FirePictureSettings> firePicture;
+    ViewFlags<ColourSettings> colour;
 };
 
 void run(RenderOptions& o) {
@@ -38,19 +36,9 @@ void run(RenderOptions& o) {
     settings.trace = toTraceSettings(o.trace);
     settings.render.emplace();
     o.render.apply(renderSettingsSchema(), *settings.render);
-    // A view's own flags turn it on, with the defaults for the flags not given.
-    if (o.aset || o.asetFlags.given()) {
-        settings.aset.emplace();
-        o.asetFlags.apply(asetSettingsSchema(), *settings.aset);
-    }
-    if (o.firePicture || o.firePictureFlags.given()) {
-        settings.firePicture.emplace();
-        o.firePictureFlags.apply(firePictureSettingsSchema(), *settings.firePicture);
-    }
-    if (o.colour || o.colourFlags.given()) {
-        settings.colour.emplace();
-        o.colourFlags.apply(colourSettingsSchema(), *settings.colour);
-    }
+    settings.aset = o.aset.read();
+    settings.firePicture = o.firePicture.read();
+    settings.colour = o.colour.read();
     if (o.tiltFlags.given()) {
         settings.tiltSeries.emplace();
         o.tiltFlags.apply(tiltSeriesSettingsSchema(), *settings.tiltSeries);
@@ -96,22 +84,18 @@ void addRenderCommand(CLI::App& app) {
         "stats.json and stats.csv");
     addTraceOptions(cmd, o->trace);
     o->render.add(cmd, renderSettingsSchema().fields(), toJson(RenderSettings{}), "render");
-    cmd->add_flag("--aset", o->aset,
-                  "Also write aset.png: each pixel coloured by where its light comes from (docs/physics.md); "
-                  "any --aset-... flag implies it");
-    o->asetFlags.add(cmd, asetSettingsSchema().fields(), toJson(AsetSettings{}), "aset");
+    o->aset.add(cmd, "--aset",
+                "Also write aset.png: each pixel coloured by where its light comes from (docs/physics.md)",
+                asetSettingsSchema(), "aset");
     o->tiltFlags.add(cmd, tiltSeriesSettingsSchema().fields(), toJson(TiltSeriesSettings{}), "tilt_series");
-    cmd->add_flag(
-        "--fire-picture", o->firePicture,
-        "Also write fire.png: the stone under a small bright light in spectral colour, its flashes of "
-        "fire (docs/physics.md); any --fire-picture-* flag implies it");
-    o->firePictureFlags.add(cmd, firePictureSettingsSchema().fields(), toJson(FirePictureSettings{}),
-                            "fire_picture");
-    cmd->add_flag("--colour", o->colour,
+    o->firePicture.add(cmd, "--fire-picture",
+                       "Also write fire.png: the stone under a small bright light in spectral colour, its "
+                       "flashes of fire (docs/physics.md)",
+                       firePictureSettingsSchema(), "fire_picture");
+    o->colour.add(cmd, "--colour",
                   "Also write colour.png: the stone face-up in true colour under a CIE illuminant, absorbing "
-                  "at its size (docs/optics.md), and stats colour; any --colour-... flag implies it");
-    o->colourFlags.add(cmd, colourSettingsSchema().fields(), colourSettingsSchema().write(ColourSettings{}),
-                       "colour");
+                  "at its size (docs/optics.md), and stats colour",
+                  colourSettingsSchema(), "colour");
     cmd->add_option("--out", o->out, "Folder for the pictures and statistics (created if missing)")
         ->capture_default_str();
     cmd->callback([o] { run(*o); });

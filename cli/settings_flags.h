@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <charconv>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -176,6 +177,34 @@ class SettingsFlags {
 
     std::string root_;
     std::vector<Flag> flags_;
+};
+
+// A view's switch (--aset, --colour, ...) and its own flags, any of which turns the view on with the defaults
+// for the flags not given.
+template <class S>
+class ViewFlags {
+  public:
+    // `name` is the switch ("--colour"), `path` the view's settings path ("colour").
+    void add(CLI::App* cmd, const std::string& name, const std::string& help,
+             const settings::Schema<S>& schema, const std::string& path) {
+        schema_ = &schema;
+        cmd->add_flag(name, on_, help + "; any " + name + "-... flag implies it");
+        flags_.add(cmd, schema.fields(), schema.write(S{}), path);
+    }
+
+    // The view's settings, or none when neither the switch nor any of its flags was given. Throws Error
+    // naming the flag.
+    std::optional<S> read() const {
+        if (!on_ && !flags_.given()) return std::nullopt;
+        S s;
+        flags_.apply(*schema_, s);
+        return s;
+    }
+
+  private:
+    bool on_ = false;
+    SettingsFlags flags_;
+    const settings::Schema<S>* schema_ = nullptr;
 };
 
 }  // namespace facetlight::cli

@@ -30,8 +30,7 @@ struct SweepOptions {
     std::vector<std::string> constraints;
     int refineRounds = OptimizeSettings{}.refineRounds;
     TraceOptions trace;
-    bool colour = false;
-    SettingsFlags colourFlags;
+    ViewFlags<ColourSettings> colour;
 };
 
 CutValues fixedValues(const std::vector<std::string>& settings) {
@@ -55,12 +54,7 @@ void runSweepCommand(const SweepOptions& o) {
     for (const std::string& text : o.vary) request.axes.push_back(parseSweepAxis(text));
     request.set = fixedValues(o.set);
     const TraceSettings trace = toTraceSettings(o.trace);
-    // The colour view's own flags turn it on, as render's do.
-    std::optional<ColourSettings> colour;
-    if (o.colour || o.colourFlags.given()) {
-        colour.emplace();
-        o.colourFlags.apply(colourSettingsSchema(), *colour);
-    }
+    const std::optional<ColourSettings> colour = o.colour.read();
     request.figures = o.figures.empty() ? std::vector<std::string>{defaultSweepFigure(trace)} : o.figures;
     request.maximize = o.maximizeGiven && o.maximize.empty() ? defaultSweepFigure(trace) : o.maximize;
     request.constraints = o.constraints;
@@ -151,13 +145,12 @@ void addSweepCommand(CLI::App& app) {
                     "With --maximize: finer grids after the sweep, each with 4 times the photons")
         ->capture_default_str();
     addTraceOptions(cmd, o->trace, false);
-    cmd->add_flag(
-        "--colour", o->colour,
+    o->colour.add(
+        cmd, "--colour",
         "Also measure every point's face-up colour (the colour figures colour_lightness, colour_a, "
         "colour_b, colour_chroma, colour_windowed, colour_extinct, colour_saturated; docs/optics.md) "
-        "under a CIE illuminant, absorbing at the point's size; any --colour-... flag implies it");
-    o->colourFlags.add(cmd, colourSettingsSchema().fields(), colourSettingsSchema().write(ColourSettings{}),
-                       "colour");
+        "under a CIE illuminant, absorbing at the point's size",
+        colourSettingsSchema(), "colour");
     cmd->callback([o, maximize] {
         o->maximizeGiven = maximize->count() > 0;
         runSweepCommand(*o);

@@ -29,18 +29,12 @@ struct TraceCommandOptions {
     std::string jsonPath;
     std::string csvPath;
     bool progressJson = false;
-    bool colour = false;
-    SettingsFlags colourFlags;
+    ViewFlags<ColourSettings> colour;
 };
 
 void run(const TraceCommandOptions& o) {
     const TraceSettings settings = toTraceSettings(o.trace);
-    // The colour view's own flags turn it on, as render's do.
-    std::optional<ColourSettings> colour;
-    if (o.colour || o.colourFlags.given()) {
-        colour.emplace();
-        o.colourFlags.apply(colourSettingsSchema(), *colour);
-    }
+    const std::optional<ColourSettings> colour = o.colour.read();
     const Stone stone = resolveStone(o.trace.mesh, stoneOptions(o.trace));
     // Under mpirun the ranks split the blocks and rank 0 alone reports (docs/distributed.md).
     Communicator& comm = processCommunicator();
@@ -100,12 +94,10 @@ void addTraceCommand(CLI::App& app) {
     cmd->add_option("--csv", o->csvPath, "Also write the facet table as CSV here");
     cmd->add_flag("--progress-json", o->progressJson,
                   "Write progress as JSON lines on stderr (for a parent process)");
-    cmd->add_flag("--colour", o->colour,
+    o->colour.add(cmd, "--colour",
                   "Also measure the stone's face-up colour under a CIE illuminant, absorbing at its size "
-                  "(docs/optics.md), into the summary and stats colour (render --colour also draws it); any "
-                  "--colour-... flag implies it");
-    o->colourFlags.add(cmd, colourSettingsSchema().fields(), colourSettingsSchema().write(ColourSettings{}),
-                       "colour");
+                  "(docs/optics.md), into the summary and stats colour (render --colour also draws it)",
+                  colourSettingsSchema(), "colour");
     cmd->callback([o, json] {
         o->json = json->count() > 0;
         run(*o);

@@ -38,6 +38,10 @@ nlohmann::json absorptionByTransmission(const std::multimap<std::string, std::st
     json request = json::object();
     for (const auto& [key, value] : query) {
         if (request.contains(key)) throw Error(key, key + " is given twice");
+        if (key != "path_mm" && key != "transmitted_colour" && key != "extraordinary_transmitted_colour")
+            throw Error(key, key +
+                                 " is not a parameter here: give transmitted_colour, and maybe "
+                                 "extraordinary_transmitted_colour and path_mm");
         if (key == "path_mm") {
             size_t used = 0;
             double mm = 0;

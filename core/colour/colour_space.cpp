@@ -13,6 +13,17 @@ Vec3 xyzToLinearSrgb(const Vec3& c) {
             0.0556434 * c.x - 0.2040259 * c.y + 1.0572252 * c.z};
 }
 
+Vec3 linearSrgbToXyz(const Vec3& c) {
+    // From IEC 61966-2-1's primaries and its D65 white, to 7 decimals; (1, 1, 1) is Y = 1.
+    return {0.4124564 * c.x + 0.3575761 * c.y + 0.1804375 * c.z,
+            0.2126729 * c.x + 0.7151522 * c.y + 0.0721750 * c.z,
+            0.0193339 * c.x + 0.1191920 * c.y + 0.9503041 * c.z};
+}
+
+double srgbDecode(double v) {
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
 double srgbEncode(double v) {
     v = std::clamp(v, 0.0, 1.0);
     return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
@@ -33,6 +44,10 @@ Lab xyzToLab(const Vec3& xyz, const Vec3& white) {
     const auto f = [&](double t) { return t > d * d * d ? std::cbrt(t) : t / (3 * d * d) + 4.0 / 29; };
     const double fx = f(xyz.x / white.x), fy = f(xyz.y / white.y), fz = f(xyz.z / white.z);
     return {116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)};
+}
+
+double deltaE(const Lab& x, const Lab& y) {
+    return std::sqrt((x.L - y.L) * (x.L - y.L) + (x.a - y.a) * (x.a - y.a) + (x.b - y.b) * (x.b - y.b));
 }
 
 }  // namespace facetlight

@@ -7,8 +7,12 @@ namespace facetlight {
 
 // XYZ (Y = 1 for the white) to linear sRGB, whose white is D65.
 Vec3 xyzToLinearSrgb(const Vec3& xyz);
+// Linear sRGB (white (1, 1, 1)) to XYZ with Y = 1 for the white.
+Vec3 linearSrgbToXyz(const Vec3& rgb);
 // Linear [0, 1] to the sRGB-encoded [0, 1] value (clamped).
 double srgbEncode(double linear);
+// The sRGB-encoded [0, 1] value to linear (IEC 61966-2-1's decoding).
+double srgbDecode(double encoded);
 
 struct Lab {
     double L = 0, a = 0, b = 0;
@@ -17,5 +21,7 @@ struct Lab {
 };
 // CIELAB of `xyz` against the reference white `white` (its Y the scale of xyz's Y).
 Lab xyzToLab(const Vec3& xyz, const Vec3& white);
+// The CIE 1976 colour difference Delta E*ab: the distance in CIELAB.
+double deltaE(const Lab& x, const Lab& y);
 
 }  // namespace facetlight

@@ -17,23 +17,17 @@ double smoothstep(double lo, double hi, double x) {
 
 }  // namespace
 
-namespace {
-
-MaterialChoice chooseIndex(const SceneSettings& settings, const Stone& stone) {
-    if (settings.constantIndex) return {Material::constant(*settings.constantIndex), "n"};
-    if (settings.customMaterial) return {Material::defined(*settings.customMaterial), "custom_material"};
-    if (settings.material != "auto") return {Material::byName(settings.material), "material"};
-    if (stone.design && stone.design->refractiveIndex)
-        return {Material::constant(*stone.design->refractiveIndex, "design file index"), "design file"};
-    return {Material::byName("diamond"), "default"};
+std::optional<MaterialChoice> namedMaterial(const SceneSettings& settings) {
+    if (settings.constantIndex) return MaterialChoice{Material::constant(*settings.constantIndex), "n"};
+    if (settings.customMaterial)
+        return MaterialChoice{Material::defined(*settings.customMaterial), "custom_material"};
+    if (settings.material != "auto") return MaterialChoice{Material::byName(settings.material), "material"};
+    return std::nullopt;
 }
 
-}  // namespace
-
 Optic chosenOptic(const SceneSettings& settings) {
-    if (settings.constantIndex) return Optic::Isotropic;
-    if (settings.customMaterial) return Material::defined(*settings.customMaterial).optic();
-    return settings.material == "auto" ? Optic::Isotropic : Material::byName(settings.material).optic();
+    const std::optional<MaterialChoice> named = namedMaterial(settings);
+    return named ? named->material.optic() : Optic::Isotropic;
 }
 
 std::string chosenMaterialName(const SceneSettings& settings) {
@@ -42,7 +36,13 @@ std::string chosenMaterialName(const SceneSettings& settings) {
 }
 
 MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone) {
-    MaterialChoice choice = chooseIndex(settings, stone);
+    MaterialChoice choice = [&] {
+        if (std::optional<MaterialChoice> named = namedMaterial(settings)) return *std::move(named);
+        if (stone.design && stone.design->refractiveIndex)
+            return MaterialChoice{Material::constant(*stone.design->refractiveIndex, "design file index"),
+                                  "design file"};
+        return MaterialChoice{Material::byName("diamond"), "default"};
+    }();
     // A job's table replaces the material's own spectrum (docs/optics.md, "Coloured materials").
     if (settings.absorption) choice.material = choice.material.withAbsorption(settings.absorption);
     return choice;

@@ -9,6 +9,7 @@
 // Geometry is kept in the stone's frame: a tilted stone is the world rotated by -tilt about x. The floor is
 // horizontal in the world, under the stone's lowest point.
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "geometry/geometry.h"
@@ -29,6 +30,9 @@ struct MaterialChoice {
     std::string source;
 };
 MaterialChoice chooseMaterial(const SceneSettings& settings, const Stone& stone);
+// The material the settings name before a stone is known, in the one order of precedence: `n`, the job's
+// own material, a named one; none for "auto" (then the design file's index or the default decides).
+std::optional<MaterialChoice> namedMaterial(const SceneSettings& settings);
 // The optic class of the material the settings choose, before a stone is known: "auto" and `n` are
 // singly refracting (a design file states one index).
 Optic chosenOptic(const SceneSettings& settings);

@@ -174,9 +174,8 @@ namespace {
 // and a design file's index name no coloured material).
 bool absorbs(const TraceSettings& t) {
     if (t.absorption) return t.absorption->absorbs();
-    if (t.constantIndex || t.material == "auto") return false;
-    const Material material = Material::byName(t.material);
-    return material.absorption() && material.absorption()->absorbs();
+    const std::optional<MaterialChoice> named = namedMaterial(t);
+    return named && named->material.absorption() && named->material.absorption()->absorbs();
 }
 
 // With the colour view: it sees the stone face-up under a dome of its own, so the light's axes change none of

@@ -103,10 +103,6 @@ Lab transmittedThrough(const AbsorptionSpectrum& s, double mm) {
                     whitePoint(Illuminant::D65));
 }
 
-double deltaE(const Lab& x, const Lab& y) {
-    return std::sqrt((x.L - y.L) * (x.L - y.L) + (x.a - y.a) * (x.a - y.a) + (x.b - y.b) * (x.b - y.b));
-}
-
 // A colour by transmission gives the spectrum that transmits that colour through its path: traced back
 // through the table, each comes out within 0.3 Delta E (the table's 10 nm steps against the fit's smooth
 // curve).

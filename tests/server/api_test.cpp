@@ -239,6 +239,12 @@ TEST_F(ServiceTest, ColourByTransmissionGivesTheJobsTable) {
         EXPECT_EQ(p.value("field", ""), field) << query << ": " << r->body;
         EXPECT_EQ(p.value("detail", "").find("absorption."), std::string::npos) << p.value("detail", "");
     }
+    // An unknown name is refused as a name, whatever its value looks like.
+    r = client_->Get("/api/colour/by-transmission?transmitted_colour=%23808080&hue=blue");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 422);
+    EXPECT_NE(json::parse(r->body).value("detail", "").find("hue is not a parameter"), std::string::npos)
+        << r->body;
 }
 
 // The page's absorption swatch sums the colour view's own tables: summed over the rows as the document says,

@@ -11,10 +11,12 @@ import { doublingText, polariscopeText } from './result.js';
 // default by).
 const SIGNIFICANT_Z = 2;
 
-// Jobs of one stone: the same mesh, cut, material and size, so that only how they were traced differs.
+// Jobs of one stone: the same mesh, cut, material (named, a constant n or its own, with its absorption and
+// optic axis), size and light, so that only how they were traced differs.
 function stoneKey(job) {
   const s = job.settings || {};
-  return JSON.stringify([job.mesh, s.cut || null, s.material, s.n ?? null, s.size_mm ?? null, s.dispersion, s.light]);
+  return JSON.stringify([job.mesh, s.cut || null, s.material, s.n ?? null, s.custom_material ?? null, s.absorption ?? null,
+    s.optic_axis ?? null, s.size_mm ?? null, s.dispersion, s.light]);
 }
 
 // The first polarised and unpolarised job of each stone that has both.

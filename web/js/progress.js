@@ -48,9 +48,16 @@ export function lightText(settings) {
   return light;
 }
 
+// The material a job traces, in the server's order of precedence (scene/scene.h, namedMaterial).
+function materialText(settings) {
+  if (settings.n != null) return `n ${settings.n}`;
+  if (settings.custom_material) return `${settings.custom_material.name || 'own material'} (its own material)`;
+  return settings.material === 'auto' ? 'its design\'s index or diamond' : humanize(settings.material || '');
+}
+
 export function jobSummary(settings) {
   if (!settings) return '';
-  const parts = [`${fmtInt(settings.photons)} photons`, settings.material === 'auto' ? 'its design\'s index or diamond' : humanize(settings.material || ''), lightText(settings)];
+  const parts = [`${fmtInt(settings.photons)} photons`, materialText(settings), lightText(settings)];
   if (settings.dispersion === false) parts.push('no dispersion');
   // Polarised is the default: a summary names the exceptions.
   if (settings.polarization === 'off') parts.push('unpolarised');
