@@ -94,7 +94,19 @@ double AbsorptionSpectrum::extraordinary(double nm) const {
     return extraordinaryPerMm.empty() ? ordinary(nm) : interpolate(wavelengthNm, extraordinaryPerMm, nm);
 }
 
+double AbsorptionSpectrum::ray(int axis, double nm) const {
+    return interpolate(wavelengthNm, rayPerMm[size_t(axis)], nm);
+}
+
+std::vector<double> AbsorptionSpectrum::meanOfRays(const std::array<std::vector<double>, 3>& rays) {
+    std::vector<double> mean(rays[0].size(), 0.0);
+    for (const std::vector<double>& r : rays)
+        for (size_t i = 0; i < mean.size(); ++i) mean[i] += r[i] / 3.0;
+    return mean;
+}
+
 bool AbsorptionSpectrum::absorbs() const {
+    // The rays' mean is ordinaryPerMm: positive where any ray is.
     const auto positive = [](double a) { return a > 0; };
     return std::any_of(ordinaryPerMm.begin(), ordinaryPerMm.end(), positive) ||
            std::any_of(extraordinaryPerMm.begin(), extraordinaryPerMm.end(), positive);
@@ -103,24 +115,35 @@ bool AbsorptionSpectrum::absorbs() const {
 AbsorptionSpectrum readAbsorption(const json& j, const std::string& path) {
     if (!j.is_object())
         throw Error(path, path + " must be an object {\"wavelength_nm\": [...], \"ordinary_per_mm\": [...]}");
-    // Two forms: a table, or a colour by transmission, which transmitted_colour's presence decides.
+    // Three forms: a table of o (and e) columns, a biaxial material's table of rays, or a colour by
+    // transmission; transmitted_colour's or x_per_mm's presence decides.
     const bool byColour = j.contains("transmitted_colour");
+    const bool byRays =
+        !byColour && (j.contains("x_per_mm") || j.contains("y_per_mm") || j.contains("z_per_mm"));
     for (const auto& [key, value] : j.items()) {
         const bool known =
             byColour
                 ? key == "transmitted_colour" || key == "extraordinary_transmitted_colour" || key == "path_mm"
-                : key == "wavelength_nm" || key == "ordinary_per_mm" || key == "extraordinary_per_mm";
+            : byRays ? key == "wavelength_nm" || key == "x_per_mm" || key == "y_per_mm" || key == "z_per_mm"
+                     : key == "wavelength_nm" || key == "ordinary_per_mm" || key == "extraordinary_per_mm";
         if (!known)
-            throw Error(path + "." + key,
-                        "unknown field '" + path + "." + key +
-                            (byColour ? "' (a colour by transmission has transmitted_colour, "
-                                        "extraordinary_transmitted_colour and path_mm)"
-                                      : "' (a spectrum has wavelength_nm, ordinary_per_mm and "
-                                        "extraordinary_per_mm, or is a colour by transmission: "
-                                        "transmitted_colour)"));
+            throw Error(
+                path + "." + key,
+                "unknown field '" + path + "." + key +
+                    (byColour ? "' (a colour by transmission has transmitted_colour, "
+                                "extraordinary_transmitted_colour and path_mm)"
+                     : byRays ? "' (a biaxial material's rays are wavelength_nm, x_per_mm, y_per_mm and "
+                                "z_per_mm: their mean is the one spectrum)"
+                              : "' (a spectrum has wavelength_nm, ordinary_per_mm and "
+                                "extraordinary_per_mm, or x_per_mm, y_per_mm and z_per_mm for a "
+                                "biaxial material, or is a colour by transmission: "
+                                "transmitted_colour)"));
     }
     if (byColour) return readTransmittedColour(j, path);
-    for (const char* key : {"wavelength_nm", "ordinary_per_mm"}) {
+    const std::vector<const char*> required =
+        byRays ? std::vector<const char*>{"wavelength_nm", "x_per_mm", "y_per_mm", "z_per_mm"}
+               : std::vector<const char*>{"wavelength_nm", "ordinary_per_mm"};
+    for (const char* key : required) {
         if (!j.contains(key)) throw Error(path + "." + key, path + "." + key + " is missing");
     }
     AbsorptionSpectrum s;
@@ -133,6 +156,14 @@ AbsorptionSpectrum readAbsorption(const json& j, const std::string& path) {
                                        ": wavelengths must be strictly increasing");
     }
     const size_t n = s.wavelengthNm.size();
+    if (byRays) {
+        const char* keys[3] = {"x_per_mm", "y_per_mm", "z_per_mm"};
+        for (size_t axis = 0; axis < 3; ++axis)
+            s.rayPerMm[axis] = readColumn(j[keys[axis]], path + "." + keys[axis], 0,
+                                          AbsorptionSpectrum::kMaxPerMm, n, "coefficients per mm");
+        s.ordinaryPerMm = AbsorptionSpectrum::meanOfRays(s.rayPerMm);
+        return s;
+    }
     s.ordinaryPerMm = readColumn(j["ordinary_per_mm"], path + ".ordinary_per_mm", 0,
                                  AbsorptionSpectrum::kMaxPerMm, n, "coefficients per mm");
     if (j.contains("extraordinary_per_mm"))
@@ -142,6 +173,11 @@ AbsorptionSpectrum readAbsorption(const json& j, const std::string& path) {
 }
 
 json toJson(const AbsorptionSpectrum& s) {
+    if (s.trichroic())
+        return {{"wavelength_nm", s.wavelengthNm},
+                {"x_per_mm", s.rayPerMm[0]},
+                {"y_per_mm", s.rayPerMm[1]},
+                {"z_per_mm", s.rayPerMm[2]}};
     json j = {{"wavelength_nm", s.wavelengthNm}, {"ordinary_per_mm", s.ordinaryPerMm}};
     if (!s.extraordinaryPerMm.empty()) j["extraordinary_per_mm"] = s.extraordinaryPerMm;
     return j;

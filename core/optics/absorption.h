@@ -1,7 +1,9 @@
 #pragma once
 // A material's absorption spectrum (docs/optics.md, "Absorption"): Beer-Lambert coefficients per mm against
 // wavelength, for the ordinary wave (an isotropic material's one coefficient) and, for a uniaxial material,
-// the extraordinary; a job gives it as JSON "absorption" (readAbsorption), the CLI as --absorption.
+// the extraordinary; for a biaxial one, light vibrating along each principal axis X, Y, Z (trichroism); a job
+// gives it as JSON "absorption" (readAbsorption), the CLI as --absorption.
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -14,10 +16,19 @@ struct AbsorptionSpectrum {
     std::vector<double> wavelengthNm;        // strictly increasing
     std::vector<double> ordinaryPerMm;       // alpha_o, 1/mm, one per wavelength
     std::vector<double> extraordinaryPerMm;  // alpha_e (uniaxial only); empty: the same as alpha_o
+    // A biaxial material's coefficients for light vibrating along its principal axes X, Y and Z (those of
+    // its indices alpha, beta and gamma: the rays a dichroscope shows), or all empty. ordinaryPerMm is then
+    // their mean, meanOfRays(), what a trace that takes one spectrum uses.
+    std::array<std::vector<double>, 3> rayPerMm = {};
 
     // Linear between the table's points, constant beyond its ends.
     double ordinary(double wavelengthNm) const;
     double extraordinary(double wavelengthNm) const;
+    bool trichroic() const { return !rayPerMm[0].empty(); }
+    double ray(int axis, double wavelengthNm) const;  // axis 0, 1, 2: X, Y, Z; trichroic() only
+    // ((0 + x / 3) + y / 3) + z / 3 per wavelength: the one way the mean is taken, so that a table read back
+    // from JSON equals the shipped one bit for bit.
+    static std::vector<double> meanOfRays(const std::array<std::vector<double>, 3>& rays);
     // Whether any coefficient is above 0: a spectrum of zeros traces as no spectrum, bit for bit.
     bool absorbs() const;
     bool operator==(const AbsorptionSpectrum&) const = default;
@@ -28,8 +39,10 @@ struct AbsorptionSpectrum {
     static constexpr double kMaxPerMm = 1e6;  // past this no light crosses a micrometre
 };
 
-// {"wavelength_nm": [...], "ordinary_per_mm": [...], "extraordinary_per_mm": [...] (optional)}, checked:
-// throws Error naming the field at fault below `path` ("absorption.ordinary_per_mm[3]").
+// {"wavelength_nm": [...], "ordinary_per_mm": [...], "extraordinary_per_mm": [...] (optional)}, or
+// {"wavelength_nm": [...], "x_per_mm": [...], "y_per_mm": [...], "z_per_mm": [...]} (a biaxial material's
+// rays), or a colour by transmission, checked: throws Error naming the field at fault below `path`
+// ("absorption.ordinary_per_mm[3]").
 AbsorptionSpectrum readAbsorption(const nlohmann::json& j, const std::string& path);
 nlohmann::json toJson(const AbsorptionSpectrum& spectrum);
 

@@ -15,12 +15,14 @@ struct Column {
 };
 
 // A sample's columns on one wavelength grid. `ordinary` is averaged over its columns (a biaxial stone's rays,
-// docs/optics.md: one spectrum until a biaxial absorption tensor exists); `extraordinary` is empty or one.
+// docs/optics.md); `extraordinary` is empty or one. `rays`: the ordinary columns are the X, Y and Z rays, in
+// that order, and are kept as the trichroic table too.
 struct Measured {
     std::string_view material;
     std::vector<double> wavelengthNm;
     std::vector<Column> ordinary;
     std::vector<Column> extraordinary;
+    bool rays = false;
 };
 
 std::vector<double> grid(double from, double to, double step) {
@@ -84,7 +86,8 @@ const std::vector<Measured>& measured() {
           {0.66,
            {0.14832, 0.09694, 0.07293, 0.07741, 0.05958, 0.04553, 0.03250, 0.02032, 0.01572, 0.01264, 0.01534,
             0.01894, 0.02922, 0.03471, 0.03150, 0.03490, 0.04602, 0.06059, 0.08404, 0.11105, 0.14643}}},
-         {}},
+         {},
+         true},
         // Alexandrite GRR 874, Lake Manyara, 0.717 mm, beta and gamma rays (ch874.a, .b; the server has no
         // alpha); 680 nm left out (the narrow R line, sampled once).
         {"alexandrite",
@@ -124,10 +127,13 @@ std::vector<double> perMm(const std::vector<Column>& columns) {
 std::optional<AbsorptionSpectrum> gemSpectrum(std::string_view name) {
     for (const Measured& m : measured()) {
         if (m.material != name) continue;
-        return AbsorptionSpectrum{
+        AbsorptionSpectrum s{
             .wavelengthNm = m.wavelengthNm,
             .ordinaryPerMm = perMm(m.ordinary),
             .extraordinaryPerMm = m.extraordinary.empty() ? std::vector<double>{} : perMm(m.extraordinary)};
+        if (m.rays)
+            for (size_t axis = 0; axis < 3; ++axis) s.rayPerMm[axis] = perMm({m.ordinary[axis]});
+        return s;
     }
     return std::nullopt;
 }

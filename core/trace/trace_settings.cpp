@@ -65,7 +65,9 @@ const Schema<TraceSettings>& traceSettingsSchema() {
                   &readAbsorption, &toJson,
                   {"--absorption",
                    "The material's absorption spectrum: JSON {\"wavelength_nm\": [...], \"ordinary_per_mm\": "
-                   "[...], \"extraordinary_per_mm\": [...]}, or the colour 1 mm transmits, "
+                   "[...], \"extraordinary_per_mm\": [...]} (a biaxial material's rays: \"x_per_mm\", "
+                   "\"y_per_mm\", "
+                   "\"z_per_mm\"), or the colour 1 mm transmits, "
                    "{\"transmitted_colour\": \"#5b8fd0\"} (or [L*, a*, b*]), inline or in a file"}),
             boolean("dispersion", inherited<TraceSettings>(&TraceSettings::dispersion),
                     {"--no-dispersion", "Trace every photon at 589.3 nm"}),
@@ -99,6 +101,11 @@ const Schema<TraceSettings>& traceSettingsSchema() {
                 chosenOptic(s) != Optic::Uniaxial) {
                 const std::string field = fieldPath(path, "absorption.extraordinary_per_mm");
                 throw Error(field, field + " needs a uniaxial material (got " + chosenMaterialName(s) + ")");
+            }
+            // A table of rays along X, Y and Z needs a biaxial material.
+            if (s.absorption && s.absorption->trichroic() && chosenOptic(s) != Optic::Biaxial) {
+                const std::string field = fieldPath(path, "absorption.x_per_mm");
+                throw Error(field, field + " needs a biaxial material (got " + chosenMaterialName(s) + ")");
             }
             if (s.light.polarizerDeg && s.polarization == PolarizationMode::Off) {
                 const std::string field = fieldPath(path, "light.polarizer_deg");

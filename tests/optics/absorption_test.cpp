@@ -96,6 +96,33 @@ TEST(AbsorptionSpectrum, JsonRoundTrip) {
     EXPECT_EQ(toJson(job)["absorption"], j);
 }
 
+// A biaxial material's rays: read and written back, refused by name when one is missing, beside the o/e
+// columns or on a material that is not biaxial; their mean is the one spectrum.
+TEST(AbsorptionSpectrum, ABiaxialMaterialsRays) {
+    const json rays = {{"wavelength_nm", {400, 700}},
+                       {"x_per_mm", {0.3, 0.0}},
+                       {"y_per_mm", {0.6, 0.3}},
+                       {"z_per_mm", {0.0, 0.9}}};
+    const AbsorptionSpectrum a = readAbsorption(rays, "absorption");
+    ASSERT_TRUE(a.trichroic());
+    EXPECT_EQ(toJson(a), rays);
+    EXPECT_DOUBLE_EQ(a.ordinary(400), 0.3);
+    EXPECT_DOUBLE_EQ(a.ordinary(700), 0.4);
+    EXPECT_DOUBLE_EQ(a.ray(2, 550), 0.45);
+    EXPECT_EQ(errorField(rays, "peridot"), "no error");
+    EXPECT_EQ(errorField(rays, "sapphire"), "absorption.x_per_mm");  // uniaxial
+    EXPECT_EQ(errorField(rays, "diamond"), "absorption.x_per_mm");   // isotropic
+    json j = rays;
+    j.erase("y_per_mm");
+    EXPECT_EQ(errorField(j, "peridot"), "absorption.y_per_mm");
+    j = rays;
+    j["ordinary_per_mm"] = {0.1, 0.1};
+    EXPECT_EQ(errorField(j, "peridot"), "absorption.ordinary_per_mm");
+    j = rays;
+    j["z_per_mm"] = {0.1, 0.1, 0.1};
+    EXPECT_EQ(errorField(j, "peridot"), "absorption.z_per_mm");
+}
+
 // What `mm` of a spectrum transmits of D65, against D65's white: the tracer's own interpolation of the table
 // (linear between its 10 nm points), summed at the CIE tables' 5 nm rows, independent of the fit's sigmoid.
 Lab transmittedThrough(const AbsorptionSpectrum& s, double mm) {

@@ -99,5 +99,21 @@ TEST(GemSpectra, AJobsTableReplacesTheMaterialsOwn) {
     EXPECT_EQ(chooseMaterial(settings, test::roundBrilliant()).material.absorption(), settings.absorption);
 }
 
+// Peridot keeps its three rays (olivine GRR 418's alpha, beta and gamma files) as well as their mean, which
+// is what it traced with before: the mean is the rays' mean bit for bit, and the table read back from its JSON
+// (as a job would give it) equals the shipped one.
+TEST(GemSpectra, PeridotKeepsItsRays) {
+    const std::optional<AbsorptionSpectrum> peridot = gemSpectrum("peridot");
+    ASSERT_TRUE(peridot && peridot->trichroic());
+    EXPECT_EQ(AbsorptionSpectrum::meanOfRays(peridot->rayPerMm), peridot->ordinaryPerMm);
+    EXPECT_EQ(readAbsorption(toJson(*peridot), "absorption"), *peridot);
+    // Each ray is its own file: at 380 nm the beta ray absorbs most per mm (A 0.330 through 1.138 mm, against
+    // 0.249 through 1.141 mm and 0.148 through 0.66 mm).
+    EXPECT_GT(peridot->ray(1, 380), peridot->ray(0, 380));
+    EXPECT_GT(peridot->ray(1, 380), peridot->ray(2, 380));
+    // Alexandrite lacks its alpha ray: one spectrum.
+    EXPECT_FALSE(gemSpectrum("alexandrite")->trichroic());
+}
+
 }  // namespace
 }  // namespace facetlight

@@ -28,14 +28,16 @@ export function chosenOptic(form) {
   return material.selectedOptions[0]?.dataset.optic || 'isotropic';
 }
 
-function uniaxialMaterial(form) {
-  return chosenOptic(form) === 'uniaxial';
+// The columns of coefficients a row may have beside its wavelength: one, or for a uniaxial material one or
+// two (o, e), or for a biaxial one one or three (its X, Y and Z rays).
+function allowedColumns(form) {
+  return { uniaxial: [1, 2], biaxial: [1, 3] }[chosenOptic(form)] || [1];
 }
 
-// The absorption textarea as a job's `absorption`: one row a line, "wavelength_nm alpha_o" or, for a uniaxial
-// material, "wavelength_nm alpha_o alpha_e" (per mm; spaces, tabs or commas between; # starts a comment).
-// Empty: a clear stone (undefined). What is wrong goes to `errors` as [field, message] naming the line; the
-// ranges are the server's to check.
+// The absorption textarea as a job's `absorption`: one row a line, "wavelength_nm alpha_o", or for a uniaxial
+// material "wavelength_nm alpha_o alpha_e", or for a biaxial one "wavelength_nm alpha_X alpha_Y alpha_Z" (per
+// mm; spaces, tabs or commas between; # starts a comment). Empty: a clear stone (undefined). What is wrong goes
+// to `errors` as [field, message] naming the line; the ranges are the server's to check.
 export function readAbsorption(form, errors) {
   const text = form.elements.absorption.value;
   const rows = [];
@@ -50,8 +52,9 @@ export function readAbsorption(form, errors) {
       errors.push(['absorption', `Line ${i + 1}: "${cells[bad]}" is not a number`]);
       return undefined;
     }
-    if (values.length < 2 || values.length > 3) {
-      errors.push(['absorption', `Line ${i + 1}: write a wavelength in nm and ${uniaxialMaterial(form) ? 'one or two coefficients' : 'one coefficient'} per mm`]);
+    if (values.length < 2 || values.length > 4) {
+      const counts = allowedColumns(form).map((n) => ['', 'one', 'two', 'three'][n]).join(' or ');
+      errors.push(['absorption', `Line ${i + 1}: write a wavelength in nm and ${counts} coefficient${counts === 'one' ? '' : 's'} per mm`]);
       return undefined;
     }
     rows.push({ line: i + 1, values });
@@ -67,8 +70,10 @@ export function readAbsorption(form, errors) {
     errors.push(['absorption', `Line ${ragged.line}: ${ragged.values.length} numbers where line ${rows[0].line} has ${columns}`]);
     return undefined;
   }
-  if (columns === 3 && !uniaxialMaterial(form)) {
-    errors.push(['absorption', 'A third (extraordinary) column needs a uniaxial material: choose one, or drop the column']);
+  if (!allowedColumns(form).includes(columns - 1)) {
+    errors.push(['absorption', columns === 3
+      ? 'A third (extraordinary) column needs a uniaxial material: choose one, or drop the column'
+      : 'Three coefficients (the X, Y and Z rays) need a biaxial material: choose one, or keep one column']);
     return undefined;
   }
   for (let k = 1; k < rows.length; ++k) {
@@ -77,8 +82,10 @@ export function readAbsorption(form, errors) {
       return undefined;
     }
   }
-  const spectrum = { wavelength_nm: rows.map((r) => r.values[0]), ordinary_per_mm: rows.map((r) => r.values[1]) };
-  if (columns === 3) spectrum.extraordinary_per_mm = rows.map((r) => r.values[2]);
+  const column = (k) => rows.map((r) => r.values[k]);
+  if (columns === 4) return { wavelength_nm: column(0), x_per_mm: column(1), y_per_mm: column(2), z_per_mm: column(3) };
+  const spectrum = { wavelength_nm: column(0), ordinary_per_mm: column(1) };
+  if (columns === 3) spectrum.extraordinary_per_mm = column(2);
   return spectrum;
 }
 
@@ -162,13 +169,15 @@ export async function updateAbsorptionSwatches() {
     return;
   }
   if (asked !== swatchesAsked) return;
-  const waves = spectrum.extraordinary_per_mm
-    ? [['o', 'ordinary', spectrum.ordinary_per_mm], ['e', 'extraordinary', spectrum.extraordinary_per_mm]]
-    : [['', '', spectrum.ordinary_per_mm]];
+  const waves = spectrum.x_per_mm
+    ? [['X', 'X ray', spectrum.x_per_mm], ['Y', 'Y ray', spectrum.y_per_mm], ['Z', 'Z ray', spectrum.z_per_mm]]
+    : spectrum.extraordinary_per_mm
+      ? [['o', 'ordinary wave', spectrum.ordinary_per_mm], ['e', 'extraordinary wave', spectrum.extraordinary_per_mm]]
+      : [['', '', spectrum.ordinary_per_mm]];
   const lengths = [1, ...(size > 0 && size !== 1 ? [size] : [])];
   box.replaceChildren(h('span', { class: 'muted' }, 'Transmits under D65:'), ...lengths.flatMap((mm) => waves.map(([key, name, alphas]) => {
     const c = transmittedColour(tables, spectrum.wavelength_nm, alphas, mm);
-    const what = `${fmtNumber(mm, 2)} mm${name ? `, ${name} wave` : ''}`;
+    const what = `${fmtNumber(mm, 2)} mm${name ? `, ${name}` : ''}`;
     return h('span', { class: 'swatch-item', 'data-mm': mm, 'data-wave': key || 'both', 'data-srgb': c.srgb },
       colourSwatch(c.srgb, `${what}: ${c.srgb}, ${labText(c)}`), `${fmtNumber(mm, 2)} mm${key ? ` (${key})` : ''}`);
   })));
@@ -178,10 +187,15 @@ export async function updateAbsorptionSwatches() {
 // the table has is shown beside it once it is left (or the material changes), while the swatches follow typing.
 export function syncAbsorptionField() {
   const form = $('#job-form');
-  const uniaxial = uniaxialMaterial(form);
-  $('#absorption-columns').textContent = uniaxial
-    ? 'wavelength (nm), α ordinary (1/mm), α extraordinary (1/mm, optional)' : 'wavelength (nm), α (1/mm)';
-  form.elements.absorption.placeholder = uniaxial ? '400 0.30 0.10\n550 0.05 0.02\n700 0.15 0.40' : '400 0.30\n550 0.05\n700 0.15';
+  const optic = chosenOptic(form);
+  $('#absorption-columns').textContent = {
+    uniaxial: 'wavelength (nm), α ordinary (1/mm), α extraordinary (1/mm, optional)',
+    biaxial: 'wavelength (nm), α (1/mm), or α of the X, Y and Z rays (1/mm)',
+  }[optic] || 'wavelength (nm), α (1/mm)';
+  form.elements.absorption.placeholder = {
+    uniaxial: '400 0.30 0.10\n550 0.05 0.02\n700 0.15 0.40',
+    biaxial: '400 0.30 0.10 0.05\n550 0.05 0.02 0.20\n700 0.15 0.40 0.10',
+  }[optic] || '400 0.30\n550 0.05\n700 0.15';
   checkAbsorptionField();
   updateAbsorptionSwatches();
 }
