@@ -1675,6 +1675,16 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
       assert.ok(lightness(size) < lightness(one), `${wave}: ${size} at 6.5 mm is not darker than ${one} at 1 mm`);
     }
     assert.notEqual(swatches[2][2], swatches[3][2], 'the two waves transmit different colours');
+    // Three rays (X, Y, Z) need a biaxial material: refused beside the table for tourmaline, a swatch each for peridot.
+    await page.fill('#f-absorption', '400 0.30 0.05 0.01\n550 0.05 0.05 0.30\n700 0.15 0.40 0.02');
+    await page.press('#f-absorption', 'Tab');
+    assert.match(await page.textContent('#err-absorption'), /X, Y and Z rays\) need a biaxial material/);
+    await page.selectOption('#f-material', 'peridot');
+    assert.match(await page.textContent('#absorption-columns'), /X, Y and Z rays/);
+    await page.waitForSelector('#absorption-swatches [data-mm="6.5"][data-wave="Z"]');
+    assert.equal(await page.isHidden('#err-absorption'), true);
+    const rays = await page.$$eval('#absorption-swatches .swatch-item', (items) => items.map((i) => `${i.dataset.mm} ${i.dataset.wave}`));
+    assert.deepEqual(rays, ['1 X', '1 Y', '1 Z', '6.5 X', '6.5 Y', '6.5 Z']);
     // A flat (grey) spectrum transmits a neutral grey under D65: exp(-0.5) = 0.607 of the light, sRGB 0.607 encoded.
     await page.selectOption('#f-material', 'diamond');
     await page.fill('#f-absorption', '400 0.5\n700 0.5');
