@@ -518,6 +518,9 @@ void degeneratePair(const CMat3& m, const CVec3& reference, CVec3& e1, CVec3& e2
 // same steps for the same coefficients (no dependence on anything else). `scale` bounds the roots' size.
 void quarticRoots(const double c[5], double scale, Complex z[4]) {
     for (int j = 0; j < 4; ++j) z[j] = std::polar(scale, 0.4 + j * 1.5707963267948966);
+    // Done when the steps are at rounding, or small and no longer shrinking (close roots, whose rounding
+    // floor lies above the first test).
+    double previous = INFINITY;
     for (int iteration = 0, quiet = 0; iteration < 200 && quiet < 2; ++iteration) {
         double largest = 0;
         for (int j = 0; j < 4; ++j) {
@@ -534,7 +537,10 @@ void quarticRoots(const double c[5], double scale, Complex z[4]) {
             z[j] = x - w;
             largest = std::fmax(largest, std::abs(w));
         }
-        quiet = largest <= 1e-14 * scale ? quiet + 1 : 0;
+        const bool atFloor =
+            largest <= 1e-14 * scale || (largest <= 1e-9 * scale && largest >= 0.5 * previous);
+        quiet = atFloor ? quiet + 1 : 0;
+        previous = largest;
     }
 }
 

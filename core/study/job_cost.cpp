@@ -43,10 +43,11 @@ std::string pixels(const RenderSettings& r) {
 // The calibration traces polarised, the default (cost_calibration.cpp); an unpolarised one takes about as
 // long (0.91-0.97x its time quiet, docs/performance.md, "Polarised and birefringent tracing"), and a doubly
 // refracting stone solves each facet's waves one photon at a time: 2-11.5x (SCALAR to AVX-512, whose packet
-// walk gains most), counted at 12 (bench_trace's PolarizedVsPlain, 2026-12-03).
+// walk gains most), counted at 12 (bench_trace's PolarizedVsPlain, 2026-12-03); a biaxial stone likewise
+// (its quartic costs more per facet; not benchmarked apart).
 double polarizationFactor(const TraceSettings& t) {
     if (t.polarization == PolarizationMode::Off) return 1;
-    return chosenOptic(t) == Optic::Uniaxial ? 12 : 1;
+    return chosenOptic(t) != Optic::Isotropic ? 12 : 1;
 }
 
 // A trace of `photons` photons (with the fire trace when enabled): every job's, and each sweep point's.
