@@ -1,5 +1,6 @@
 #include "optics/birefringence.h"
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
@@ -183,25 +184,36 @@ Wave<T> extraordinaryInterfaceWave(const UniaxialMedium& m, const ExtraordinaryR
 // up to the factor common to every wave: N . Re(E x conj(H)) with H = k x E, i.e. |k - E (k.E)| times
 // rayNormal, where |k - E (k.E)| = |k| unless p is extraordinary (E is across k in the others).
 double normalFlux(const PlaneWave& p, double rayNormal) {
-    const double across =
-        p.mode == WaveMode::Extraordinary ? length(p.waveNormal - p.field * dot(p.waveNormal, p.field)) : 1;
+    const bool acrossK = p.mode == WaveMode::S || p.mode == WaveMode::P || p.mode == WaveMode::Ordinary;
+    const double across = acrossK ? 1 : length(p.waveNormal - p.field * dot(p.waveNormal, p.field));
     return p.index * across * rayNormal;
 }
 
+// The ray (energy) direction of propagating wave p of wave vector k: along eps k for an extraordinary wave
+// (the normal to the index surface), along k - E (E.k) for a biaxial crystal's (the Poynting vector
+// E x (k x E) of a unit real E), else along k.
+Vec3 rayOf(const UniaxialMedium* crystal, const PlaneWave& p, const Vec3& k) {
+    return p.mode == WaveMode::Extraordinary ? normalize(epsilonTimes(*crystal, k)) : p.waveNormal;
+}
+Vec3 rayOf(const BiaxialMedium*, const PlaneWave& p, const Vec3& k) {
+    const bool crystal = p.mode == WaveMode::Fast || p.mode == WaveMode::Slow;
+    return crystal ? normalize(k - p.field * dot(p.field, k)) : p.waveNormal;
+}
+
 // The propagating wave w as a PlaneWave, its unit field e given.
-template <class T>
-PlaneWave toPlaneWave(const UniaxialMedium* crystal, const Wave<T>& w, const Vec3& e) {
+template <class M, class T>
+PlaneWave toPlaneWave(const M* crystal, const Wave<T>& w, const Vec3& e) {
     const Vec3 k = realPart(w.k);
     PlaneWave p;
     p.mode = w.mode;
     p.index = length(k);
     p.waveNormal = k / p.index;
     p.field = e;
-    p.ray = w.mode == WaveMode::Extraordinary ? normalize(epsilonTimes(*crystal, k)) : p.waveNormal;
+    p.ray = rayOf(crystal, p, k);
     return p;
 }
-template <class T>
-PlaneWave toPlaneWave(const UniaxialMedium* crystal, const Wave<T>& w) {
+template <class M, class T>
+PlaneWave toPlaneWave(const M* crystal, const Wave<T>& w) {
     return toPlaneWave(crystal, w, normalize(realPart(w.field)));
 }
 
@@ -235,8 +247,8 @@ T divide(T z, T w) {
 // only in rows 0 and 3 and p only in rows 1 and 2. Eliminating them leaves a 2x2 system for the crystal's
 // two waves (Yariv & Yeh ch. 4; Lekner 1991 reduces it the same way), solved by Cramer's rule. The crystal's
 // waves are reflected or transmitted as crystalReflects says, the isotropic waves iso[] (s, p) the others.
-template <class C, class I, class In>
-void matchFields(const UniaxialMedium& crystal, bool crystalReflects, const Wave<In> incident[2], int count,
+template <class C, class I, class In, class M>
+void matchFields(const M& crystal, bool crystalReflects, const Wave<In> incident[2], int count,
                  const Wave<C> crystalWaves[2], const Wave<I> iso[2], const Vec3& N, const Vec3& s, double n,
                  InterfaceWaves& out) {
     using T = std::conditional_t<std::is_same_v<C, double> && std::is_same_v<I, double>, double, Complex>;
@@ -271,7 +283,7 @@ void matchFields(const UniaxialMedium& crystal, bool crystalReflects, const Wave
     // Every incident basis wave has a unit real field and the same wave vector, so one incident flux serves
     // (out.incident[0] is set).
     const double incidentFlux = normalFlux(out.incident[0], incident[0].rayNormal);
-    auto fill = [&](OutgoingWave& o, const auto& w, const UniaxialMedium* medium, int row, double sign) {
+    auto fill = [&](OutgoingWave& o, const auto& w, const M* medium, int row, double sign) {
         o.propagating = w.propagating;
         double fieldScale;
         if (w.propagating) {
@@ -349,7 +361,7 @@ InterfaceWaves enterWith(const UniaxialMedium& crystal, const ExtraordinaryRoots
                                     extraordinaryInterfaceWave<C>(crystal, roots, kt, N, s, 1)};
     InterfaceWaves out;
     out.incidentCount = 2;
-    for (int i = 0; i < 2; ++i) out.incident[i] = toPlaneWave(nullptr, incident[i]);
+    for (int i = 0; i < 2; ++i) out.incident[i] = toPlaneWave<UniaxialMedium>(nullptr, incident[i]);
     matchFields(crystal, false, incident, 2, transmitted, reflected, N, s, nOutside, out);
     return out;
 }
@@ -428,6 +440,342 @@ double shareOf(const OutgoingWave& wave, const Coherency& j) {
     const Complex ts = wave.amplitude[0], tp = wave.amplitude[1];
     return wave.fluxRatio *
            (std::norm(ts) * j.ss + std::norm(tp) * j.pp + 2 * (ts * std::conj(tp) * j.sp).real());
+}
+
+// ---- Biaxial crystals (docs/optics.md, "Biaxial crystals") ----
+namespace {
+
+// Vectors in the crystal's principal frame (x, y, z), where eps is diag(alpha^2, beta^2, gamma^2).
+Vec3 toPrincipal(const BiaxialMedium& m, const Vec3& v) {
+    return {dot(m.x, v), dot(m.y, v), dot(m.z, v)};
+}
+CVec3 toPrincipal(const BiaxialMedium& m, const CVec3& v) {
+    return {dot(v, lift<Complex>(m.x)), dot(v, lift<Complex>(m.y)), dot(v, lift<Complex>(m.z))};
+}
+CVec3 fromPrincipal(const BiaxialMedium& m, const CVec3& v) {
+    return lift<Complex>(m.x) * v.x + lift<Complex>(m.y) * v.y + lift<Complex>(m.z) * v.z;
+}
+
+// The principal eps_i = n_i^2 and g_i = eps_i (tr eps - eps_i), the diagonal of tr(eps) eps - eps^2.
+struct Principal {
+    double eps[3], g[3], det;
+};
+Principal principalOf(const BiaxialMedium& m) {
+    Principal p{{m.alpha * m.alpha, m.beta * m.beta, m.gamma * m.gamma}, {}, 0};
+    const double trace = p.eps[0] + p.eps[1] + p.eps[2];
+    for (int i = 0; i < 3; ++i) p.g[i] = p.eps[i] * (trace - p.eps[i]);
+    p.det = p.eps[0] * p.eps[1] * p.eps[2];
+    return p;
+}
+
+// The wave matrix k k^T - (k.k) I + eps of a (possibly complex) wave vector in the principal frame: E is its
+// null vector (Born & Wolf eq. 15.2.(19) written for E; Yariv & Yeh eq. 4.2-4).
+struct CMat3 {
+    CVec3 row[3];
+};
+CMat3 waveMatrix(const Principal& p, const CVec3& k) {
+    const Complex kk = dot(k, k), c[3] = {k.x, k.y, k.z};
+    CMat3 m;
+    CVec3* rows[3] = {&m.row[0], &m.row[1], &m.row[2]};
+    for (int i = 0; i < 3; ++i) *rows[i] = CVec3{c[i] * c[0], c[i] * c[1], c[i] * c[2]};
+    m.row[0].x += p.eps[0] - kk;
+    m.row[1].y += p.eps[1] - kk;
+    m.row[2].z += p.eps[2] - kk;
+    return m;
+}
+
+// The null vector of a wave matrix of rank 2: the largest cross product of two of its rows. `rank2` is false
+// when all three are lost in rounding against the rows (a double root: the wave normal on an optic axis).
+CVec3 nullVector(const CMat3& m, bool& rank2) {
+    const CVec3 c[3] = {cross(m.row[0], m.row[1]), cross(m.row[0], m.row[2]), cross(m.row[1], m.row[2])};
+    int best = 0;
+    for (int i = 1; i < 3; ++i)
+        if (norm2(c[i]) > norm2(c[best])) best = i;
+    double rowMax = 0;
+    for (const CVec3& r : m.row) rowMax = std::fmax(rowMax, norm2(r));
+    rank2 = norm2(c[best]) > 1e-20 * rowMax * rowMax;
+    return c[best];
+}
+
+// Two fields spanning the null space of a wave matrix of rank 1 (two degenerate waves): `reference` with its
+// part along the matrix's largest row r taken out, and r x that. A symmetric matrix of rank 1 is a multiple
+// of r r^T, whose null space is everything across r.
+void degeneratePair(const CMat3& m, const CVec3& reference, CVec3& e1, CVec3& e2) {
+    int best = 0;
+    for (int i = 1; i < 3; ++i)
+        if (norm2(m.row[i]) > norm2(m.row[best])) best = i;
+    const CVec3& r = m.row[best];
+    e1 = reference - r * (dot(r, reference) / dot(r, r));
+    if (!(norm2(e1) > 1e-12 * norm2(reference))) {  // the reference along r: any other direction
+        const Vec3 q = perpendicularTo(normalize(realPart(r)));
+        e1 = CVec3{q.x, q.y, q.z};
+    }
+    e2 = cross(r, e1);
+}
+
+// The roots of the quartic c[4] z^4 + ... + c[0] (c[4] != 0), by the Aberth-Ehrlich iteration (Aberth, Math.
+// Comp. 27, 339, 1973), which converges from any start for simple roots: fixed-size, no allocation, and the
+// same steps for the same coefficients (no dependence on anything else). `scale` bounds the roots' size.
+void quarticRoots(const double c[5], double scale, Complex z[4]) {
+    for (int j = 0; j < 4; ++j) z[j] = std::polar(scale, 0.4 + j * 1.5707963267948966);
+    // Done when the steps are at rounding, or small and no longer shrinking (close roots, whose rounding
+    // floor lies above the first test).
+    double previous = INFINITY;
+    for (int iteration = 0, quiet = 0; iteration < 200 && quiet < 2; ++iteration) {
+        double largest = 0;
+        for (int j = 0; j < 4; ++j) {
+            const Complex x = z[j];
+            const Complex p = (((c[4] * x + c[3]) * x + c[2]) * x + c[1]) * x + c[0];
+            const Complex dp = ((4 * c[4] * x + 3 * c[3]) * x + 2 * c[2]) * x + c[1];
+            if (p == 0.0) continue;
+            Complex sum = 0;
+            for (int l = 0; l < 4; ++l)
+                if (l != j) sum += 1.0 / (x - z[l]);
+            const Complex ratio = p / dp;
+            const Complex w = ratio / (1.0 - ratio * sum);
+            if (!(std::isfinite(w.real()) && std::isfinite(w.imag()))) continue;
+            z[j] = x - w;
+            largest = std::fmax(largest, std::abs(w));
+        }
+        const bool atFloor =
+            largest <= 1e-14 * scale || (largest <= 1e-9 * scale && largest >= 0.5 * previous);
+        quiet = atFloor ? quiet + 1 : 0;
+        previous = largest;
+    }
+}
+
+// The D field of a propagating wave along unit wave normal kHat (principal frame): the eigenvectors of eps^-1
+// restricted to the plane across kHat, the larger eigenvalue 1 / n^2 (the smaller index) for Fast
+// (Born & Wolf sec. 15.2.2: the index ellipsoid's section). A 2x2 symmetric eigenproblem stays well
+// conditioned where the two indices nearly agree (a weakly birefringent crystal, a wave normal near an optic
+// axis), unlike the null vector of the wave matrix; on an optic axis it still gives an orthogonal pair.
+Vec3 displacement(const Principal& p, const Vec3& kHat, bool slow) {
+    const Vec3 e1 = perpendicularTo(kHat), e2 = cross(kHat, e1);
+    const double u[3] = {1 / p.eps[0], 1 / p.eps[1], 1 / p.eps[2]};
+    auto form = [&](const Vec3& a, const Vec3& b) {
+        return u[0] * a.x * b.x + u[1] * a.y * b.y + u[2] * a.z * b.z;
+    };
+    const double theta = 0.5 * std::atan2(2 * form(e1, e2), form(e1, e1) - form(e2, e2));
+    const double c = std::cos(theta), sn = std::sin(theta);
+    return slow ? e2 * c - e1 * sn : e1 * c + e2 * sn;
+}
+// E = eps^-1 D of that wave (principal frame).
+Vec3 fieldOf(const Principal& p, const Vec3& kHat, bool slow) {
+    const Vec3 d = displacement(p, kHat, slow);
+    return {d.x / p.eps[0], d.y / p.eps[1], d.z / p.eps[2]};
+}
+
+// The biaxial crystal's two waves of tangential kt whose energy leaves the facet along side * N, Fast then
+// Slow, with fields (unnormalised) and for a propagating one its ray's normal component. The quartic
+// det(k k^T - (k.k) I + eps) = 0 for k = kt + q N, with eps and G = tr(eps) eps - eps^2 in the principal
+// frame, is (k.k)(k.eps.k) - k.G.k + det eps = 0 (Fresnel's equation of wave normals multiplied out); its
+// four roots are two on each side: a real root by the sign of its Poynting flux along N, E x (k x E), a
+// complex one (evanescent) by the side it decays on.
+void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s, int side,
+                  Wave<Complex> out[2]) {
+    const Principal pr = principalOf(m);
+    const Vec3 u = toPrincipal(m, kt), n = toPrincipal(m, N);
+    auto form = [&](const double* d, const Vec3& a, const Vec3& b) {
+        return d[0] * a.x * b.x + d[1] * a.y * b.y + d[2] * a.z * b.z;
+    };
+    const double u2 = dot(kt, kt);
+    const double a0 = form(pr.eps, u, u), a1 = form(pr.eps, u, n), a2 = form(pr.eps, n, n);
+    const double g0 = form(pr.g, u, u), g1 = form(pr.g, u, n), g2 = form(pr.g, n, n);
+    const double c[5] = {u2 * a0 - g0 + pr.det, 2 * (u2 * a1 - g1), a0 + u2 * a2 - g2, 2 * a1, a2};
+    Complex q[4];
+    const double scale = m.gamma + std::sqrt(u2);
+    quarticRoots(c, scale, q);
+    for (Complex& r : q)
+        if (std::fabs(r.imag()) <= 1e-9 * scale) r = r.real();
+    // A double root (a wave normal on an optic axis) comes out as two roots about sqrt(rounding) apart on
+    // either side of it: their mean is the root to rounding.
+    for (int j = 0; j < 4; ++j)
+        for (int l = j + 1; l < 4; ++l)
+            if (q[j].imag() == 0 && q[l].imag() == 0 && std::abs(q[j] - q[l]) <= 1e-7 * scale)
+                q[j] = q[l] = 0.5 * (q[j] + q[l]);
+
+    // Each root's wave: a real root's field from the eigenproblem for its wave normal, on the sheet of the
+    // index surface whose index along it is nearer its |k| (a line of fixed kt may cross either sheet twice,
+    // the outer one being dimpled at the optic axes), a complex root's as the null vector of its wave matrix.
+    Wave<Complex> w[4];
+    double score[4];
+    bool slowSheet[4] = {}, nearAxis[4] = {};
+    auto setField = [&](Wave<Complex>& wave, bool slow) {
+        const Vec3 k = realPart(wave.k), kHat = normalize(k);
+        const Vec3 e =
+            normalize(realPart(fromPrincipal(m, lift<Complex>(fieldOf(pr, toPrincipal(m, kHat), slow)))));
+        wave.field = lift<Complex>(e);
+        const Vec3 flux = k - e * dot(e, k);
+        wave.rayNormal = dot(flux, N) / length(flux);
+    };
+    for (int j = 0; j < 4; ++j) {
+        w[j].q = q[j];
+        w[j].k = lift<Complex>(kt) + lift<Complex>(N) * q[j];
+        w[j].propagating = q[j].imag() == 0;
+        if (w[j].propagating) {
+            for (int polish = 0; polish < 3; ++polish) {
+                // Newton's step along N onto the sheet, |k| = n(k / |k|): that function's gradient is the ray
+                // t over t.k/|k|. Its sheets part where two roots of the quartic nearly meet (a weak
+                // birefringence, an axis close by), which the quartic's own rounding does not resolve.
+                const Vec3 k = realPart(w[j].k), kHat = normalize(k);
+                const std::array<double, 2> indices = waveIndices(m, kHat);
+                const double nk = length(k);
+                if (polish == 0) {
+                    slowSheet[j] = std::fabs(nk - indices[1]) < std::fabs(nk - indices[0]);
+                    nearAxis[j] = indices[1] - indices[0] <= 1e-6 * nk;
+                }
+                setField(w[j], slowSheet[j]);
+                if (polish == 2 || !(std::fabs(w[j].rayNormal) > 1e-6)) break;
+                const Vec3 ray = normalize(k - realPart(w[j].field) * dot(realPart(w[j].field), k));
+                const double step = (nk - indices[slowSheet[j] ? 1 : 0]) * dot(ray, kHat) / w[j].rayNormal;
+                w[j].q -= step;
+                w[j].k = lift<Complex>(kt) + lift<Complex>(N) * w[j].q;
+            }
+            q[j] = w[j].q;
+            score[j] = w[j].rayNormal;
+        } else {
+            const CMat3 mat = waveMatrix(pr, toPrincipal(m, w[j].k));
+            bool rank2;
+            CVec3 e = nullVector(mat, rank2), e2;
+            if (!rank2) degeneratePair(mat, toPrincipal(m, lift<Complex>(s)), e, e2);
+            w[j].field = fromPrincipal(m, e);
+            w[j].rayNormal = 0;
+            score[j] = q[j].imag() > 0 ? 2 : -2;
+        }
+    }
+    // The two roots of `side`: the largest scores side * score.
+    int order[4] = {0, 1, 2, 3};
+    std::sort(order, order + 4, [&](int a, int b) { return side * score[a] > side * score[b]; });
+    int fast = order[0], slow = order[1];
+    // Fast first: the smaller k.k (an evanescent wave's q^2 has a negative real part).
+    if ((q[slow] * q[slow]).real() < (q[fast] * q[fast]).real()) std::swap(fast, slow);
+    out[0] = w[fast];
+    out[1] = w[slow];
+    // Two waves next to an optic axis on the same sheet are the degenerate pair: one field each.
+    if (nearAxis[fast] && nearAxis[slow] && slowSheet[fast] == slowSheet[slow]) {
+        setField(out[0], false);
+        setField(out[1], true);
+    }
+    out[0].mode = WaveMode::Fast;
+    out[1].mode = WaveMode::Slow;
+}
+
+template <class T>
+Wave<T> narrowed(const Wave<Complex>& w) {
+    if constexpr (std::is_same_v<T, double>) {
+        return {w.mode, realPart(w.k), realPart(w.field), w.propagating, w.rayNormal, w.q.real()};
+    } else {
+        return w;
+    }
+}
+
+void checkMedia(const BiaxialMedium& m, double nOutside) {
+    if (!(m.alpha > 0 && m.alpha <= m.beta && m.beta <= m.gamma && nOutside > 0))
+        throw Error("birefringence: a biaxial crystal needs 0 < alpha <= beta <= gamma");
+    const bool orthonormal = std::fabs(dot(m.x, m.x) - 1) < 1e-9 && std::fabs(dot(m.y, m.y) - 1) < 1e-9 &&
+                             std::fabs(dot(m.z, m.z) - 1) < 1e-9 && std::fabs(dot(m.x, m.y)) < 1e-9 &&
+                             std::fabs(dot(m.x, m.z)) < 1e-9 && std::fabs(dot(m.y, m.z)) < 1e-9;
+    if (!orthonormal) throw Error("birefringence: a biaxial crystal's principal axes must be orthonormal");
+}
+
+// f(C{}, I{}) as withNumberTypes: double for the crystal's waves (C) or the outside ones (I) where both
+// propagate.
+template <class F>
+InterfaceWaves withTypes(bool crystalReal, bool outsideReal, F f) {
+    if (outsideReal) return crystalReal ? f(double{}, double{}) : f(Complex{}, double{});
+    return crystalReal ? f(double{}, Complex{}) : f(Complex{}, Complex{});
+}
+
+}  // namespace
+
+std::array<Vec3, 2> opticAxes(const BiaxialMedium& m) {
+    const double a2 = m.alpha * m.alpha, b2 = m.beta * m.beta, g2 = m.gamma * m.gamma;
+    // cos^2 Vz = alpha^2 (gamma^2 - beta^2) / (beta^2 (gamma^2 - alpha^2)), the same angle as the tan form.
+    const double c2 = g2 > a2 ? a2 * (g2 - b2) / (b2 * (g2 - a2)) : 1;
+    const double c = std::sqrt(c2), sn = std::sqrt(std::fmax(0.0, 1 - c2));
+    return {m.z * c + m.x * sn, m.z * c - m.x * sn};
+}
+
+std::array<double, 2> waveIndices(const BiaxialMedium& medium, const Vec3& waveNormal) {
+    // Fresnel's equation solved by way of the optic axes (Born & Wolf sec. 15.3.3): with u = 1 / n^2 and
+    // theta_1, theta_2 the angles between the wave normal and the two axes,
+    // u = ((u_x + u_z) + (u_x - u_z) cos(theta_1 -+ theta_2)) / 2. The split, (u_x - u_z) sin theta_1
+    // sin theta_2, is a product rather than the square root of a difference, so it keeps its precision next
+    // to an axis (where the quadratic's discriminant cancels).
+    const std::array<Vec3, 2> axes = opticAxes(medium);
+    const double ux = 1 / (medium.alpha * medium.alpha), uz = 1 / (medium.gamma * medium.gamma);
+    const double c1 = dot(waveNormal, axes[0]), c2 = dot(waveNormal, axes[1]);
+    const double s1 = length(cross(waveNormal, axes[0])), s2 = length(cross(waveNormal, axes[1]));
+    const double mean = 0.5 * (ux + uz), half = 0.5 * (ux - uz);
+    return {1 / std::sqrt(mean + half * (c1 * c2 + s1 * s2)),
+            1 / std::sqrt(mean + half * (c1 * c2 - s1 * s2))};
+}
+
+PlaneWave biaxialWave(const BiaxialMedium& medium, const Vec3& waveNormal, WaveMode mode) {
+    checkMedia(medium, 1);
+    if (mode != WaveMode::Fast && mode != WaveMode::Slow)
+        throw Error("birefringence: a biaxial crystal's waves are Fast and Slow");
+    const bool slow = mode == WaveMode::Slow;
+    const Vec3 k = waveNormal * waveIndices(medium, waveNormal)[slow ? 1 : 0];
+    const Vec3 e = fieldOf(principalOf(medium), toPrincipal(medium, waveNormal), slow);
+    const Wave<double> w{mode, k, realPart(fromPrincipal(medium, lift<Complex>(e))), true, 0, 0};
+    return toPlaneWave(&medium, w);
+}
+
+InterfaceWaves enterCrystal(const BiaxialMedium& crystal, const Vec3& direction, const Vec3& outwardNormal,
+                            double nOutside) {
+    checkMedia(crystal, nOutside);
+    const Vec3 N = -outwardNormal;
+    const double cosI = dot(direction, N);
+    if (!(cosI > 0)) throw Error("birefringence: the light does not travel into the facet");
+    const Vec3 kt = (direction - N * cosI) * nOutside;
+    const Vec3 s = sDirection(kt, N);
+    Wave<Complex> waves[2];
+    biaxialWaves(crystal, kt, N, s, 1, waves);
+    const bool crystalReal = waves[0].propagating && waves[1].propagating;
+    return withTypes(crystalReal, nOutside * nOutside - dot(kt, kt) > 0, [&](auto c, auto i) {
+        using C = decltype(c);
+        using I = decltype(i);
+        const Wave<I> incident[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
+                                     isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
+        const Wave<I> reflected[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, -1),
+                                      isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, -1)};
+        const Wave<C> transmitted[2] = {narrowed<C>(waves[0]), narrowed<C>(waves[1])};
+        InterfaceWaves out;
+        out.incidentCount = 2;
+        for (int j = 0; j < 2; ++j) out.incident[j] = toPlaneWave<BiaxialMedium>(nullptr, incident[j]);
+        matchFields(crystal, false, incident, 2, transmitted, reflected, N, s, nOutside, out);
+        return out;
+    });
+}
+
+InterfaceWaves leaveCrystal(const BiaxialMedium& crystal, const PlaneWave& incident,
+                            const Vec3& outwardNormal, double nOutside) {
+    checkMedia(crystal, nOutside);
+    const Vec3& N = outwardNormal;
+    if (incident.mode != WaveMode::Fast && incident.mode != WaveMode::Slow)
+        throw Error("birefringence: a wave inside a biaxial crystal is Fast or Slow");
+    if (!(dot(incident.ray, N) > 0))
+        throw Error("birefringence: the wave's energy does not travel into the facet");
+    const Vec3 k = incident.waveNormal * incident.index;
+    const Vec3 kt = k - N * dot(k, N);
+    const Vec3 s = sDirection(kt, N);
+    Wave<Complex> waves[2];
+    biaxialWaves(crystal, kt, N, s, -1, waves);
+    const bool crystalReal = waves[0].propagating && waves[1].propagating;
+    const Wave<double> in[1] = {{incident.mode, k, incident.field, true, dot(incident.ray, N), dot(k, N)}};
+    return withTypes(crystalReal, nOutside * nOutside - dot(kt, kt) > 0, [&](auto c, auto i) {
+        using C = decltype(c);
+        using I = decltype(i);
+        const Wave<C> reflected[2] = {narrowed<C>(waves[0]), narrowed<C>(waves[1])};
+        const Wave<I> transmitted[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
+                                        isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
+        InterfaceWaves out;
+        out.incidentCount = 1;
+        out.incident[0] = incident;
+        matchFields(crystal, true, in, 1, reflected, transmitted, N, s, nOutside, out);
+        return out;
+    });
 }
 
 }  // namespace facetlight

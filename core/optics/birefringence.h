@@ -19,6 +19,7 @@
 // any axis, and total internal reflection, and the isotropic limit (n_o == n_e) reduces to Fresnel's s/p
 // amplitudes to rounding. The isotropic side's s and p waves are eliminated in closed form, which leaves a
 // 2x2 complex system for the crystal's two waves. Everything is fixed-size: no heap allocation per call.
+#include <array>
 #include <complex>
 
 #include "geometry/ray.h"
@@ -41,9 +42,27 @@ struct UniaxialMedium {
 // 1 / n^2 = cos^2 theta / n_o^2 + sin^2 theta / n_e^2 (Born & Wolf ch. 15).
 double extraordinaryIndex(const UniaxialMedium& medium, const Vec3& waveNormal);
 
-// Ordinary and extraordinary in a crystal; s (E perpendicular to the plane of incidence) and p (E in it) in
-// the isotropic medium outside.
-enum class WaveMode : unsigned char { S, P, Ordinary, Extraordinary };
+// A biaxial crystal (docs/optics.md, "Biaxial crystals"): principal indices alpha <= beta <= gamma along the
+// orthonormal principal axes x, y, z (the stone's frame), eps = alpha^2 x x^T + beta^2 y y^T + gamma^2 z z^T.
+// alpha == beta or beta == gamma is a uniaxial crystal, and its waves are the uniaxial ones to rounding.
+struct BiaxialMedium {
+    double alpha = 1, beta = 1, gamma = 1;
+    Vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+};
+
+// The two indices along a unit wave normal s, the smaller first: the roots n^2 of Fresnel's equation of wave
+// normals, (s.eps.s) n^4 - s.(tr(eps) eps - eps^2).s n^2 + det eps = 0 (Born & Wolf, Principles of Optics,
+// 7th ed., sec. 15.2.3, eq. 15.2.(24) multiplied out; Yariv & Yeh, Optical Waves in Crystals, sec. 4.3).
+std::array<double, 2> waveIndices(const BiaxialMedium& medium, const Vec3& waveNormal);
+
+// The two optic axes (binormals: wave normals along which both indices are beta), in the x-z plane at Vz
+// from z on either side, tan Vz = (gamma / alpha) sqrt((beta^2 - alpha^2) / (gamma^2 - beta^2)) (Born & Wolf
+// sec. 15.3.3); the +x one first.
+std::array<Vec3, 2> opticAxes(const BiaxialMedium& medium);
+
+// Ordinary and extraordinary in a uniaxial crystal, Fast (the smaller index) and Slow in a biaxial one; s (E
+// perpendicular to the plane of incidence) and p (E in it) in the isotropic medium outside.
+enum class WaveMode : unsigned char { S, P, Ordinary, Extraordinary, Fast, Slow };
 
 // A propagating plane wave. All vectors are unit and real.
 struct PlaneWave {
@@ -59,6 +78,10 @@ struct PlaneWave {
 // E = k x E_o.
 PlaneWave ordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal);
 PlaneWave extraordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal);
+// A biaxial crystal's Fast or Slow eigenmode along a unit wave normal; its E is the null vector of the wave
+// matrix k k^T - |k|^2 I + eps, its ray along k - E (E.k) (the Poynting vector E x (k x E) of a unit E).
+// Along an optic axis, where the two are degenerate, E is one of a fixed but arbitrary orthogonal pair.
+PlaneWave biaxialWave(const BiaxialMedium& medium, const Vec3& waveNormal, WaveMode mode);
 
 // One outgoing wave of an interface. Amplitudes are relative to the incident wave of unit E (per incident
 // basis polarisation: from outside s then p, from inside only [0]); the wave's field is wave.field times the
@@ -85,10 +108,11 @@ struct Coherency {
 };
 
 // The waves of one interface. From outside: incident[0], [1] are the s and p waves, reflected[] the s and p
-// waves outside, transmitted[] the ordinary and extraordinary waves inside. From inside: incident[0] is the
-// crystal wave, reflected[] the ordinary and extraordinary waves inside, transmitted[] the s and p waves
-// outside. s = normalize(k_incident x N) with N the normal along the incident energy flow (a fixed direction
-// perpendicular to N at normal incidence); each outside wave's p field is k / |k| x s.
+// waves outside, transmitted[] the ordinary and extraordinary waves inside (a biaxial crystal's Fast and Slow
+// ones). From inside: incident[0] is the crystal wave, reflected[] the crystal's two waves inside,
+// transmitted[] the s and p waves outside. s = normalize(k_incident x N) with N the normal along the incident
+// energy flow (a fixed direction perpendicular to N at normal incidence); each outside wave's p field is k /
+// |k| x s.
 struct InterfaceWaves {
     int incidentCount = 0;
     PlaneWave incident[2];
@@ -110,6 +134,16 @@ InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction
 // outward normal `outwardNormal` from inside (dot(incident.ray, outwardNormal) > 0, else Error; its wave
 // normal may point either way for an extraordinary wave).
 InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& incident,
+                            const Vec3& outwardNormal, double nOutside = 1);
+
+// The same for a biaxial crystal (docs/optics.md, "Biaxial crystals"). Each crystal wave's normal component q
+// is a root of the quartic det(k k^T - |k|^2 I + eps) = 0 in q (Fresnel's equation of wave normals with
+// k = kt + q N, the Booker quartic of stratified-media optics); of its four roots the two whose energy flows
+// away from the facet on the crystal's side (Im q > 0 that way when evanescent) are the crystal's waves,
+// Fast (the smaller index, or evanescent first) before Slow. Amplitudes and shares as for a uniaxial crystal.
+InterfaceWaves enterCrystal(const BiaxialMedium& crystal, const Vec3& direction, const Vec3& outwardNormal,
+                            double nOutside = 1);
+InterfaceWaves leaveCrystal(const BiaxialMedium& crystal, const PlaneWave& incident,
                             const Vec3& outwardNormal, double nOutside = 1);
 
 // The energy share of `wave` for an incident state of coherency J over the incident basis:

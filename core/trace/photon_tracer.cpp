@@ -60,7 +60,9 @@ DesignFacts designFacts(const Stone& stone, const TraceSettings& settings) {
                                            : "not traced: with polarization off every ray sees n_o";
         break;
     case Optic::Biaxial:
-        facts.doubleRefraction = "not traced: a biaxial stone is traced at beta alone";
+        facts.doubleRefraction =
+            polarized ? "traced: each ray splits into the biaxial crystal's fast and slow waves"
+                      : "not traced: with polarization off every ray sees beta";
         break;
     }
     if (stone.proportions.diameter > 0)  // else there is no girdle width to scale by

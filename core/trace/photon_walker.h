@@ -32,7 +32,8 @@ class PhotonWalker {
         float n = 0;
         uint32_t bounces = 0;
         Polarization pol;  // when the trace is polarised
-        float nE = 0;      // a birefringent stone's extraordinary index (n is the ordinary one)
+        float nE = 0;  // a birefringent stone's extraordinary index (n is the ordinary one); biaxial: gamma
+        float nA = 0;  // a biaxial stone's alpha (n is its beta)
         PlaneWave wave;    // inside a birefringent stone: the ordinary or extraordinary wave it travels as
         bool coherent = false;  // near the optic axis instead: both waves in phase, one state at n_o (pol)
         // Absorption per mesh unit (TraceBase::absorption): the photon's, or its ordinary wave's, and its
@@ -44,6 +45,7 @@ class PhotonWalker {
         void setIndex(const TraceBase& s, float index) {
             n = index;
             nE = index + s.birefringenceD();
+            nA = index + s.alphaOffsetD();
         }
         void setAbsorption(const TraceBase& s, float wavelengthNm) {
             absorption = s.absorption(wavelengthNm);
@@ -83,6 +85,7 @@ class PhotonWalker {
         }
         visit.wavelength(wavelength);
         if (s.birefringent()) ph.nE = s.extraordinaryIndex(wavelength);
+        if (s.biaxial()) ph.nA = s.alphaIndex(wavelength);
         ph.setAbsorption(s, wavelength);
         return enter(s, isect, ray, visit, ph);
     }
@@ -254,10 +257,11 @@ class PhotonWalker {
     }
 
     // A birefringent stone (docs/optics.md, "Birefringent stones"): where a ray along d from outside meets
-    // facet `facet` at p, it reflects or enters as the ordinary or the extraordinary wave, chosen by their
+    // facet `facet` at p, it reflects or enters as the ordinary or the extraordinary wave (a biaxial stone's
+    // Fast or Slow one), chosen by their
     // energy shares for the photon's state (optics/birefringence.h); near the optic axis it goes on as one
-    // polarised state at n_o instead (TraceBase::nearOpticAxis). False after visit.reflectedAtEntry; else d is
-    // the wave's ray (energy) direction and ph.wave the wave.
+    // polarised state at n_o instead (TraceBase::nearOpticAxis). False after visit.reflectedAtEntry; else d
+    // is the wave's ray (energy) direction and ph.wave the wave.
     template <class Visitor>
     static bool enterCrystalWave(const TraceBase& s, const Vec3f& normal, uint32_t facet, const Vec3f& p,
                                  Vec3f& d, Visitor& visit, Photon& ph) {
@@ -265,7 +269,9 @@ class PhotonWalker {
             visit.reflectedAtEntry(facet, p, d);
             return false;
         }
-        const InterfaceWaves w = enterCrystal(s.crystal(ph.n, ph.nE), toVec3(d), toVec3(normal));
+        const InterfaceWaves w =
+            s.biaxial() ? enterCrystal(s.biaxialCrystal(ph.nA, ph.n, ph.nE), toVec3(d), toVec3(normal))
+                        : enterCrystal(s.crystal(ph.n, ph.nE), toVec3(d), toVec3(normal));
         ph.coherent = s.nearOpticAxis(w.transmitted[0].wave.waveNormal);
         if (ph.coherent) return enterPolarized(normal, 1.0f / ph.n, facet, p, d, visit, ph);
         const Coherency j = coherencyOf(ph.pol, d, Vec3f(w.incident[0].field));
@@ -304,7 +310,9 @@ class PhotonWalker {
             visit.lost(ph.bounces);
             return false;
         }
-        const InterfaceWaves w = leaveCrystal(s.crystal(ph.n, ph.nE), ph.wave, normal);
+        const InterfaceWaves w = s.biaxial()
+                                     ? leaveCrystal(s.biaxialCrystal(ph.nA, ph.n, ph.nE), ph.wave, normal)
+                                     : leaveCrystal(s.crystal(ph.n, ph.nE), ph.wave, normal);
         const double out = w.transmitted[0].share[0] + w.transmitted[1].share[0];
         const double ordinary = w.reflected[0].share[0];
         const double u = ph.rng.uniform() * (out + ordinary + w.reflected[1].share[0]);

@@ -22,8 +22,16 @@ TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
         polarizer_ = x * float(std::cos(a)) + y * float(std::sin(a));
     }
     const Material& material = scene.material();
-    birefringent_ = polarized() && material.optic() == Optic::Uniaxial;
-    if (birefringent_) {
+    birefringent_ = polarized() && material.optic() != Optic::Isotropic;
+    biaxial_ = birefringent_ && material.optic() == Optic::Biaxial;
+    if (biaxial_) {
+        opticAxis_ = settings.opticAxis.direction();
+        principalAxes_ = settings.opticAxis.principalAxes();
+        const std::array<double, 3> d = material.principalIndices(Material::kSodiumD);
+        birefringenceD_ = float(d[2] - d[1]);
+        alphaOffsetD_ = float(d[0] - d[1]);
+        coherentSin2_ = -1;  // no cone: 1 - c^2 is never below it
+    } else if (birefringent_) {
         opticAxis_ = settings.opticAxis.direction();
         const std::array<double, 3> d = material.principalIndices(Material::kSodiumD);
         birefringenceD_ = float(d[2] - d[0]);
@@ -51,6 +59,11 @@ TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
 
 float TraceBase::extraordinaryIndex(double wavelengthNm) const {
     return float(scene_.material().principalIndices(scene_.dispersive() ? wavelengthNm : Material::kSodiumD)[2]);
+}
+
+float TraceBase::alphaIndex(double wavelengthNm) const {
+    return float(
+        scene_.material().principalIndices(scene_.dispersive() ? wavelengthNm : Material::kSodiumD)[0]);
 }
 
 float TraceBase::absorption(float wavelengthNm) const {

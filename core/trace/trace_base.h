@@ -41,17 +41,27 @@ class TraceBase {
                           : Polarization{Stokes{}, frameAcross(d, Vec3f(1, 0, 0))};
     }
 
-    // Whether photons split into ordinary and extraordinary waves: a uniaxial material traced with
-    // polarisation on (docs/optics.md, "Birefringent stones"). The crystal at indices n_o, n_e with the job's
-    // optic axis; n_e at a wavelength; and n_e - n_o at 589.3 nm, which the fire trace's bands and the view
-    // rays add to their n_o (the birefringence's own dispersion left out there).
+    // Whether photons split into two waves: a uniaxial or biaxial material traced with polarisation on
+    // (docs/optics.md, "Birefringent stones", "Biaxial crystals"). The crystal at indices n_o, n_e with the
+    // job's optic axis; n_e (a biaxial stone's gamma) at a wavelength; and n_e - n_o (gamma - beta) at
+    // 589.3 nm, which the fire trace's bands and the view rays add to their n_o (beta) (the birefringence's
+    // own dispersion left out there). A biaxial stone's photon carries n = beta, nE = gamma and
+    // nA = alpha (alpha - beta at 589.3 nm added to the bands' beta).
     bool birefringent() const { return birefringent_; }
+    bool biaxial() const { return biaxial_; }
     UniaxialMedium crystal(float nO, float nE) const { return {nO, nE, opticAxis_}; }
+    BiaxialMedium biaxialCrystal(float alpha, float beta, float gamma) const {
+        return {alpha, beta, gamma, principalAxes_[0], principalAxes_[1], principalAxes_[2]};
+    }
     float extraordinaryIndex(double wavelengthNm) const;
+    float alphaIndex(double wavelengthNm) const;
     float birefringenceD() const { return birefringenceD_; }
+    float alphaOffsetD() const { return alphaOffsetD_; }
     // Whether a wave normal k is so near the optic axis that the ordinary and extraordinary waves stay within
-    // half a wave of each other over the stone's size, (n_e(theta) - n_o) L < lambda / 2 at 550 nm: there light
-    // keeps its polarisation as in an isotropic stone at n_o (docs/optics.md, "Birefringent stones").
+    // half a wave of each other over the stone's size, (n_e(theta) - n_o) L < lambda / 2 at 550 nm: there
+    // light keeps its polarisation as in an isotropic stone at n_o (docs/optics.md, "Birefringent stones").
+    // Never for a biaxial stone, whose indices part linearly off its axes (docs/optics.md, "Biaxial
+    // crystals").
     bool nearOpticAxis(const Vec3& k) const {
         const double c = dot(k, opticAxis_);
         return birefringent_ && 1 - c * c < coherentSin2_;
@@ -81,7 +91,10 @@ class TraceBase {
     std::vector<FixedEntry> fixedEntry_;
     std::optional<Vec3f> polarizer_;  // the light's polariser axis, stone frame
     bool birefringent_ = false;
+    bool biaxial_ = false;
     Vec3 opticAxis_;
+    std::array<Vec3, 3> principalAxes_;
+    float alphaOffsetD_ = 0;
     bool absorbs_ = false;
     bool mixedAbsorption_ = false;  // unpolarised through a uniaxial stone
     double mmPerUnit_ = 1;

@@ -107,6 +107,13 @@ const Schema<TraceSettings>& traceSettingsSchema() {
                 const std::string field = fieldPath(path, "absorption.x_per_mm");
                 throw Error(field, field + " needs a biaxial material (got " + chosenMaterialName(s) + ")");
             }
+            if (s.opticAxis.rotationDeg != 0 && chosenOptic(s) != Optic::Biaxial) {
+                const std::string field = fieldPath(path, "optic_axis.rotation_deg");
+                throw Error(field, field +
+                                       " turns a biaxial stone's axes about its gamma axis: it needs a "
+                                       "biaxial material (got " +
+                                       chosenMaterialName(s) + ")");
+            }
             if (s.light.polarizerDeg && s.polarization == PolarizationMode::Off) {
                 const std::string field = fieldPath(path, "light.polarizer_deg");
                 throw Error(field, field +

@@ -89,24 +89,27 @@ Doubling doubling(const Stone& stone, const TraceSettings& settings, const Doubl
     s.fire.enabled = false;
     const Scene scene(stone, s);
     const TraceBase trace(scene, s);
-    const Material& material = scene.material();
 
     Doubling out;
     out.doublyRefracting = trace.birefringent();
     out.nO = scene.fixedIndex();
     out.nE = out.doublyRefracting ? trace.extraordinaryIndex(Material::kSodiumD) : out.nO;
+    if (trace.biaxial()) out.nA = trace.alphaIndex(Material::kSodiumD);
     out.sizeMm = s.sizeMm;
     out.diameterMm = s.sizeMm;  // the mesh is scaled so that its girdle diameter is size_mm
     out.loupe = d.loupe;
     out.tiltDeg = d.tiltDeg;
-    if (out.doublyRefracting) {
+    if (trace.biaxial()) {
+        out.tracedAs =
+            "doubly refracting (biaxial): each view ray splits at the crown into its fast and slow "
+            "waves (alpha " +
+            formatNumber("%.4f", out.nA) + ", beta " + formatNumber("%.4f", out.nO) + ", gamma " +
+            formatNumber("%.4f", out.nE) + ")";
+    } else if (out.doublyRefracting) {
         out.tracedAs =
             "doubly refracting (uniaxial): each view ray splits at the crown into its ordinary wave (n_o " +
             formatNumber("%.4f", out.nO) + ") and its extraordinary wave (n_e " +
             formatNumber("%.4f", out.nE) + ")";
-    } else if (material.optic() == Optic::Biaxial) {
-        out.tracedAs = "biaxial, traced at beta (" + formatNumber("%.4f", out.nO) +
-                       ") as one image: no biaxial interface yet";
     } else {
         out.tracedAs = "singly refracting (n " + formatNumber("%.4f", out.nO) + "): one image";
     }
@@ -114,8 +117,14 @@ Doubling doubling(const Stone& stone, const TraceSettings& settings, const Doubl
     // The view in the stone's frame: along -z of the world, the image plane's axes the world's x and y.
     const Vec3 view = scene.toStone({0, 0, -1}), u = scene.toStone({1, 0, 0}), v = scene.toStone({0, 1, 0});
     const Vec3 axis = s.opticAxis.direction();
-    if (out.doublyRefracting)
+    const BiaxialMedium biaxial = trace.biaxialCrystal(float(out.nA), float(out.nO), float(out.nE));
+    if (trace.biaxial()) {  // the nearer of its two optic axes
+        const std::array<Vec3, 2> axes = opticAxes(biaxial);
+        const double c = std::max(std::abs(dot(view, axes[0])), std::abs(dot(view, axes[1])));
+        out.viewToAxisDeg = degrees(std::acos(std::min(1.0, c)));
+    } else if (out.doublyRefracting) {
         out.viewToAxisDeg = degrees(std::acos(std::min(1.0, std::abs(dot(view, axis)))));
+    }
     const Vec3 centre = scene.center();
     double half = 0;
     for (const Vec3& p : stone.vertices)
@@ -147,7 +156,11 @@ Doubling doubling(const Stone& stone, const TraceSettings& settings, const Doubl
                 if (!(dot(view, entry.normal) < 0)) continue;
                 const Vec3 p = onPlane(entry, origin, view);
                 Vec3 o = refractInto(view, entry.normal, 1 / out.nO), e = o;
-                if (out.doublyRefracting) {
+                if (trace.biaxial()) {
+                    const InterfaceWaves w = enterCrystal(biaxial, view, entry.normal);
+                    o = w.transmitted[0].wave.ray;
+                    e = w.transmitted[1].wave.ray;
+                } else if (out.doublyRefracting) {
                     const InterfaceWaves w = enterCrystal(crystal, view, entry.normal);
                     o = w.transmitted[0].wave.ray;
                     // Near the optic axis the two waves keep in step: one image, as the tracer has it.
@@ -189,16 +202,18 @@ nlohmann::json toJson(const Doubling& d) {
                               {"median_share_of_diameter", d.shareOfDiameter(s.medianMm)},
                               {"median_arcmin", d.arcMinutes(s.medianMm)}};
     };
-    return {{"doubly_refracting", d.doublyRefracting},
-            {"traced_as", d.tracedAs},
-            {"n_o", d.nO},
-            {"n_e", d.nE},
-            {"view_to_axis_deg", d.viewToAxisDeg},
-            {"tilt_deg", d.tiltDeg},
-            {"size_mm", d.sizeMm},
-            {"loupe", d.loupe},
-            {"table", spreadJson(d.table)},
-            {"crown", spreadJson(d.crown)}};
+    nlohmann::json j = {{"doubly_refracting", d.doublyRefracting},
+                        {"traced_as", d.tracedAs},
+                        {"n_o", d.nO},
+                        {"n_e", d.nE},
+                        {"view_to_axis_deg", d.viewToAxisDeg},
+                        {"tilt_deg", d.tiltDeg},
+                        {"size_mm", d.sizeMm},
+                        {"loupe", d.loupe},
+                        {"table", spreadJson(d.table)},
+                        {"crown", spreadJson(d.crown)}};
+    if (d.nA > 0) j["alpha"] = d.nA;  // a biaxial stone's (n_o and n_e are then beta and gamma)
+    return j;
 }
 
 }  // namespace facetlight

@@ -33,10 +33,11 @@ struct DoublingSpread {
 };
 
 struct Doubling {
-    bool doublyRefracting = false;  // traced as two waves (a uniaxial material); else one image
+    bool doublyRefracting = false;  // traced as two waves (a uniaxial or biaxial material); else one image
     std::string tracedAs;           // how, in words
-    double nO = 0, nE = 0;          // at 589.3 nm; nE == nO for one image
-    double viewToAxisDeg = 0;       // the angle between the line of sight and the optic axis
+    double nO = 0, nE = 0;          // at 589.3 nm; nE == nO for one image; a biaxial stone's beta and gamma
+    double nA = 0;                  // a biaxial stone's alpha at 589.3 nm; else 0
+    double viewToAxisDeg = 0;       // the angle between the line of sight and the (nearer) optic axis
     double sizeMm = 0, diameterMm = 0, loupe = 10, tiltDeg = 0;
     DoublingSpread table;  // seen through the table
     DoublingSpread crown;  // seen through any crown facet, the table included
@@ -58,9 +59,9 @@ struct Doubling {
 // `settings` gives the stone's material, optic axis and size; the view is orthographic (a loupe focused on
 // the stone from afar) along -z of the stone tilted by `d.tiltDeg`, each pixel's ray through its centre: no
 // random draws, the same numbers at any thread count. The waves come from the interface optics of the
-// tracer (optics/birefringence.h) at 589.3 nm; within TraceBase::nearOpticAxis of the axis they coincide. An
-// isotropic material, or a biaxial one (traced at beta), gives one image and zero doubling. Adds each pixel
-// to control->done() (the caller starts the phase).
+// tracer (optics/birefringence.h) at 589.3 nm; within TraceBase::nearOpticAxis of a uniaxial stone's axis
+// they coincide; a biaxial stone splits into its fast and slow waves. An isotropic material gives one image
+// and zero doubling. Adds each pixel to control->done() (the caller starts the phase).
 Doubling doubling(const Stone& stone, const TraceSettings& settings, const DoublingSettings& d,
                   RunControl* control = nullptr);
 

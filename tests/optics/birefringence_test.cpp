@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -364,6 +366,247 @@ TEST(Birefringence, RefusesLightThatDoesNotMeetTheFacet) {
     EXPECT_THROW(enterCrystal(UniaxialMedium{0, 1.5, {0, 0, 1}}, {0, 0, -1}, {0, 0, 1}), Error);
     EXPECT_THROW(enterCrystal(UniaxialMedium{1.5, 1.6, {0, 0, 2}}, {0, 0, -1}, {0, 0, 1}), Error);
     EXPECT_THROW(leaveCrystal(quartz, ordinaryWave(quartz, {0, 0, 1}), {0, 0, 1}, NAN), Error);
+}
+
+// Any unit vector across unit n.
+Vec3 perpendicularTo(const Vec3& n) {
+    return normalize(std::fabs(n.x) < 0.6 ? cross(n, Vec3{1, 0, 0}) : cross(n, Vec3{0, 1, 0}));
+}
+Vec3 toVec3Principal(const BiaxialMedium& b, const Vec3& v) {
+    return {dot(b.x, v), dot(b.y, v), dot(b.z, v)};
+}
+
+// ---- Biaxial crystals ----
+
+// Principal axes from a random rotation (the columns of a random orthonormal frame).
+BiaxialMedium randomBiaxial(std::mt19937_64& rng, double alpha, double beta, double gamma) {
+    const Vec3 z = randomUnit(rng), x = normalize(cross(z, randomUnit(rng)));
+    return {alpha, beta, gamma, x, cross(z, x), z};
+}
+// A uniaxial crystal as a biaxial one: alpha == beta (positive, the axis along z) or beta == gamma
+// (negative, along x).
+BiaxialMedium asBiaxial(const UniaxialMedium& u) {
+    const Vec3 a = u.axis, b = normalize(cross(a, perpendicularTo(a))), c = cross(a, b);
+    if (u.nE > u.nO) return {u.nO, u.nO, u.nE, b, c, a};
+    return {u.nE, u.nO, u.nO, a, b, c};
+}
+PlaneWave withMode(PlaneWave w, WaveMode mode) {
+    w.mode = mode;
+    return w;
+}
+
+// An outgoing wave's field per incident basis wave, amplitude times unit field: free of the field's sign.
+void expectSameWave(const OutgoingWave& a, const OutgoingWave& b, int count, double tol, int trial) {
+    ASSERT_EQ(a.propagating, b.propagating) << trial;
+    for (int i = 0; i < count; ++i) EXPECT_NEAR(a.share[i], b.share[i], tol) << trial;
+    if (!a.propagating) return;
+    EXPECT_NEAR(length(a.wave.ray - b.wave.ray), 0, tol) << trial;
+    EXPECT_NEAR(length(a.wave.waveNormal - b.wave.waveNormal), 0, tol) << trial;
+    EXPECT_NEAR(a.wave.index, b.wave.index, tol) << trial;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 d = a.wave.field * a.amplitude[i].real() - b.wave.field * b.amplitude[i].real();
+        const Vec3 e = a.wave.field * a.amplitude[i].imag() - b.wave.field * b.amplitude[i].imag();
+        EXPECT_NEAR(length(d) + length(e), 0, tol) << trial;
+    }
+}
+
+// alpha == beta or beta == gamma is a uniaxial crystal: the general solver gives the uniaxial one's waves,
+// amplitudes, directions and shares to rounding, both ways through the facet, total reflection included.
+TEST(BiaxialCrystal, UniaxialLimitMatchesTheUniaxialSolver) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> index(1.4, 2.7);
+    int totalInternal = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const UniaxialMedium u{index(rng), index(rng), randomUnit(rng)};
+        const BiaxialMedium b = asBiaxial(u);
+        const bool positive = u.nE > u.nO;
+        const int o = positive ? 0 : 1,
+                  e = 1 - o;  // the biaxial slots of the ordinary and extraordinary waves
+        Vec3 normal = randomUnit(rng);
+        const Vec3 d = randomUnit(rng);
+        if (dot(d, normal) > 0) normal = -normal;
+        if (dot(d, normal) > -1e-3) continue;
+        const InterfaceWaves wu = enterCrystal(u, d, normal), wb = enterCrystal(b, d, normal);
+        for (int r = 0; r < 2; ++r) expectSameWave(wb.reflected[r], wu.reflected[r], 2, 1e-9, trial);
+        expectSameWave(wb.transmitted[o], wu.transmitted[0], 2, 1e-9, trial);
+        expectSameWave(wb.transmitted[e], wu.transmitted[1], 2, 1e-9, trial);
+        EXPECT_EQ(wb.transmitted[0].wave.mode, WaveMode::Fast);
+
+        // From inside: the wave the facet let in, back to a facet of another normal.
+        const int which = trial % 2;
+        const PlaneWave inU = wu.transmitted[which].wave;
+        Vec3 out = randomUnit(rng);
+        if (dot(inU.ray, out) < 0) out = -out;
+        if (dot(inU.ray, out) < 1e-3) continue;
+        const PlaneWave inB = withMode(inU, (which == 0) == positive ? WaveMode::Fast : WaveMode::Slow);
+        const InterfaceWaves lu = leaveCrystal(u, inU, out), lb = leaveCrystal(b, inB, out);
+        totalInternal += lu.totalInternalReflection();
+        EXPECT_EQ(lb.totalInternalReflection(), lu.totalInternalReflection()) << trial;
+        for (int t = 0; t < 2; ++t) expectSameWave(lb.transmitted[t], lu.transmitted[t], 1, 1e-9, trial);
+        expectSameWave(lb.reflected[o], lu.reflected[0], 1, 1e-9, trial);
+        expectSameWave(lb.reflected[e], lu.reflected[1], 1, 1e-9, trial);
+    }
+    EXPECT_GT(totalInternal, 100);
+}
+
+// Snell's law for each wave: the tangential part of k is the incident light's, and each crystal wave's index
+// is Fresnel's for its own wave normal (the Fast one the smaller).
+TEST(BiaxialCrystal, EveryWaveKeepsTheTangentialWaveVector) {
+    std::mt19937_64 rng(12);
+    int checked = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const BiaxialMedium b = randomBiaxial(rng, 1.5, 1.7, 2.0);
+        Vec3 normal = randomUnit(rng);
+        const Vec3 d = randomUnit(rng);
+        if (dot(d, normal) > 0) normal = -normal;
+        if (dot(d, normal) > -1e-3) continue;
+        const Vec3 kt = d - normal * dot(d, normal);
+        const InterfaceWaves w = enterCrystal(b, d, normal);
+        for (int j = 0; j < 2; ++j) {
+            const PlaneWave& p = w.transmitted[j].wave;
+            const Vec3 k = p.waveNormal * p.index;
+            EXPECT_NEAR(length(k - normal * dot(k, normal) - kt), 0, 1e-12) << trial;
+            EXPECT_NEAR(p.index, waveIndices(b, p.waveNormal)[j], 1e-12) << trial;
+            EXPECT_GT(dot(p.ray, normal), 0 - 1.0) << trial;
+            EXPECT_LT(dot(p.ray, normal), 0) << trial;  // energy into the crystal
+            // D = eps E is across k (Maxwell's div D = 0).
+            const Vec3 e = toVec3Principal(b, p.field), kp = toVec3Principal(b, k);
+            EXPECT_NEAR(b.alpha * b.alpha * e.x * kp.x + b.beta * b.beta * e.y * kp.y +
+                            b.gamma * b.gamma * e.z * kp.z,
+                        0, 1e-12)
+                << trial;
+        }
+        // Out again: the wave that came in, at its own facet, leaves along the incident direction.
+        const PlaneWave& in = w.transmitted[trial % 2].wave;
+        const InterfaceWaves back = leaveCrystal(b, in, -normal);
+        if (back.transmitted[0].propagating) {
+            EXPECT_NEAR(length(back.transmitted[0].wave.ray - d), 0, 1e-12) << trial;
+            ++checked;
+        }
+        for (int j = 0; j < 2; ++j) {
+            if (!back.reflected[j].propagating) continue;
+            const PlaneWave& p = back.reflected[j].wave;
+            const Vec3 k = p.waveNormal * p.index;
+            EXPECT_NEAR(length(k - normal * dot(k, normal) - kt), 0, 1e-12) << trial;
+            EXPECT_NEAR(p.index, waveIndices(b, p.waveNormal)[j], 1e-12) << trial;
+        }
+    }
+    EXPECT_GT(checked, 1000);
+}
+
+// The shares of the four outgoing waves sum to 1 at random incidences and orientations, from outside (s and
+// p) and from inside (either wave), total internal reflection included.
+TEST(BiaxialCrystal, EnergyIsConservedOverTheSplit) {
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> index(1.3, 2.8);
+    int inside = 0, totalInternal = 0, partial = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        double n[3] = {index(rng), index(rng), index(rng)};
+        std::sort(n, n + 3);
+        const BiaxialMedium b = randomBiaxial(rng, n[0], n[1], n[2]);
+        Vec3 normal = randomUnit(rng);
+        const Vec3 d = randomUnit(rng);
+        if (dot(d, normal) > 0) normal = -normal;
+        if (dot(d, normal) > -1e-4) continue;
+        const InterfaceWaves w = enterCrystal(b, d, normal);
+        EXPECT_NEAR(totalShare(w, 0), 1, 1e-10) << trial;
+        EXPECT_NEAR(totalShare(w, 1), 1, 1e-10) << trial;
+
+        const PlaneWave in = biaxialWave(b, randomUnit(rng), trial % 2 ? WaveMode::Fast : WaveMode::Slow);
+        Vec3 out = randomUnit(rng);
+        if (dot(in.ray, out) < 0) out = -out;
+        if (dot(in.ray, out) < 1e-3) continue;
+        const InterfaceWaves l = leaveCrystal(b, in, out);
+        ++inside;
+        // The quartic's roots of a wave and its reflected twin near grazing part by about the ray's normal
+        // component, so their precision falls as it does (1e-6 within 1e-4 of grazing, docs/optics.md).
+        EXPECT_NEAR(totalShare(l, 0), 1, 1e-9) << trial;
+        if (l.totalInternalReflection()) ++totalInternal;
+        if (!l.reflected[0].propagating || !l.reflected[1].propagating) ++partial;
+    }
+    EXPECT_GT(totalInternal, inside / 5);
+    EXPECT_LT(totalInternal, inside);
+    EXPECT_GT(partial, 0);
+}
+
+// The two indices along a wave normal solve Fresnel's equation of wave normals in Born & Wolf's form,
+// sum_k s_k^2 / (v^2 - v_k^2) = 0 with v = 1 / n (eq. 15.2.(24)), written without its poles:
+// sum_k s_k^2 prod_(j != k) (v^2 - v_j^2) = 0; and each wave's field is the wave matrix's null vector.
+TEST(BiaxialCrystal, WaveIndicesSolveFresnelsEquation) {
+    std::mt19937_64 rng(14);
+    const BiaxialMedium peridot{1.635, 1.651, 1.670, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int trial = 0; trial < 500; ++trial) {
+        const Vec3 s = randomUnit(rng);
+        const std::array<double, 2> n = waveIndices(peridot, s);
+        EXPECT_LE(n[0], n[1]);
+        EXPECT_GE(n[0], peridot.alpha - 1e-12);
+        EXPECT_LE(n[1], peridot.gamma + 1e-12);
+        const double vk[3] = {1 / (peridot.alpha * peridot.alpha), 1 / (peridot.beta * peridot.beta),
+                              1 / (peridot.gamma * peridot.gamma)};
+        const double sk[3] = {s.x * s.x, s.y * s.y, s.z * s.z};
+        for (int j = 0; j < 2; ++j) {
+            const double v = 1 / (n[j] * n[j]);
+            const double f = sk[0] * (v - vk[1]) * (v - vk[2]) + sk[1] * (v - vk[0]) * (v - vk[2]) +
+                             sk[2] * (v - vk[0]) * (v - vk[1]);
+            EXPECT_NEAR(f, 0, 1e-15) << trial;
+            const PlaneWave w = biaxialWave(peridot, s, j ? WaveMode::Slow : WaveMode::Fast);
+            EXPECT_DOUBLE_EQ(w.index, n[j]);
+            // k x (k x E) + eps E = 0.
+            const Vec3 k = s * n[j], e = w.field;
+            const Vec3 epsE{e.x * peridot.alpha * peridot.alpha, e.y * peridot.beta * peridot.beta,
+                            e.z * peridot.gamma * peridot.gamma};
+            EXPECT_NEAR(length(cross(k, cross(k, e)) + epsE), 0, 1e-12) << trial;
+        }
+    }
+    // Along the principal axes the indices are the other two principal ones.
+    const std::array<double, 2> alongZ = waveIndices(peridot, {0, 0, 1});
+    EXPECT_NEAR(alongZ[0], peridot.alpha, 1e-15);
+    EXPECT_NEAR(alongZ[1], peridot.beta, 1e-15);
+}
+
+// Along either optic axis (binormal), at Vz from z in the x-z plane with
+// tan Vz = (gamma / alpha) sqrt((beta^2 - alpha^2) / (gamma^2 - beta^2)), both indices are beta; a degree off
+// they part. Peridot (Fo100): 2Vz = 86.0 deg (docs/optics.md, "Doubly refracting materials").
+TEST(BiaxialCrystal, BothIndicesAreBetaAlongTheOpticAxes) {
+    std::mt19937_64 rng(15);
+    const double a = 1.635, b = 1.651, g = 1.670;
+    const BiaxialMedium peridot = randomBiaxial(rng, a, b, g);
+    const double vz = std::atan(g / a * std::sqrt((b * b - a * a) / (g * g - b * b)));
+    EXPECT_NEAR(2 * vz / kDeg, 86.0, 0.05);
+    const std::array<Vec3, 2> axes = opticAxes(peridot);
+    for (const Vec3& axis : axes) {
+        EXPECT_NEAR(std::acos(dot(axis, peridot.z)), vz, 1e-9);
+        EXPECT_NEAR(dot(axis, peridot.y), 0, 1e-12);
+        const std::array<double, 2> n = waveIndices(peridot, axis);
+        EXPECT_NEAR(n[0], b, 1e-9);
+        EXPECT_NEAR(n[1], b, 1e-9);
+        const Vec3 off = normalize(axis + peridot.y * std::tan(kDeg));
+        const std::array<double, 2> m = waveIndices(peridot, off);
+        EXPECT_GT(m[1] - m[0], 1e-4);
+        // The degenerate waves along the axis still have orthogonal D = eps E.
+        auto displacement = [&](WaveMode mode) {
+            const Vec3 e = toVec3Principal(peridot, biaxialWave(peridot, axis, mode).field);
+            return Vec3{a * a * e.x, b * b * e.y, g * g * e.z};
+        };
+        EXPECT_NEAR(dot(displacement(WaveMode::Fast), displacement(WaveMode::Slow)), 0, 1e-12);
+    }
+    EXPECT_GT(dot(axes[0], peridot.x), 0);
+    // Light entering a plate cut across an optic axis at normal incidence: both waves at beta, energy kept.
+    const InterfaceWaves w = enterCrystal(peridot, -axes[0], axes[0]);
+    EXPECT_NEAR(w.transmitted[0].wave.index, b, 1e-7);
+    EXPECT_NEAR(w.transmitted[1].wave.index, b, 1e-7);
+    EXPECT_NEAR(totalShare(w, 0), 1, 1e-9);
+    EXPECT_NEAR(totalShare(w, 1), 1, 1e-9);
+}
+
+TEST(BiaxialCrystal, RefusesBadMedia) {
+    const BiaxialMedium unordered{1.7, 1.6, 1.8, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    EXPECT_THROW(enterCrystal(unordered, {0, 0, -1}, {0, 0, 1}), Error);
+    const BiaxialMedium skew{1.6, 1.7, 1.8, {1, 0, 0}, {0.6, 0.8, 0}, {0, 0, 1}};
+    EXPECT_THROW(enterCrystal(skew, {0, 0, -1}, {0, 0, 1}), Error);
+    const BiaxialMedium ok{1.6, 1.7, 1.8, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    EXPECT_THROW(leaveCrystal(ok, ordinaryWave(UniaxialMedium{1.6, 1.7, {0, 0, 1}}, {0, 0, 1}), {0, 0, 1}),
+                 Error);
 }
 
 }  // namespace

@@ -129,6 +129,12 @@ TEST(JobCost, PolarisedAndDoublyRefractingTracesCostTheirMeasuredFactors) {
     s.trace.material = "auto";
     s.trace.customMaterial = readMaterialDefinition({{"n_o", 1.644}, {"n_e", 1.624}}, "custom_material");
     EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / polarised, 12, 1e-9);
+    // A biaxial stone splits too, solving a quartic at each facet.
+    s.trace.customMaterial.reset();
+    s.trace.material = "topaz";
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / polarised, 130, 1e-9);
+    s.trace.polarization = PolarizationMode::Off;  // beta alone
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / polarised, 1, 1e-9);
 }
 
 TEST(JobCost, APolariscopeCostsItsPositionsPolarised) {

@@ -304,6 +304,58 @@ TEST(BirefringentTrace, SapphireBrilliantIsTheSameAtAnyThreadCountAndConservesPh
               std::string::npos);
 }
 
+// A biaxial stone splits every ray into its fast and slow waves (optics/birefringence.h): the same bits at
+// any thread count with dispersion and the fire trace, every photon accounted for.
+TEST(BiaxialTrace, TopazBrilliantIsTheSameAtAnyThreadCountAndConservesPhotons) {
+    TraceSettings settings = polarized(2 * kPhotonBlock + 99);
+    settings.material = "topaz";  // clear: peridot absorbs by its spectrum
+    settings.dispersion = true;
+    settings.opticAxis = {30, 45, 20};
+    settings.light.model = LightModelKind::Hemisphere;
+    settings.fire.enabled = true;
+    const json first = sameAtAnyThreadCount(settings);
+    EXPECT_GT(first["totals"]["crown_return"].get<double>(), 0.2);
+    EXPECT_EQ(first["settings"]["optic_axis"]["rotation_deg"], 20);
+    EXPECT_NE(designFacts(test::roundBrilliant(), settings).doubleRefraction.find("fast and slow"),
+              std::string::npos);
+    // Turning X and Y about Z changes the trace; with polarisation off it sees beta alone, as before.
+    TraceSettings turned = settings;
+    turned.opticAxis.rotationDeg = 110;
+    turned.threads = 1;
+    settings.threads = 1;
+    EXPECT_FALSE(test::traceStone(test::roundBrilliant(), turned).stats ==
+                 test::traceStone(test::roundBrilliant(), settings).stats);
+    settings.polarization = PolarizationMode::Off;
+    EXPECT_NE(designFacts(test::roundBrilliant(), settings).doubleRefraction.find("sees beta"),
+              std::string::npos);
+}
+
+TEST(BiaxialTrace, AxisRotationNeedsABiaxialMaterial) {
+    TraceSettings settings;
+    settings.material = "sapphire";
+    json j = toJson(settings);
+    j["optic_axis"]["rotation_deg"] = 30;
+    try {
+        TraceSettings::fromJson(j);
+        ADD_FAILURE() << "a uniaxial stone took a rotation";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("optic_axis.rotation_deg"), std::string::npos) << e.what();
+    }
+    j["material"] = "topaz";
+    EXPECT_EQ(TraceSettings::fromJson(j).opticAxis.rotationDeg, 30);
+    j["optic_axis"]["rotation_deg"] = 360;
+    EXPECT_THROW(TraceSettings::fromJson(j), Error);
+    // The principal axes: a right-handed orthonormal frame, Z the tilted axis, X at the rotation from x.
+    OpticAxisSettings a{0, 70, 30};
+    std::array<Vec3, 3> x = a.principalAxes();
+    EXPECT_NEAR(x[0].x, std::cos(radians(30)), 1e-12);
+    EXPECT_NEAR(x[0].y, std::sin(radians(30)), 1e-12);
+    a = {40, 110, 25};
+    x = a.principalAxes();
+    EXPECT_NEAR(length(cross(x[0], x[1]) - x[2]), 0, 1e-12);
+    EXPECT_NEAR(length(x[2] - a.direction()), 0, 1e-12);
+}
+
 TEST(BirefringentTrace, ViewerFiguresOfADoublyRefractingStone) {
     // The viewer's rays and the spot lamps' photons carry one index each: n_e follows from it (setIndex).
     TraceSettings settings = polarized(1000);
