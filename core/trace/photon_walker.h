@@ -39,6 +39,7 @@ class PhotonWalker {
         // Absorption per mesh unit (TraceBase::absorption): the photon's, or its ordinary wave's, and its
         // extraordinary wave's in a birefringent trace; and the optical depth it has left, drawn at entry.
         float absorption = 0, absorptionE = 0, depth = 0;
+        float absorptionRay[3] = {};  // a trichroic trace's X, Y and Z rays' (TraceBase::rayAbsorption)
 
         // Index n (n_o in a birefringent stone) for a ray that carries one index: n_e is n plus the
         // birefringence at 589.3 nm, its own dispersion left out (docs/optics.md, "Birefringent stones").
@@ -50,6 +51,9 @@ class PhotonWalker {
         void setAbsorption(const TraceBase& s, float wavelengthNm) {
             absorption = s.absorption(wavelengthNm);
             absorptionE = s.birefringent() ? s.extraordinaryAbsorption(wavelengthNm) : 0.0f;
+            if (s.trichroic())
+                for (int axis = 0; axis < 3; ++axis)
+                    absorptionRay[axis] = s.rayAbsorption(axis, wavelengthNm);
         }
     };
 
@@ -192,8 +196,17 @@ class PhotonWalker {
     // alpha_o for the ordinary wave (and near the axis, where both are ordinary-like), and for the
     // extraordinary wave alpha_o cos^2 theta + alpha_e sin^2 theta, theta between its wave normal and the
     // axis (docs/optics.md, "Absorption"; the walk-off between wave normal and ray, cos rho > 0.9999 for gem
-    // birefringences, is left out).
+    // birefringences, is left out). In a trichroic stone a wave of unit field e absorbs
+    // alpha_X e_X^2 + alpha_Y e_Y^2 + alpha_Z e_Z^2 (a biaxial stone has no coherent zone).
     static float segmentAbsorption(const TraceBase& s, const Photon& ph) {
+        if (s.trichroic()) {
+            double alpha = 0;
+            for (int axis = 0; axis < 3; ++axis) {
+                const double c = dot(ph.wave.field, s.principalAxes()[size_t(axis)]);
+                alpha += ph.absorptionRay[axis] * c * c;
+            }
+            return float(alpha);
+        }
         if (!s.birefringent() || ph.coherent || ph.wave.mode != WaveMode::Extraordinary) return ph.absorption;
         const double c = dot(ph.wave.waveNormal, s.opticAxis());
         return float(extraordinaryAbsorption(ph.absorption, ph.absorptionE, c * c));

@@ -42,6 +42,7 @@ TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
     if (const std::optional<AbsorptionSpectrum>& a = material.absorption()) {
         absorbs_ = a->absorbs();
         mixedAbsorption_ = !birefringent_ && material.optic() == Optic::Uniaxial;
+        trichroic_ = biaxial_ && absorbs_ && a->trichroic();
         mmPerUnit_ = settings.sizeMm / scene.diameter();
     }
     if (scene.light().collimated() && !scene.dispersive() && !polarized()) {
@@ -74,6 +75,10 @@ float TraceBase::absorption(float wavelengthNm) const {
     // axes across c to one along it (an approximation, docs/optics.md).
     const double alpha = mixedAbsorption_ ? (2 * o + a.extraordinary(wavelengthNm)) / 3 : o;
     return float(alpha * mmPerUnit_);
+}
+
+float TraceBase::rayAbsorption(int axis, float wavelengthNm) const {
+    return float(scene_.material().absorption()->ray(axis, wavelengthNm) * mmPerUnit_);
 }
 
 float TraceBase::extraordinaryAbsorption(float wavelengthNm) const {

@@ -72,6 +72,11 @@ class TraceBase {
     // material and for the ordinary wave of a birefringent trace, whose extraordinary wave also takes
     // extraordinaryAbsorption(); unpolarised through a uniaxial stone, the mixture 2/3 alpha_o + 1/3 alpha_e.
     bool absorbs() const { return absorbs_; }
+    // A biaxial stone traced with polarisation on whose spectrum gives its X, Y and Z rays: each wave absorbs
+    // by its field (PhotonWalker::segmentAbsorption), with these per mesh unit at a wavelength.
+    bool trichroic() const { return trichroic_; }
+    float rayAbsorption(int axis, float wavelengthNm) const;
+    const std::array<Vec3, 3>& principalAxes() const { return principalAxes_; }
     float absorption(float wavelengthNm) const;
     float extraordinaryAbsorption(float wavelengthNm) const;
     const Vec3& opticAxis() const { return opticAxis_; }
@@ -96,6 +101,7 @@ class TraceBase {
     std::array<Vec3, 3> principalAxes_;
     float alphaOffsetD_ = 0;
     bool absorbs_ = false;
+    bool trichroic_ = false;
     bool mixedAbsorption_ = false;  // unpolarised through a uniaxial stone
     double mmPerUnit_ = 1;
     float birefringenceD_ = 0;

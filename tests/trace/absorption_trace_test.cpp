@@ -154,6 +154,53 @@ TEST(AbsorbingTrace, PleochroismFollowsTheWaveAndTheAxis) {
                mixed.stats.hit, "o/e mixture absorbed");
 }
 
+// Topaz absorbing by one of its rays: light down the stone's z meets waves whose fields lie along the two
+// principal axes across z, each half of the unpolarised light; the one along the absorbing ray's axis
+// absorbs as a slab of that alpha at its own index, the other crosses clear. Tilted, the axes change places;
+// unpolarised tracing takes the rays' mean.
+TEST(AbsorbingTrace, TrichroismFollowsTheWavesField) {
+    const Stone cube = test::unitCube();
+    TraceSettings s = slab(100'000);
+    s.material = "topaz";
+    s.polarization = PolarizationMode::On;
+    const double d = thicknessMm(cube, s), tau = std::exp(-0.2 * d);
+    const std::array<double, 3> n = Material::byName("topaz").principalIndices(Material::kSodiumD);
+    const auto ray = [](int axis) {
+        AbsorptionSpectrum a{{400, 700}, {}, {}};
+        for (int k = 0; k < 3; ++k) a.rayPerMm[size_t(k)] = {k == axis ? 0.2 : 0.0, k == axis ? 0.2 : 0.0};
+        a.ordinaryPerMm = AbsorptionSpectrum::meanOfRays(a.rayPerMm);
+        return a;
+    };
+    const auto halfAbsorbed = [&](double index) {
+        const double R = reflectance(index);
+        return 0.5 * (1 - R) * (1 - tau) / (1 - R * tau);
+    };
+    // X, Y, Z along the stone's x, y, z: the waves' fields along x (index alpha) and y (beta).
+    s.absorption = ray(0);
+    TraceResult r = test::traceStone(cube, s);
+    expectBalanced(r.stats);
+    expectNear(measured(cube, r.stats).absorbed, halfAbsorbed(n[0]), r.stats.hit, "X ray absorbed");
+    s.absorption = ray(1);
+    r = test::traceStone(cube, s);
+    expectNear(measured(cube, r.stats).absorbed, halfAbsorbed(n[1]), r.stats.hit, "Y ray absorbed");
+    s.absorption = ray(2);
+    r = test::traceStone(cube, s);
+    EXPECT_EQ(r.stats.absorbed, 0u) << "no field along Z";
+    // Tilted 90 deg toward x: X points down the light, Z along x, so the X ray is dark no more and Z shows.
+    s.opticAxis.tiltDeg = 90;
+    s.absorption = ray(0);
+    EXPECT_EQ(test::traceStone(cube, s).stats.absorbed, 0u) << "no field along X";
+    s.absorption = ray(2);
+    r = test::traceStone(cube, s);
+    expectNear(measured(cube, r.stats).absorbed, halfAbsorbed(n[2]), r.stats.hit, "Z ray absorbed");
+    // Unpolarised: one index (beta) and the rays' mean.
+    s.polarization = PolarizationMode::Off;
+    r = test::traceStone(cube, s);
+    const double tauMean = std::exp(-0.2 / 3 * d), Rb = reflectance(n[1]);
+    expectNear(measured(cube, r.stats).absorbed, (1 - Rb) * (1 - tauMean) / (1 - Rb * tauMean), r.stats.hit,
+               "the rays' mean absorbed");
+}
+
 // A spectrum of zeros is no absorption: no draw is added, so every tally has today's bits.
 TEST(AbsorbingTrace, AClearSpectrumChangesNoBit) {
     const Stone& stone = test::roundBrilliant();
