@@ -262,6 +262,37 @@ HWY_INLINE void enterBeam(const Packets& s, const BeamStart& b, Floats n, const 
     });
 }
 
+// enterBeam() by the facets' entries at index n (TraceBase::FixedEntry: every photon of a collimated beam
+// meets a facet alike, and the entry holds what enterBeam() would work out for it, by the same operations),
+// each photon absorbing `absorption` per mesh unit.
+template <class Visitor>
+HWY_INLINE void enterBeamFixed(const BeamStart& b, const std::vector<TraceBase::FixedEntry>& entries, float n,
+                               float absorption, uint64_t* state, Visitor& visit, uint32_t firstId,
+                               uint32_t idStep, Packet& started) {
+    const LaneBits hitBits = b.hits;
+    alignas(64) float reflectance[kMaxLanes] = {};
+    forEachLane(hitBits, [&](int k) { reflectance[k] = entries[b.hit.facet[k]].reflectance; });
+    const FloatMask hits = maskOf(hitBits);
+    const LaneBits reflects = bitsOf(hn::And(hits, uniformOf(state, hits) < Floats::load(reflectance)));
+    forEachLane(b.photons & ~hitBits, [&](int k) { visit.lane(firstId + k * idStep).missed(); });
+    forEachLane(reflects, [&](int k) {
+        const uint32_t f = b.hit.facet[k];
+        visit.lane(firstId + k * idStep).reflectedAtEntry(f, b.hit.p(k), entries[f].reflected);
+    });
+    forEachLane(hitBits & ~reflects, [&](int k) {
+        const uint32_t f = b.hit.facet[k];
+        visit.lane(firstId + k * idStep).entered(f);
+        float depth = 0;
+        if (absorption > 0) {
+            Rng rng = Rng::resume(state[k]);
+            depth = PhotonWalker::freePath(rng);
+            state[k] = rng.state();
+        }
+        started.put(k, b.hit.p(k), entries[f].refracted, n, absorption, depth, entries[f].inside, state[k],
+                    firstId + k * idStep);
+    });
+}
+
 // PhotonWalker::start() for photons [first, min(first + lanes, end)) of the block from `begin`: tallies
 // those that miss or reflect off the stone and makes those that get in live lanes of `started`, which has
 // none live before.
@@ -418,6 +449,10 @@ void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_
     BeamStart beam;
     alignas(64) uint64_t drawn[kMaxLanes];  // the photons' streams after the light ray and the wavelength
     uint64_t next = begin;                  // the first photon not started
+    // The bands enter by the trace's entries per facet where it has them for these bands.
+    bool fixed = s.beam && bands.size() == kFireBands;
+    for (size_t k = 0; fixed && k < bands.size(); ++k)
+        fixed = !s.trace.bandEntries(int(k)).empty() && s.trace.bandEntryIndex(int(k)) == bands[k].index;
     walkLanes(s, visit, [&](Packet& started) {
         if (band == count) {  // every band of the packet has entered: the next packet of photons
             if (next >= end) return false;
@@ -427,7 +462,12 @@ void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_
             if (s.beam) startBeam(s, first, next - first, drawn, beam, nullptr);
         }
         const uint32_t firstId = uint32_t((first - begin) * count + band);
-        if (s.beam) {
+        if (fixed) {
+            std::copy_n(drawn, laneCount(), started.rng);
+            enterBeamFixed(beam, s.trace.bandEntries(int(band)), bands[band].index,
+                           s.trace.absorption(bands[band].wavelengthNm), started.rng, visit, firstId, count,
+                           started);
+        } else if (s.beam) {
             std::copy_n(drawn, laneCount(), started.rng);
             alignas(64) float absorption[kMaxLanes];
             std::fill_n(absorption, kMaxLanes, s.trace.absorption(bands[band].wavelengthNm));
