@@ -56,38 +56,6 @@ class FireExitBins {
     std::array<double, kFireExitBins - 1> edges_;  // cos(k kFireExitBinDeg), k = 1, 2, ...
 };
 
-// A red-blue pair's separation, degrees(atan2(y, x)) with y = |r x b| and x = r . b, as the tallies take
-// it: in fixed point, uint64(degrees kSeparationScale + 0.5), and its histogram bin, min(59, int(degrees /
-// kFireSeparationBinDeg)). Below 7 degrees (a fire trace's pairs) atan(y / x) is summed as its series,
-// within a few ulps of atan2, and atan2 is called only within a hair of a fixed-point step or a bin's edge,
-// where its own rounding decides: atan2's figures for every pair, at a fraction of its cost.
-struct FireSeparation {
-    uint64_t fixed;
-    int bin;
-
-    static FireSeparation of(double y, double x) {
-        if (!(x > 0 && y >= 0 && y <= x * 0.125)) return formula(y, x);
-        // atan z = z - z^3/3 + z^5/5 - ..., z <= 1/8: the terms left out after z^19/19 are below 1e-19 z.
-        const double z = y / x, z2 = z * z;
-        double sum = 0;
-        for (int k = 9; k >= 0; --k) sum = sum * z2 + (k % 2 ? -1.0 : 1.0) / (2 * k + 1);
-        const double deg = degrees(z * sum);
-        const double scaled = deg * kSeparationScale + 0.5, bins = deg / kFireSeparationBinDeg;
-        if (nearStep(scaled) || nearStep(bins)) return formula(y, x);
-        return {uint64_t(scaled), std::min(kFireSeparationBins - 1, int(bins))};
-    }
-    static FireSeparation formula(double y, double x) {
-        const double deg = degrees(std::atan2(y, x));
-        return {uint64_t(deg * kSeparationScale + 0.5),
-                std::min(kFireSeparationBins - 1, int(deg / kFireSeparationBinDeg))};
-    }
-
-  private:
-    // Within a hair of a whole number from 1 up, where the series' few ulps (1e-15 of v) might round
-    // differently from atan2's.
-    static bool nearStep(double v) { return v > 0.5 && std::abs(v - std::round(v)) < 1e-9 * v; }
-};
-
 struct alignas(64) FireStats {
     explicit FireStats(size_t facetCount = 0) : colouredByFacet(facetCount) {}
 

@@ -39,14 +39,15 @@ class FireTally {
         }
         ++st_.pairs;
         const Vec3 r(red.dir.x, red.dir.y, red.dir.z), b(blue.dir.x, blue.dir.y, blue.dir.z);
-        const FireSeparation separation = FireSeparation::of(length(cross(r, b)), dot(r, b));
-        const uint64_t sep = separation.fixed;
+        const double separationDeg = degrees(std::atan2(length(cross(r, b)), dot(r, b)));
+        const uint64_t sep = uint64_t(separationDeg * kSeparationScale + 0.5);
         st_.separationSum += sep;
         st_.separationSquareSum += (sep * sep) >> 20;
         // The exit angle of the pair: its bisector's angle to the vertical (below 90 degrees: both go up).
         const double cosUp = std::clamp(dot(normalize(r + b), up_), -1.0, 1.0);
         const int exitBin = exitBins_(cosUp);
-        ++st_.histogram[exitBin][separation.bin];
+        const int sepBin = std::min(kFireSeparationBins - 1, int(separationDeg / kFireSeparationBinDeg));
+        ++st_.histogram[exitBin][sepBin];
         if (sep <= pupil_) return;
         ++st_.coloured;
         ++st_.colouredByFacet[red.facet];

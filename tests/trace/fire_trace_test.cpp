@@ -269,33 +269,3 @@ TEST(FireTrace, ExitBinsAreTheFormulas) {
     EXPECT_EQ(bins(1.0), 0);
     EXPECT_EQ(bins(-1.0), kFireExitBins - 1);
 }
-
-// The separations found by atan's series are atan2's for every pair: random pairs of directions up to 10
-// degrees apart (the series and atan2 both), and angles a few ulps around fixed-point steps and bins' edges,
-// where rounding decides.
-TEST(FireTrace, SeparationsAreTheFormulas) {
-    auto same = [](double y, double x) {
-        const FireSeparation a = FireSeparation::of(y, x), b = FireSeparation::formula(y, x);
-        return a.fixed == b.fixed && a.bin == b.bin;
-    };
-    Rng rng(5, 6);
-    for (int i = 0; i < 200000; ++i) {
-        const double angle = radians(10 * rng.uniformDouble() * rng.uniformDouble());
-        const double scale = 0.5 + rng.uniformDouble();
-        ASSERT_TRUE(same(scale * std::sin(angle), scale * std::cos(angle))) << angle;
-    }
-    std::vector<double> edges;
-    for (int k = 1; k < 70; ++k) edges.push_back(k * kFireSeparationBinDeg);
-    for (int i = 0; i < 2000; ++i)
-        edges.push_back((std::floor(7 * kSeparationScale * rng.uniformDouble()) + 0.5) / kSeparationScale);
-    for (const double deg : edges) {
-        double y = std::sin(radians(deg)), x = std::cos(radians(deg));
-        for (int ulp = 0; ulp < 64; ++ulp) {
-            ASSERT_TRUE(same(y, x)) << deg << " " << y << " " << x;
-            y = std::nextafter(y, 1.0);
-        }
-    }
-    EXPECT_TRUE(same(0, 1));
-    EXPECT_TRUE(same(1, -1));
-    EXPECT_TRUE(same(1, 0));
-}
