@@ -82,10 +82,10 @@ std::array<FireBand, kFireBands> fireBands(const Scene& scene) {
     return bands;
 }
 
-void traceFire(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats) {
+void traceFire(const TraceBase& trace, uint64_t begin, uint64_t end, FacetStats& plain, FireStats& stats) {
     thread_local std::vector<BandExit> exits;  // the block's, sized once per thread
     exits.resize((end - begin) * kFireBands);
-    PhotonWalker::blockBands(trace, begin, end, fireBands(trace.scene()), exits);
+    PhotonWalker::tallyAndBands(trace, begin, end, plain, fireBands(trace.scene()), exits);
     FireTally tally(trace, stats);
     for (size_t i = 0; i < end - begin; ++i)
         tally.add(std::span<const BandExit, kFireBands>(&exits[i * kFireBands], kFireBands));

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 
+#include "stats/facet_stats.h"
 #include "stats/fire_stats.h"
 #include "trace/trace_base.h"
 
@@ -19,9 +20,10 @@ struct FireBand {
 };
 std::array<FireBand, kFireBands> fireBands(const Scene& scene);
 
-// Adds photons [begin, end) of the job to `stats` (sized for the stone's facets). A convex stone's bands
-// are walked a packet at a time, one (photon, band) per SIMD lane.
-void traceFire(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats);
+// Adds photons [begin, end) of the job to the plain trace's tally `plain` and to `stats` (sized for the
+// stone's facets). A convex stone's bands are walked a packet at a time, one (photon, band) per SIMD lane,
+// a collimated beam's photons started once for the plain walk and the bands.
+void traceFire(const TraceBase& trace, uint64_t begin, uint64_t end, FacetStats& plain, FireStats& stats);
 // The same with each photon's bands walked one at a time: the reference traceFire is tested against.
 void traceFirePhotonByPhoton(const TraceBase& trace, uint64_t begin, uint64_t end, FireStats& stats);
 

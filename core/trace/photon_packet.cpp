@@ -262,11 +262,49 @@ HWY_INLINE void enterBeam(const Packets& s, const BeamStart& b, Floats n, const 
     });
 }
 
+// enterBeam() by the facets' entries at index n (TraceBase::FixedEntry: every photon of a collimated beam
+// meets a facet alike, and the entry holds what enterBeam() would work out for it, by the same operations),
+// each photon absorbing `absorption` per mesh unit.
+template <class Visitor>
+HWY_INLINE void enterBeamFixed(const BeamStart& b, const std::vector<TraceBase::FixedEntry>& entries, float n,
+                               float absorption, uint64_t* state, Visitor& visit, uint32_t firstId,
+                               uint32_t idStep, Packet& started) {
+    const LaneBits hitBits = b.hits;
+    alignas(64) float reflectance[kMaxLanes] = {};
+    forEachLane(hitBits, [&](int k) { reflectance[k] = entries[b.hit.facet[k]].reflectance; });
+    const FloatMask hits = maskOf(hitBits);
+    const LaneBits reflects = bitsOf(hn::And(hits, uniformOf(state, hits) < Floats::load(reflectance)));
+    forEachLane(b.photons & ~hitBits, [&](int k) { visit.lane(firstId + k * idStep).missed(); });
+    forEachLane(reflects, [&](int k) {
+        const uint32_t f = b.hit.facet[k];
+        visit.lane(firstId + k * idStep).reflectedAtEntry(f, b.hit.p(k), entries[f].reflected);
+    });
+    forEachLane(hitBits & ~reflects, [&](int k) {
+        const uint32_t f = b.hit.facet[k];
+        visit.lane(firstId + k * idStep).entered(f);
+        float depth = 0;
+        if (absorption > 0) {
+            Rng rng = Rng::resume(state[k]);
+            depth = PhotonWalker::freePath(rng);
+            state[k] = rng.state();
+        }
+        started.put(k, b.hit.p(k), entries[f].refracted, n, absorption, depth, entries[f].inside, state[k],
+                    firstId + k * idStep);
+    });
+}
+
+// A packet of photons of one collimated beam up to their entry (startBeam()), kept for the fire trace's
+// bands: their streams after the light ray and the wavelength, and where they meet the stone.
+struct KeptStart {
+    BeamStart beam;
+    alignas(64) uint64_t drawn[kMaxLanes];
+};
+
 // PhotonWalker::start() for photons [first, min(first + lanes, end)) of the block from `begin`: tallies
 // those that miss or reflect off the stone and makes those that get in live lanes of `started`, which has
-// none live before.
+// none live before. With `keep`, a collimated beam's start goes there too.
 void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end, Tally& tally,
-                 Packet& started) {
+                 Packet& started, KeptStart* keep) {
     const size_t count = std::min<uint64_t>(laneCount(), end - first);
     if (!s.beam) {
         int k = 0;
@@ -280,6 +318,10 @@ void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end,
     BeamStart b;
     Floats n;
     startBeam(s, first, count, started.rng, b, &n);
+    if (keep) {
+        keep->beam = b;
+        std::copy_n(started.rng, kMaxLanes, keep->drawn);
+    }
     alignas(64) float absorption[kMaxLanes] = {};
     if (s.trace.absorbs())
         forEachLane(b.hits, [&](int k) { absorption[k] = s.trace.absorption(b.wavelength[k]); });
@@ -391,19 +433,31 @@ struct BandExits {
     BandExit& lane(uint32_t id) { return exits[id]; }
 };
 
+// Photons [begin, end) of a convex stone, a packet at a time; with `keep`, a collimated beam's packets'
+// starts into keep[0], keep[1], ... in turn.
+void walkPhotons(const Packets& s, uint64_t begin, uint64_t end, Tally& tally, KeptStart* keep) {
+    uint64_t next = begin;
+    walkLanes(s, tally, [&](Packet& started) {
+        if (next >= end) return false;
+        startPacket(s, begin, next, end, tally, started, keep);
+        if (keep) ++keep;
+        next += laneCount();
+        return true;
+    });
+}
+
+// The bands of photons [begin, end), one (photon, band) per lane (walkBandPackets()); with `kept`, a
+// collimated beam's packets start as kept[0], kept[1], ... in turn.
+void walkBands(const Packets& s, uint64_t begin, uint64_t end, std::span<const FireBand> bands,
+               std::span<PhotonWalker::BandExit> exits, const KeptStart* kept);
+
 }  // namespace
 
 // Photons [begin, end) of a convex stone, a packet at a time. Each photon takes exactly the steps walk()
 // takes, so the tally has the same bits.
 void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
                  PhotonWalker::Tally& tally) {
-    uint64_t next = begin;
-    walkLanes(s, tally, [&](Packet& started) {
-        if (next >= end) return false;
-        startPacket(s, begin, next, end, tally, started);
-        next += laneCount();
-        return true;
-    });
+    walkPhotons(s, begin, end, tally, nullptr);
 }
 
 // The bands of photons [begin, end), one (photon, band) per lane: a packet of photons is started once (the
@@ -411,6 +465,28 @@ void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t en
 // each band from its own copy of the photon's stream. Each band takes exactly the steps walkBands() takes.
 void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
                      std::span<const FireBand> bands, std::span<PhotonWalker::BandExit> exits) {
+    walkBands(s, begin, end, bands, exits, nullptr);
+}
+
+// Photons [begin, end) into the tally, and their bands into `exits` (walkPackets() and walkBandPackets()):
+// a collimated beam's photons are started once for both, since the light ray, the wavelength draw and
+// the entry search do not depend on the index of refraction.
+void walkPacketsAndBands(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                         PhotonWalker::Tally& tally, std::span<const FireBand> bands,
+                         std::span<PhotonWalker::BandExit> exits) {
+    thread_local std::vector<KeptStart> kept;  // the block's, sized once per thread
+    KeptStart* keep = nullptr;
+    if (s.beam) {
+        kept.resize((end - begin + laneCount() - 1) / laneCount());
+        keep = kept.data();
+    }
+    walkPhotons(s, begin, end, tally, keep);
+    walkBands(s, begin, end, bands, exits, keep);
+}
+
+namespace {
+void walkBands(const Packets& s, uint64_t begin, uint64_t end, std::span<const FireBand> bands,
+               std::span<PhotonWalker::BandExit> exits, const KeptStart* kept) {
     BandExits visit{exits};
     const uint32_t count = uint32_t(bands.size());
     uint64_t first = begin;  // the packet of photons being started
@@ -418,16 +494,31 @@ void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_
     BeamStart beam;
     alignas(64) uint64_t drawn[kMaxLanes];  // the photons' streams after the light ray and the wavelength
     uint64_t next = begin;                  // the first photon not started
+    // The bands enter by the trace's entries per facet where it has them for these bands.
+    bool fixed = s.beam && bands.size() == kFireBands;
+    for (size_t k = 0; fixed && k < bands.size(); ++k)
+        fixed = !s.trace.bandEntries(int(k)).empty() && s.trace.bandEntryIndex(int(k)) == bands[k].index;
     walkLanes(s, visit, [&](Packet& started) {
         if (band == count) {  // every band of the packet has entered: the next packet of photons
             if (next >= end) return false;
             first = next;
             next = std::min<uint64_t>(first + laneCount(), end);
             band = 0;
-            if (s.beam) startBeam(s, first, next - first, drawn, beam, nullptr);
+            if (kept) {
+                beam = kept->beam;
+                std::copy_n(kept->drawn, kMaxLanes, drawn);
+                ++kept;
+            } else if (s.beam) {
+                startBeam(s, first, next - first, drawn, beam, nullptr);
+            }
         }
         const uint32_t firstId = uint32_t((first - begin) * count + band);
-        if (s.beam) {
+        if (fixed) {
+            std::copy_n(drawn, laneCount(), started.rng);
+            enterBeamFixed(beam, s.trace.bandEntries(int(band)), bands[band].index,
+                           s.trace.absorption(bands[band].wavelengthNm), started.rng, visit, firstId, count,
+                           started);
+        } else if (s.beam) {
             std::copy_n(drawn, laneCount(), started.rng);
             alignas(64) float absorption[kMaxLanes];
             std::fill_n(absorption, kMaxLanes, s.trace.absorption(bands[band].wavelengthNm));
@@ -446,6 +537,7 @@ void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_
         return true;
     });
 }
+}  // namespace
 #else
 // Highway's one-lane fallback (x86 CPUs without SSE4): one photon at a time.
 void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
@@ -458,6 +550,12 @@ void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_
         PhotonWalker::walkBands(s.trace, s.convex, i, bands,
                                 exits.subspan((i - begin) * bands.size(), bands.size()));
 }
+void walkPacketsAndBands(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                         PhotonWalker::Tally& tally, std::span<const FireBand> bands,
+                         std::span<PhotonWalker::BandExit> exits) {
+    walkPackets(s, begin, end, tally);
+    walkBandPackets(s, begin, end, bands, exits);
+}
 #endif
 
 }  // namespace HWY_NAMESPACE
@@ -469,6 +567,7 @@ namespace facetlight {
 
 HWY_EXPORT(walkPackets);
 HWY_EXPORT(walkBandPackets);
+HWY_EXPORT(walkPacketsAndBands);
 
 PhotonWalker::PacketScene PhotonWalker::packetScene(const TraceBase& t) {
     const Scene& s = t.scene();
@@ -487,6 +586,11 @@ PhotonWalker::PacketScene PhotonWalker::packetScene(const TraceBase& t) {
 
 void PhotonWalker::packets(const TraceBase& s, uint64_t begin, uint64_t end, Tally& tally) {
     HWY_DYNAMIC_DISPATCH(walkPackets)(packetScene(s), begin, end, tally);
+}
+
+void PhotonWalker::packetsAndBands(const TraceBase& s, uint64_t begin, uint64_t end, Tally& tally,
+                                   std::span<const FireBand> bands, std::span<BandExit> exits) {
+    HWY_DYNAMIC_DISPATCH(walkPacketsAndBands)(packetScene(s), begin, end, tally, bands, exits);
 }
 
 void PhotonWalker::bandPackets(const TraceBase& s, uint64_t begin, uint64_t end,

@@ -30,8 +30,11 @@ bool traceBlocks(const TraceBase& trace, uint64_t firstBlock, uint64_t lastBlock
     const WorkerStates<Tallies> tallies =
         parallelForBlocks(loop, control, Tallies{FacetStats(facets), FireStats(fire ? facets : 0)},
                           [&](Tallies& tally, uint64_t begin, uint64_t end) {
-                              PhotonWalker::tally(trace, begin, end, tally.stats);
-                              if (fire) traceFire(trace, begin, end, tally.fire);
+                              if (fire) {
+                                  traceFire(trace, begin, end, tally.stats, tally.fire);
+                              } else {
+                                  PhotonWalker::tally(trace, begin, end, tally.stats);
+                              }
                               return end - begin;
                           });
     for (const Tallies& tally : tallies.states) {

@@ -458,9 +458,12 @@ class PhotonWalker {
     // Photons [begin, end) of a convex stone a packet at a time, one per SIMD lane, on the CPU's best
     // target. Each photon takes exactly the steps walk() takes, so the tally has the same bits.
     static void packets(const TraceBase& s, uint64_t begin, uint64_t end, Tally& t);
-    // The packet walk of blockBands(), on a convex stone. Neither walks a birefringent stone.
+    // The packet walk of blockBands(), on a convex stone; and packets() and bandPackets() of the same
+    // photons, which start a collimated beam's photons once for both. None walks a birefringent stone.
     static void bandPackets(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const FireBand> bands,
                             std::span<BandExit> exits);
+    static void packetsAndBands(const TraceBase& s, uint64_t begin, uint64_t end, Tally& t,
+                                std::span<const FireBand> bands, std::span<BandExit> exits);
 
     // Photons [begin, end) into one thread's tally.
     static void tally(const TraceBase& s, uint64_t begin, uint64_t end, FacetStats& stats) {
@@ -472,6 +475,19 @@ class PhotonWalker {
         } else {
             for (uint64_t i = begin; i < end; ++i) walk(s, *s.scene().embree(), i, t);
         }
+        stats.photons += end - begin;
+    }
+
+    // tally() and blockBands() of photons [begin, end).
+    static void tallyAndBands(const TraceBase& s, uint64_t begin, uint64_t end, FacetStats& stats,
+                              std::span<const FireBand> bands, std::span<BandExit> exits) {
+        if (!s.scene().convex() || s.birefringent()) {
+            tally(s, begin, end, stats);
+            blockBands(s, begin, end, bands, exits);
+            return;
+        }
+        Tally t{s, stats};
+        packetsAndBands(s, begin, end, t, bands, exits);
         stats.photons += end - begin;
     }
 

@@ -5,6 +5,7 @@
 
 #include "optics/fresnel.h"
 #include "optics/material.h"
+#include "trace/fire_trace.h"
 
 namespace facetlight {
 
@@ -45,17 +46,41 @@ TraceBase::TraceBase(const Scene& scene, const TraceSettings& settings)
         trichroic_ = biaxial_ && absorbs_ && a->trichroic();
         mmPerUnit_ = settings.sizeMm / scene.diameter();
     }
-    if (scene.light().collimated() && !scene.dispersive() && !polarized()) {
-        // The same float operations as PhotonWalker::enter, so a photon's fate is bit for bit the same.
-        const Vec3f d(scene.light().direction());
-        const float eta = 1.0f / scene.fixedIndex();
-        for (const Vec3f& normal : scene.normals()) {
-            const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
-            const FresnelResult fr = fresnel(cosI, eta);
-            fixedEntry_.push_back(
-                {fr.reflectance, reflectOff(d, normal, cosI), refractIn(d, normal, eta, cosI, fr.cosT)});
+    if (scene.light().collimated() && !scene.dispersive() && !polarized())
+        fixedEntry_ = fixedEntriesAt(scene.fixedIndex());
+    if (settings.fire.enabled && scene.light().collimated() && !birefringent_) {
+        const std::array<FireBand, kFireBands> bands = fireBands(scene);
+        for (int k = 0; k < kFireBands; ++k) {
+            bandEntryIndex_[k] = bands[k].index;
+            bandEntry_[k] = fixedEntriesAt(bands[k].index);
         }
     }
+}
+
+std::vector<TraceBase::FixedEntry> TraceBase::fixedEntriesAt(float n) const {
+    // The same float operations as PhotonWalker::enter (and enterPolarized), so a photon's fate is bit for
+    // bit the same.
+    const Vec3f d(scene_.light().direction());
+    const float eta = 1.0f / n;
+    std::vector<FixedEntry> entries;
+    for (const Vec3f& normal : scene_.normals()) {
+        const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
+        FixedEntry e{0, reflectOff(d, normal, cosI), {}, {}};
+        float cosT;
+        if (polarized()) {
+            const FacetMeeting<float> m = meetFacet(sourcePolarization(d), d, normal, cosI, eta);
+            e.reflectance = m.waves.reflected.share(m.stokes);
+            e.inside = {m.waves.refracted.apply(m.stokes), toVec3f(m.s)};
+            cosT = m.waves.cosT;
+        } else {
+            const FresnelResult fr = fresnel(cosI, eta);
+            e.reflectance = fr.reflectance;
+            cosT = fr.cosT;
+        }
+        e.refracted = refractIn(d, normal, eta, cosI, cosT);
+        entries.push_back(e);
+    }
+    return entries;
 }
 
 float TraceBase::extraordinaryIndex(double wavelengthNm) const {

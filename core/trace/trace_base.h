@@ -12,6 +12,7 @@
 #include "optics/polarization.h"
 #include "scene/scene.h"
 #include "stats/facet_stats.h"
+#include "stats/fire_stats.h"
 #include "trace/trace_settings.h"
 
 namespace facetlight {
@@ -25,13 +26,20 @@ class TraceBase {
     const TraceSettings& settings() const { return settings_; }
 
     // Collimated light at one index of refraction: every photon entering through facet f meets it at the
-    // same angle, so its Fresnel reflectance and both directions are worked out once per facet. Empty for
-    // other lights and for a dispersive scene.
+    // same angle, so its Fresnel reflectance (in a polarised trace: the share the reflected wave takes of
+    // the light's state), both directions and the state inside are worked out once per facet. Empty for
+    // other lights and for a dispersive or polarised scene.
     struct FixedEntry {
         float reflectance;
         Vec3f reflected, refracted;
+        Polarization inside;  // when polarised
     };
     const std::vector<FixedEntry>& fixedEntries() const { return fixedEntry_; }
+    // The same for band k of a fire trace (fireBands(), trace/fire_trace.h), at index bandEntryIndex(k),
+    // polarised or not: the packet walk's bands enter by it. Empty without fire, for other lights and in a
+    // birefringent stone.
+    const std::vector<FixedEntry>& bandEntries(int k) const { return bandEntry_[k]; }
+    float bandEntryIndex(int k) const { return bandEntryIndex_[k]; }
 
     // Whether photons carry their polarisation, and the state a photon leaves the light in along d (stone
     // frame): unpolarised, or linear along the polariser's axis seen across d.
@@ -93,7 +101,12 @@ class TraceBase {
   private:
     const Scene& scene_;
     TraceSettings settings_;
+    // PhotonWalker::enter()'s float operations for collimated light at index n, facet by facet.
+    std::vector<FixedEntry> fixedEntriesAt(float n) const;
+
     std::vector<FixedEntry> fixedEntry_;
+    std::array<std::vector<FixedEntry>, kFireBands> bandEntry_;
+    std::array<float, kFireBands> bandEntryIndex_{};
     std::optional<Vec3f> polarizer_;  // the light's polariser axis, stone frame
     bool birefringent_ = false;
     bool biaxial_ = false;
