@@ -109,6 +109,9 @@ const std::vector<Fit>& fits() {
          Optic::Biaxial,
          {cauchy(1.746, 0.015), cauchy(1.748, 0.015), cauchy(1.756, 0.015)},
          3.73},
+        // Zoisite (tanzanite): alpha, beta, gamma 1.692, 1.693, 1.700 and SG 3.35 (O'Donoghue, Gems, 6th ed.,
+        // 2006); dispersion 0.030, the International Gem Society's (B-G; uncertain: other tables give 0.012).
+        {"zoisite", Optic::Biaxial, {cauchy(1.692, 0.030), cauchy(1.693, 0.030), cauchy(1.700, 0.030)}, 3.35},
     };
     return kFits;
 }

@@ -1391,8 +1391,13 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.equal(await page.isHidden('#optic-axis-fields'), true, 'a diamond has no optic axis');
     await page.selectOption('#f-material', 'sapphire');
     assert.equal(await page.isVisible('#optic-axis-fields'), true, 'a uniaxial stone traced polarised has one');
-    assert.deepEqual(await page.$$eval('#optic-axis-fields input', (ins) => ins.map((i) => [i.name, i.min, i.max])),
+    assert.deepEqual(await page.$$eval('#optic-axis-fields input:not(:disabled)', (ins) => ins.map((i) => [i.name, i.min, i.max])),
       [['optic_axis.tilt_deg', '0', '180'], ['optic_axis.azimuth_deg', '0', '360']]);
+    assert.equal(await page.isHidden('#axis-rotation-field'), true, 'a uniaxial stone has one axis to place');
+    // A biaxial stone: its Z axis placed by tilt and azimuth, its X turned about Z.
+    await page.selectOption('#f-material', 'topaz');
+    assert.equal(await page.isVisible('#axis-rotation-field'), true, 'a biaxial stone has three axes');
+    await page.selectOption('#f-material', 'sapphire');
     await page.selectOption('#f-polarization', 'off');
     assert.equal(await page.isHidden('#optic-axis-fields'), true, 'unpolarised, the axis does not matter');
     assert.equal(await page.isVisible('#hint-material-split'), true, 'a uniaxial stone suggests polarisation');

@@ -76,10 +76,11 @@ TEST(Material, RejectsUnknownNamesAndBadIndices) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("diamond"), std::string::npos) << "lists the known names";
     }
-    EXPECT_EQ(materialNames(), (std::vector<std::string>{
-                                   "diamond", "cubic_zirconia", "sapphire", "fused_silica", "bk7", "ruby",
-                                   "quartz", "calcite", "moissanite", "tourmaline", "zircon", "peridot",
-                                   "topaz", "blue_sapphire", "emerald", "amethyst", "alexandrite"}));
+    EXPECT_EQ(materialNames(),
+              (std::vector<std::string>{"diamond", "cubic_zirconia", "sapphire", "fused_silica", "bk7",
+                                        "ruby", "quartz", "calcite", "moissanite", "tourmaline", "zircon",
+                                        "peridot", "topaz", "blue_sapphire", "emerald", "amethyst",
+                                        "alexandrite", "zoisite"}));
 }
 
 // The single-index materials' index() before double refraction came, formula and coefficients as they were:

@@ -43,8 +43,11 @@ function doubleRefractionText(material, settings) {
   const head = `${material.optic}, birefringence ${fmtNumber(material.birefringence, 3)}; `;
   if (!material.double_refraction) return `${head}traced at ${material.optic === 'uniaxial' ? 'the ordinary ray\'s index' : 'β'}`;
   const axis = settings.optic_axis;
-  const split = material.optic === 'uniaxial' && settings.polarization === 'on' && axis;
-  return `${head}${material.double_refraction}${split ? ` (optic axis ${fmtNumber(axis.tilt_deg, 4)}° from the table's normal, toward ${fmtNumber(axis.azimuth_deg, 4)}° from x)` : ''}`;
+  const split = material.optic !== 'isotropic' && settings.polarization === 'on' && axis;
+  const where = material.optic === 'biaxial'
+    ? `Z axis ${fmtNumber(axis?.tilt_deg, 4)}° from the table's normal, toward ${fmtNumber(axis?.azimuth_deg, 4)}° from x, X turned ${fmtNumber(axis?.rotation_deg ?? 0, 4)}°`
+    : `optic axis ${fmtNumber(axis?.tilt_deg, 4)}° from the table's normal, toward ${fmtNumber(axis?.azimuth_deg, 4)}° from x`;
+  return `${head}${material.double_refraction}${split ? ` (${where})` : ''}`;
 }
 
 function sizeList(size, material, settings = {}) {

@@ -109,6 +109,7 @@ function buildJob(form) {
       tilt_deg: readNumber(form, 'optic_axis.tilt_deg', errors),
       azimuth_deg: readNumber(form, 'optic_axis.azimuth_deg', errors),
     };
+    if (!$('#axis-rotation-field').hidden) job.optic_axis.rotation_deg = readNumber(form, 'optic_axis.rotation_deg', errors);
   }
   if (form.elements['fire.enabled'].checked) job.fire = { enabled: true };
   if (form.elements.polariscope.checked) {
@@ -261,17 +262,21 @@ export function syncFormControls() {
   const tilt = render && form.elements.tilt_series.checked;
   form.elements['tilt_series.max_deg'].disabled = !tilt;
   form.elements['tilt_series.axis_deg'].disabled = !tilt;
-  // A uniaxial stone splits each ray in two only with polarisation on: its optic axis matters then, and the
-  // menu suggests turning it on otherwise (docs/optics.md, Birefringent stones).
+  // A doubly refracting stone splits each ray in two only with polarisation on: its axes matter then, and the
+  // menu suggests turning it on otherwise (docs/optics.md, Birefringent stones, Biaxial crystals).
   const material = form.elements.material;
   const custom = material.value === 'custom';
   $('#custom-material-fields').hidden = !custom;
   for (const input of $('#custom-material-fields').querySelectorAll('input')) input.disabled = !custom;
-  const uniaxial = chosenOptic(form) === 'uniaxial';
+  const optic = chosenOptic(form);
+  const doubly = optic === 'uniaxial' || optic === 'biaxial';
   const polarized = form.elements.polarization.value === 'on';
-  $('#optic-axis-fields').hidden = !(uniaxial && polarized);
-  for (const input of $('#optic-axis-fields').querySelectorAll('input')) input.disabled = !(uniaxial && polarized);
-  $('#hint-material-split').hidden = !(uniaxial && !polarized);
+  $('#optic-axis-fields').hidden = !(doubly && polarized);
+  $('#axis-rotation-field').hidden = optic !== 'biaxial';
+  for (const input of $('#optic-axis-fields').querySelectorAll('input')) {
+    input.disabled = !(doubly && polarized) || (input.name === 'optic_axis.rotation_deg' && optic !== 'biaxial');
+  }
+  $('#hint-material-split').hidden = !(doubly && !polarized);
   // A coloured material's swatch (index.html: what 6.5 mm passes of D65).
   const swatch = material.selectedOptions[0]?.dataset.swatch;
   $('#material-swatch').hidden = !swatch;
