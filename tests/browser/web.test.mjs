@@ -1418,7 +1418,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.deepEqual(sent.doubling, {}, 'the doubling box asks for one with its defaults');
     const formJob = await (await fetch(`${baseUrl}/api/jobs/${formId}`)).json();
     assert.equal(formJob.settings.polarization, 'on');
-    assert.deepEqual(formJob.settings.optic_axis, { tilt_deg: 30, azimuth_deg: 45 });
+    assert.deepEqual(formJob.settings.optic_axis, { tilt_deg: 30, azimuth_deg: 45, rotation_deg: 0 }, 'the settings echo every field');
     await fetch(`${baseUrl}/api/jobs/${formId}/cancel`, { method: 'POST' });
     await page.evaluate(() => { location.hash = '#/'; });
     await page.selectOption('#f-polarization', 'off');
