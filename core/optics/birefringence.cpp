@@ -591,15 +591,64 @@ void ferrariRoots(const double c[5], Complex z[4]) {
     for (int j = 0; j < 4; ++j) z[j] -= 0.25 * A;
 }
 
-// The roots of the quartic c[4] z^4 + ... + c[0] (c[4] != 0), by the Aberth-Ehrlich iteration (Aberth, Math.
-// Comp. 27, 339, 1973) from Ferrari's roots, which it refines in two or three steps (it converges from any
-// start for simple roots; from the circle of radius `scale`, which bounds the roots, should Ferrari's fail):
-// fixed-size, no allocation, and the same steps for the same coefficients.
-void quarticRoots(const double c[5], double scale, Complex z[4]) {
+// Newton's iteration on the quartic c from z (real or complex) until its step is at rounding (the tests of the
+// Aberth iteration below), at most 8 steps; false if it did not get there.
+template <class T>
+bool newtonRoot(const double c[5], double scale, T& z) {
+    double previous = INFINITY;
+    for (int iteration = 0; iteration < 8; ++iteration) {
+        const T p = (((c[4] * z + c[3]) * z + c[2]) * z + c[1]) * z + c[0];
+        const T dp = ((4 * c[4] * z + 3 * c[3]) * z + 2 * c[2]) * z + c[1];
+        if (p == 0.0) return true;
+        const T step = p / dp;
+        if (!(std::isfinite(std::real(step)) && std::isfinite(std::imag(step)))) return false;
+        z -= step;
+        const double size = std::norm(step), s2 = scale * scale;
+        if (size <= 1e-28 * s2 || (size <= 1e-18 * s2 && size >= 0.25 * previous)) return true;
+        previous = size;
+    }
+    return false;
+}
+
+// The roots of the quartic c[4] z^4 + ... + c[0] (c[4] != 0): Ferrari's, each refined by Newton's iteration
+// where they lie at least 1e-4 scale apart (then it cannot slip to a neighbour: Ferrari's error is far
+// smaller), a real one in real arithmetic and a complex one's conjugate mirrored; else by the Aberth-Ehrlich
+// iteration (Aberth, Math. Comp. 27, 339, 1973) from Ferrari's roots, which keeps close roots apart (it
+// converges from any start for simple roots: from the circle of radius `scale`, which bounds the roots,
+// should Ferrari's fail). Fixed-size, no allocation, the same steps for the same coefficients. True where the
+// roots are so far apart.
+bool quarticRoots(const double c[5], double scale, Complex z[4]) {
     ferrariRoots(c, z);
-    for (int j = 0; j < 4; ++j)
-        if (!(std::isfinite(z[j].real()) && std::isfinite(z[j].imag())))
-            for (int l = 0; l < 4; ++l) z[l] = std::polar(scale, 0.4 + l * 1.5707963267948966);
+    bool finite = true;
+    double gap = INFINITY;
+    for (int j = 0; j < 4; ++j) {
+        finite = finite && std::isfinite(z[j].real()) && std::isfinite(z[j].imag());
+        for (int l = j + 1; l < 4; ++l) gap = std::fmin(gap, std::norm(z[j] - z[l]));
+    }
+    if (finite && gap >= 1e-8 * scale * scale) {
+        Complex refined[4];
+        bool converged = true;
+        for (int j = 0; j < 4 && converged; j += 2) {
+            // quadraticRoots gives a complex pair as z[j] and its conjugate z[j + 1].
+            if (z[j].imag() != 0) {
+                refined[j] = z[j];
+                converged = newtonRoot(c, scale, refined[j]);
+                refined[j + 1] = std::conj(refined[j]);
+                continue;
+            }
+            for (int l = j; l < j + 2 && converged; ++l) {
+                double x = z[l].real();
+                converged = newtonRoot(c, scale, x);
+                refined[l] = x;
+            }
+        }
+        if (converged) {
+            std::copy(refined, refined + 4, z);
+            return true;
+        }
+    }
+    if (!finite)
+        for (int l = 0; l < 4; ++l) z[l] = std::polar(scale, 0.4 + l * 1.5707963267948966);
     // Done when the steps are at rounding, or small and no longer shrinking (close roots, whose rounding
     // floor lies above the first test). Squared magnitudes: no hypot.
     double previous = INFINITY;
@@ -624,6 +673,7 @@ void quarticRoots(const double c[5], double scale, Complex z[4]) {
         quiet = atFloor ? quiet + 1 : 0;
         previous = largest;
     }
+    return false;
 }
 
 // E = eps^-1 D of a propagating wave along unit wave normal kHat (principal frame), D being an eigenvector of
@@ -654,8 +704,8 @@ Vec3 fieldOf(const Principal& p, const Vec3& kHat, bool slow) {
 // The biaxial crystal's two waves of tangential kt whose energy leaves the facet along side * N, Fast then
 // Slow, with fields (unnormalised) and for a propagating one its ray's normal component. The quartic
 // det(k k^T - (k.k) I + eps) = 0 for k = kt + q N, with eps and G = tr(eps) eps - eps^2 in the principal
-// frame, is (k.k)(k.eps.k) - k.G.k + det eps = 0 (Fresnel's equation of wave normals multiplied out); its
-// four roots are two on each side: a real root by the sign of its Poynting flux along N, E x (k x E), a
+// frame, is F(k) = (k.k)(k.eps.k) - k.G.k + det eps = 0 (Fresnel's equation of wave normals multiplied out);
+// its four roots are two on each side: a real root by the sign of its Poynting flux along N, E x (k x E), a
 // complex one (evanescent) by the side it decays on. Only the two kept are refined and given fields.
 void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s, int side,
                   Wave<Complex> out[2]) {
@@ -670,7 +720,7 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
     const double c[5] = {u2 * a0 - g0 + pr.det, 2 * (u2 * a1 - g1), a0 + u2 * a2 - g2, 2 * a1, a2};
     Complex q[4];
     const double scale = m.gamma + std::sqrt(u2);
-    quarticRoots(c, scale, q);
+    const bool separated = quarticRoots(c, scale, q);
     for (Complex& r : q)
         if (std::fabs(r.imag()) <= 1e-9 * scale) r = r.real();
     // A double root (a wave normal on an optic axis) comes out as two roots about sqrt(rounding) apart on
@@ -680,17 +730,27 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
             if (q[j].imag() == 0 && q[l].imag() == 0 && std::abs(q[j] - q[l]) <= 1e-7 * scale)
                 q[j] = q[l] = 0.5 * (q[j] + q[l]);
 
-    // Each real root's wave: its field from the eigenproblem for its wave normal (principal frame), on the
-    // sheet of the index surface whose index along it is nearer its |k| (a line of fixed kt may cross either
-    // sheet twice, the outer one being dimpled at the optic axes).
+    // A real root's wave normal and index on the sheet of the index surface whose index along it is nearer
+    // its |k| (a line of fixed kt may cross either sheet twice, the outer one being dimpled at the optic
+    // axes); its field from the eigenproblem for its wave normal (principal frame).
     struct Point {
         Vec3 kHat, ray;
-        double nk;
+        double nk, index;
     };
     Wave<Complex> w[4];
     Point at[4];
-    double score[4];
     bool slowSheet[4] = {}, nearAxis[4] = {};
+    auto locate = [&](int j, bool classify) {
+        const Vec3 k = u + n * w[j].q.real();
+        at[j].nk = length(k);
+        at[j].kHat = k / at[j].nk;
+        const std::array<double, 2> indices = indicesAlong(pr, at[j].kHat);
+        if (classify) {
+            slowSheet[j] = std::fabs(at[j].nk - indices[1]) < std::fabs(at[j].nk - indices[0]);
+            nearAxis[j] = indices[1] - indices[0] <= 1e-6 * at[j].nk;
+        }
+        at[j].index = indices[slowSheet[j] ? 1 : 0];
+    };
     auto setField = [&](Wave<Complex>& wave, Point& p, bool slow) {
         const Vec3 k = u + n * wave.q.real();
         p.nk = length(k);
@@ -702,39 +762,86 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
         p.ray = flux / len;
         wave.rayNormal = dot(flux, n) / len;
     };
+    // Newton's step along N onto root j's sheet, |k| = n(k / |k|): that function's gradient is the ray t
+    // over t.k/|k|, t along the ray or the gradient of F. Its sheets part where two roots of the quartic
+    // nearly meet (a weak birefringence, an axis close by), which the quartic's own rounding does not
+    // resolve.
+    auto newtonStep = [&](int j, const Vec3& t) {
+        const double step = (at[j].nk - at[j].index) * dot(t, at[j].kHat) / dot(t, n);
+        w[j].q -= step;
+        w[j].k = lift<Complex>(kt) + lift<Complex>(N) * w[j].q;
+        return step;
+    };
     for (int j = 0; j < 4; ++j) {
         w[j].q = q[j];
         w[j].k = lift<Complex>(kt) + lift<Complex>(N) * q[j];
         w[j].propagating = q[j].imag() == 0;
-        if (w[j].propagating) {
-            const Vec3 k = u + n * q[j].real();
-            const std::array<double, 2> indices = indicesAlong(pr, normalize(k));
-            const double nk = length(k);
-            slowSheet[j] = std::fabs(nk - indices[1]) < std::fabs(nk - indices[0]);
-            nearAxis[j] = indices[1] - indices[0] <= 1e-6 * nk;
+    }
+    int kept[2];
+    if (separated) {
+        // Roots far apart, each simple: a line crosses a closed sheet entering it then leaving, so of the
+        // real roots in order, the sheets nested (the inner one the fast sheet), the last two leave along
+        // +N and the first two along -N; a line that misses the inner sheet and crosses the outer one four
+        // times through its dimples leaves at the second and fourth. Two real roots: entering, then leaving.
+        int real[4], count = 0, decaying = -1;
+        for (int j = 0; j < 4; ++j) {
+            if (w[j].propagating)
+                real[count++] = j;
+            else if (side * q[j].imag() > 0)
+                kept[decaying < 0 ? 0 : 1] = j, decaying = j;
+        }
+        for (int i = 1; i < count; ++i)  // in order of q
+            for (int l = i; l > 0 && q[real[l]].real() < q[real[l - 1]].real(); --l)
+                std::swap(real[l], real[l - 1]);
+        if (count == 2) kept[1] = side > 0 ? real[1] : real[0];
+        if (count == 4) {
+            const int middle = side > 0 ? real[2] : real[1];
+            locate(middle, true);
+            const bool nested = !slowSheet[middle];
+            kept[0] = side > 0 ? real[nested ? 2 : 1] : real[0];
+            kept[1] = side > 0 ? real[3] : real[nested ? 1 : 2];
+        }
+        for (int j : kept) {
+            if (!w[j].propagating) continue;
+            if (count < 4 || j != (side > 0 ? real[2] : real[1])) locate(j, true);
+            // From a root of the quartic the step is at its rounding; a second where the first was larger.
+            for (int polish = 0; polish < 2; ++polish) {
+                const Vec3 k = u + n * w[j].q.real();
+                const double kk = dot(k, k), kEpsK = form(pr.eps, k, k);
+                const Vec3 gradient =
+                    Vec3{k.x * (kEpsK + kk * pr.eps[0] - pr.g[0]), k.y * (kEpsK + kk * pr.eps[1] - pr.g[1]),
+                         k.z * (kEpsK + kk * pr.eps[2] - pr.g[2])};
+                if (std::fabs(newtonStep(j, gradient)) <= 1e-13 * at[j].nk || polish == 1) break;
+                locate(j, false);
+            }
+            setField(w[j], at[j], slowSheet[j]);
+        }
+    } else {
+        // Roots close together: each real root's side from its field's Poynting flux.
+        double score[4];
+        for (int j = 0; j < 4; ++j) {
+            score[j] = q[j].imag() > 0 ? 2 : -2;
+            if (!w[j].propagating) continue;
+            locate(j, true);
             setField(w[j], at[j], slowSheet[j]);
             score[j] = w[j].rayNormal;
-        } else {
-            score[j] = q[j].imag() > 0 ? 2 : -2;
+        }
+        // The two roots of `side`: the largest scores side * score.
+        int order[4] = {0, 1, 2, 3};
+        std::sort(order, order + 4, [&](int a, int b) { return side * score[a] > side * score[b]; });
+        kept[0] = order[0];
+        kept[1] = order[1];
+        for (int j : kept) {
+            if (!w[j].propagating) continue;
+            for (int polish = 0; polish < 2 && std::fabs(w[j].rayNormal) > 1e-6; ++polish) {
+                if (polish == 1) locate(j, false);
+                if (newtonStep(j, at[j].ray) == 0) break;  // the same root, field and ray again
+                setField(w[j], at[j], slowSheet[j]);
+            }
         }
     }
-    // The two roots of `side`: the largest scores side * score.
-    int order[4] = {0, 1, 2, 3};
-    std::sort(order, order + 4, [&](int a, int b) { return side * score[a] > side * score[b]; });
-    for (int j : {order[0], order[1]}) {
+    for (int j : kept) {
         if (w[j].propagating) {
-            for (int polish = 0; polish < 2 && std::fabs(w[j].rayNormal) > 1e-6; ++polish) {
-                // Newton's step along N onto the sheet, |k| = n(k / |k|): that function's gradient is the ray
-                // t over t.k/|k|. Its sheets part where two roots of the quartic nearly meet (a weak
-                // birefringence, an axis close by), which the quartic's own rounding does not resolve.
-                Point& p = at[j];
-                const double index = indicesAlong(pr, p.kHat)[slowSheet[j] ? 1 : 0];
-                const double step = (p.nk - index) * dot(p.ray, p.kHat) / w[j].rayNormal;
-                if (step == 0) break;  // the same root, field and ray again
-                w[j].q -= step;
-                w[j].k = lift<Complex>(kt) + lift<Complex>(N) * w[j].q;
-                setField(w[j], p, slowSheet[j]);
-            }
             q[j] = w[j].q;
         } else {
             const CMat3 mat = waveMatrix(pr, toPrincipal(m, w[j].k));
@@ -745,7 +852,7 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
             w[j].rayNormal = 0;
         }
     }
-    int fast = order[0], slow = order[1];
+    int fast = kept[0], slow = kept[1];
     // Fast first: the smaller k.k (an evanescent wave's q^2 has a negative real part).
     if ((q[slow] * q[slow]).real() < (q[fast] * q[fast]).real()) std::swap(fast, slow);
     out[0] = w[fast];
