@@ -623,7 +623,10 @@ bool quarticRoots(const double c[5], double scale, Complex z[4]) {
     double gap = INFINITY;
     for (int j = 0; j < 4; ++j) {
         finite = finite && std::isfinite(z[j].real()) && std::isfinite(z[j].imag());
-        for (int l = j + 1; l < 4; ++l) gap = std::fmin(gap, std::norm(z[j] - z[l]));
+        for (int l = j + 1; l < 4; ++l) {
+            const double d = std::norm(z[j] - z[l]);
+            gap = d < gap ? d : gap;
+        }
     }
     if (finite && gap >= 1e-8 * scale * scale) {
         Complex refined[4];
@@ -691,11 +694,11 @@ Vec3 fieldOf(const Principal& p, const Vec3& kHat, bool slow) {
     const double x = form(e1, e1) - form(e2, e2), y = 2 * form(e1, e2), h = std::sqrt(x * x + y * y);
     double c = 1, sn = 0;  // theta = 0 on an optic axis (h = 0), as atan2(0, 0) gives
     if (h > 0 && x >= 0) {
-        c = std::sqrt(0.5 * (1 + x / h));
-        sn = y / (2 * h * c);
+        c = std::sqrt(0.5 + 0.5 * x / h);
+        sn = 0.5 * y / (h * c);
     } else if (h > 0) {
-        sn = std::copysign(std::sqrt(0.5 * (1 - x / h)), y);
-        c = y / (2 * h * sn);
+        sn = std::copysign(std::sqrt(0.5 - 0.5 * x / h), y);
+        c = 0.5 * y / (h * sn);
     }
     const Vec3 d = slow ? e2 * c - e1 * sn : e1 * c + e2 * sn;
     return {d.x * p.u[0], d.y * p.u[1], d.z * p.u[2]};
@@ -727,7 +730,7 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
     // either side of it: their mean is the root to rounding.
     for (int j = 0; j < 4; ++j)
         for (int l = j + 1; l < 4; ++l)
-            if (q[j].imag() == 0 && q[l].imag() == 0 && std::abs(q[j] - q[l]) <= 1e-7 * scale)
+            if (q[j].imag() == 0 && q[l].imag() == 0 && std::norm(q[j] - q[l]) <= 1e-14 * scale * scale)
                 q[j] = q[l] = 0.5 * (q[j] + q[l]);
 
     // A real root's wave normal and index on the sheet of the index surface whose index along it is nearer
@@ -758,9 +761,9 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
         const Vec3 e = normalize(fieldOf(pr, p.kHat, slow));
         wave.field = lift<Complex>(fromPrincipal(m, e));
         const Vec3 flux = k - e * dot(e, k);
-        const double len = length(flux);
-        p.ray = flux / len;
-        wave.rayNormal = dot(flux, n) / len;
+        const double inverseLength = 1 / length(flux);
+        p.ray = flux * inverseLength;
+        wave.rayNormal = dot(p.ray, n);
     };
     // Newton's step along N onto root j's sheet, |k| = n(k / |k|): that function's gradient is the ray t
     // over t.k/|k|, t along the ray or the gradient of F. Its sheets part where two roots of the quartic
