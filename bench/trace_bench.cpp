@@ -237,16 +237,25 @@ void BM_PolarizedVsPlainShipped(benchmark::State& state) {
 BENCHMARK(BM_PolarizedVsPlainShipped)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 
 // One crystal interface (optics/birefringence.h, issue 28), the doubly refracting trace's main cost: 20 000
-// random incidences on sapphire at 589 nm with a random optic axis, entering from air (0) or leaving from
-// inside as the ordinary or the extraordinary wave (1); medians of 5 passes in thread CPU nanoseconds a call
-// (the machine is shared).
+// random incidences at 589 nm on sapphire with a random optic axis (crystal 0), or on topaz (1) or peridot
+// (2) with random principal axes, entering from air (0) or leaving from inside as either of the crystal's
+// waves (1); medians of 5 passes in thread CPU nanoseconds a call (the machine is shared).
 void BM_CrystalInterface(benchmark::State& state) {
     const bool leaving = state.range(0) == 1;
-    const std::array<double, 3> n = Material::byName("sapphire").principalIndices(Material::kSodiumD);
+    const char* names[] = {"sapphire", "topaz", "peridot"};
+    const char* name = names[state.range(1)];
+    const std::array<double, 3> n = Material::byName(name).principalIndices(Material::kSodiumD);
     std::mt19937_64 rng(1);
     std::normal_distribution<double> g;
     auto unit = [&] { return normalize(Vec3{g(rng), g(rng), g(rng)}); };
     const UniaxialMedium crystal{n[0], n[2], unit()};
+    const bool biaxial = state.range(1) > 0;
+    BiaxialMedium biaxialCrystal{n[0], n[1], n[2]};
+    if (biaxial) {
+        biaxialCrystal.z = crystal.axis;
+        biaxialCrystal.x = normalize(cross(biaxialCrystal.z, unit()));
+        biaxialCrystal.y = cross(biaxialCrystal.z, biaxialCrystal.x);
+    }
     struct Incidence {
         Vec3 direction, normal;
         PlaneWave wave;
@@ -254,25 +263,36 @@ void BM_CrystalInterface(benchmark::State& state) {
     std::vector<Incidence> incidences;
     while (incidences.size() < 20'000) {
         Incidence in{unit(), unit(), {}};
-        in.wave = incidences.size() % 2 ? ordinaryWave(crystal, unit()) : extraordinaryWave(crystal, unit());
+        const bool second = incidences.size() % 2;
+        in.wave = biaxial  ? biaxialWave(biaxialCrystal, unit(), second ? WaveMode::Slow : WaveMode::Fast)
+                  : second ? ordinaryWave(crystal, unit())
+                           : extraordinaryWave(crystal, unit());
         if (leaving ? !(dot(in.wave.ray, in.normal) > 1e-6) : !(dot(in.direction, in.normal) < -1e-6))
             continue;
         incidences.push_back(in);
     }
+    auto share = [&](const Incidence& in) {
+        if (biaxial)
+            return leaving ? leaveCrystal(biaxialCrystal, in.wave, in.normal).reflected[0].share[0]
+                           : enterCrystal(biaxialCrystal, in.direction, in.normal).transmitted[0].share[0];
+        return leaving ? leaveCrystal(crystal, in.wave, in.normal).reflected[0].share[0]
+                       : enterCrystal(crystal, in.direction, in.normal).transmitted[0].share[0];
+    };
     std::vector<double> ns;
     for (auto _ : state) {
         double sum = 0;
         const double start = threadCpuSeconds();
-        for (const Incidence& in : incidences)
-            sum += leaving ? leaveCrystal(crystal, in.wave, in.normal).reflected[0].share[0]
-                           : enterCrystal(crystal, in.direction, in.normal).transmitted[0].share[0];
+        for (const Incidence& in : incidences) sum += share(in);
         ns.push_back((threadCpuSeconds() - start) / double(incidences.size()) * 1e9);
         benchmark::DoNotOptimize(sum);
     }
-    state.SetLabel(leaving ? "leaving" : "entering");
+    state.SetLabel(std::string(name) + (leaving ? " leaving" : " entering"));
     state.counters["ns_per_interface"] = bench::median(ns);
 }
-BENCHMARK(BM_CrystalInterface)->DenseRange(0, 1)->Unit(benchmark::kMillisecond)->Iterations(5);
+BENCHMARK(BM_CrystalInterface)
+    ->ArgsProduct({{0, 1}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(5);
 
 // The exit search's culling (issue 32) against the search over every plane, on stones of many facets
 // without a round girdle (tests/support/many_facet_stones.h: a 304-facet briolette, a 217-facet step cut, a

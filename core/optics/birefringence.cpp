@@ -456,16 +456,42 @@ CVec3 fromPrincipal(const BiaxialMedium& m, const CVec3& v) {
     return lift<Complex>(m.x) * v.x + lift<Complex>(m.y) * v.y + lift<Complex>(m.z) * v.z;
 }
 
-// The principal eps_i = n_i^2 and g_i = eps_i (tr eps - eps_i), the diagonal of tr(eps) eps - eps^2.
+// The principal eps_i = n_i^2, u_i = 1 / eps_i and g_i = eps_i (tr eps - eps_i), the diagonal of
+// tr(eps) eps - eps^2; and cos Vz, sin Vz, which place the optic axes at (+-sin Vz, 0, cos Vz) (opticAxes).
 struct Principal {
-    double eps[3], g[3], det;
+    double eps[3], u[3], g[3], det, cosV, sinV;
 };
 Principal principalOf(const BiaxialMedium& m) {
-    Principal p{{m.alpha * m.alpha, m.beta * m.beta, m.gamma * m.gamma}, {}, 0};
+    Principal p{{m.alpha * m.alpha, m.beta * m.beta, m.gamma * m.gamma}, {}, {}, 0, 0, 0};
     const double trace = p.eps[0] + p.eps[1] + p.eps[2];
-    for (int i = 0; i < 3; ++i) p.g[i] = p.eps[i] * (trace - p.eps[i]);
+    for (int i = 0; i < 3; ++i) {
+        p.u[i] = 1 / p.eps[i];
+        p.g[i] = p.eps[i] * (trace - p.eps[i]);
+    }
     p.det = p.eps[0] * p.eps[1] * p.eps[2];
+    // cos^2 Vz = alpha^2 (gamma^2 - beta^2) / (beta^2 (gamma^2 - alpha^2)), the same angle as the tan form.
+    const double c2 =
+        p.eps[2] > p.eps[0] ? p.eps[0] * (p.eps[2] - p.eps[1]) / (p.eps[1] * (p.eps[2] - p.eps[0])) : 1;
+    p.cosV = std::sqrt(c2);
+    p.sinV = std::sqrt(std::fmax(0.0, 1 - c2));
     return p;
+}
+Vec3 fromPrincipal(const BiaxialMedium& m, const Vec3& v) {
+    return m.x * v.x + m.y * v.y + m.z * v.z;
+}
+
+// The two indices along unit wave normal s (principal frame), the smaller first: Fresnel's equation solved by
+// way of the optic axes (Born & Wolf sec. 15.3.3): with theta_1, theta_2 the angles between s and the two
+// axes, 1 / n^2 = ((u_x + u_z) + (u_x - u_z) cos(theta_1 -+ theta_2)) / 2. The split, (u_x - u_z) sin theta_1
+// sin theta_2, is a product rather than the square root of a difference, so it keeps its precision next to an
+// axis (where the quadratic's discriminant cancels); sin theta_i = |s x axis_i|.
+std::array<double, 2> indicesAlong(const Principal& p, const Vec3& s) {
+    const double c1 = s.x * p.sinV + s.z * p.cosV, c2 = s.z * p.cosV - s.x * p.sinV;
+    const double t1 = s.z * p.sinV - s.x * p.cosV, t2 = s.z * p.sinV + s.x * p.cosV, y2 = s.y * s.y;
+    const double s1 = std::sqrt(y2 + t1 * t1), s2 = std::sqrt(y2 + t2 * t2);
+    const double mean = 0.5 * (p.u[0] + p.u[2]), half = 0.5 * (p.u[0] - p.u[2]);
+    return {1 / std::sqrt(mean + half * (c1 * c2 + s1 * s2)),
+            1 / std::sqrt(mean + half * (c1 * c2 - s1 * s2))};
 }
 
 // The wave matrix k k^T - (k.k) I + eps of a (possibly complex) wave vector in the principal frame: E is its
@@ -513,13 +539,121 @@ void degeneratePair(const CMat3& m, const CVec3& reference, CVec3& e1, CVec3& e2
     e2 = cross(r, e1);
 }
 
-// The roots of the quartic c[4] z^4 + ... + c[0] (c[4] != 0), by the Aberth-Ehrlich iteration (Aberth, Math.
-// Comp. 27, 339, 1973), which converges from any start for simple roots: fixed-size, no allocation, and the
-// same steps for the same coefficients (no dependence on anything else). `scale` bounds the roots' size.
-void quarticRoots(const double c[5], double scale, Complex z[4]) {
-    for (int j = 0; j < 4; ++j) z[j] = std::polar(scale, 0.4 + j * 1.5707963267948966);
+// The largest real root of the monic cubic m^3 + b m^2 + c m + d (Numerical Recipes, 3rd ed., sec. 5.6:
+// the trigonometric form for three real roots, Cardano's with the cancellation-free sign choice for one).
+double largestCubicRoot(double b, double c, double d) {
+    const double Q = (b * b - 3 * c) / 9, R = (2 * b * b * b - 9 * b * c + 27 * d) / 54;
+    const double Q3 = Q * Q * Q;
+    if (R * R < Q3) {
+        const double theta = std::acos(std::clamp(R / std::sqrt(Q3), -1.0, 1.0));
+        return -2 * std::sqrt(Q) * std::cos((theta + 6.283185307179586) / 3) - b / 3;
+    }
+    const double A = -std::copysign(std::cbrt(std::fabs(R) + std::sqrt(R * R - Q3)), R);
+    return A + (A != 0 ? Q / A : 0) - b / 3;
+}
+
+// The roots of y^2 + b y + c, the real ones without cancellation.
+void quadraticRoots(double b, double c, Complex y[2]) {
+    const double disc = b * b - 4 * c;
+    if (disc >= 0) {
+        const double t = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+        y[0] = t;
+        y[1] = t != 0 ? c / t : 0;
+    } else {
+        const double im = 0.5 * std::sqrt(-disc);
+        y[0] = Complex(-0.5 * b, im);
+        y[1] = Complex(-0.5 * b, -im);
+    }
+}
+
+// Ferrari's closed form in real arithmetic: the depressed quartic y^4 + p y^2 + r y + s (z = y - A / 4) is
+// (y^2 + alpha y + m - beta)(y^2 - alpha y + m + beta) with m the resolvent cubic's largest root,
+// alpha^2 = 2 m - p >= 0, beta^2 = m^2 - s and 2 alpha beta = r; of alpha and beta the one whose square
+// cancels less is taken from its square, the other from r (Abramowitz & Stegun 3.8.3; the two-quadratic form
+// as in Strobach, J. Comput. Appl. Math. 234, 3007, 2010). Its rounding is then removed by the iteration.
+void ferrariRoots(const double c[5], Complex z[4]) {
+    const double A = c[3] / c[4], B = c[2] / c[4], C = c[1] / c[4], D = c[0] / c[4];
+    const double A2 = A * A;
+    const double p = B - 0.375 * A2, r = C - 0.5 * A * B + 0.125 * A2 * A,
+                 s = D - 0.25 * A * C + 0.0625 * A2 * B - 0.01171875 * A2 * A2;
+    const double m = largestCubicRoot(-0.5 * p, -s, 0.5 * p * s - 0.125 * r * r);
+    const double alpha2 = std::fmax(0.0, 2 * m - p), beta2 = std::fmax(0.0, m * m - s);
+    double alpha = 0, beta = 0;
+    if (alpha2 * (m * m + std::fabs(s)) >= beta2 * (2 * std::fabs(m) + std::fabs(p))) {
+        alpha = std::sqrt(alpha2);
+        beta = alpha > 0 ? r / (2 * alpha) : 0;
+    } else {
+        beta = std::copysign(std::sqrt(beta2), r);
+        alpha = r / (2 * beta);
+    }
+    quadraticRoots(alpha, m - beta, z);
+    quadraticRoots(-alpha, m + beta, z + 2);
+    for (int j = 0; j < 4; ++j) z[j] -= 0.25 * A;
+}
+
+// Newton's iteration on the quartic c from z (real or complex) until its step is at rounding (the tests of the
+// Aberth iteration below), at most 8 steps; false if it did not get there.
+template <class T>
+bool newtonRoot(const double c[5], double scale, T& z) {
+    double previous = INFINITY;
+    for (int iteration = 0; iteration < 8; ++iteration) {
+        const T p = (((c[4] * z + c[3]) * z + c[2]) * z + c[1]) * z + c[0];
+        const T dp = ((4 * c[4] * z + 3 * c[3]) * z + 2 * c[2]) * z + c[1];
+        if (p == 0.0) return true;
+        const T step = p / dp;
+        if (!(std::isfinite(std::real(step)) && std::isfinite(std::imag(step)))) return false;
+        z -= step;
+        const double size = std::norm(step), s2 = scale * scale;
+        if (size <= 1e-28 * s2 || (size <= 1e-18 * s2 && size >= 0.25 * previous)) return true;
+        previous = size;
+    }
+    return false;
+}
+
+// The roots of the quartic c[4] z^4 + ... + c[0] (c[4] != 0): Ferrari's, each refined by Newton's iteration
+// where they lie at least 1e-4 scale apart (then it cannot slip to a neighbour: Ferrari's error is far
+// smaller), a real one in real arithmetic and a complex one's conjugate mirrored; else by the Aberth-Ehrlich
+// iteration (Aberth, Math. Comp. 27, 339, 1973) from Ferrari's roots, which keeps close roots apart (it
+// converges from any start for simple roots: from the circle of radius `scale`, which bounds the roots,
+// should Ferrari's fail). Fixed-size, no allocation, the same steps for the same coefficients. True where the
+// roots are so far apart.
+bool quarticRoots(const double c[5], double scale, Complex z[4]) {
+    ferrariRoots(c, z);
+    bool finite = true;
+    double gap = INFINITY;
+    for (int j = 0; j < 4; ++j) {
+        finite = finite && std::isfinite(z[j].real()) && std::isfinite(z[j].imag());
+        for (int l = j + 1; l < 4; ++l) {
+            const double d = std::norm(z[j] - z[l]);
+            gap = d < gap ? d : gap;
+        }
+    }
+    if (finite && gap >= 1e-8 * scale * scale) {
+        Complex refined[4];
+        bool converged = true;
+        for (int j = 0; j < 4 && converged; j += 2) {
+            // quadraticRoots gives a complex pair as z[j] and its conjugate z[j + 1].
+            if (z[j].imag() != 0) {
+                refined[j] = z[j];
+                converged = newtonRoot(c, scale, refined[j]);
+                refined[j + 1] = std::conj(refined[j]);
+                continue;
+            }
+            for (int l = j; l < j + 2 && converged; ++l) {
+                double x = z[l].real();
+                converged = newtonRoot(c, scale, x);
+                refined[l] = x;
+            }
+        }
+        if (converged) {
+            std::copy(refined, refined + 4, z);
+            return true;
+        }
+    }
+    if (!finite)
+        for (int l = 0; l < 4; ++l) z[l] = std::polar(scale, 0.4 + l * 1.5707963267948966);
     // Done when the steps are at rounding, or small and no longer shrinking (close roots, whose rounding
-    // floor lies above the first test).
+    // floor lies above the first test). Squared magnitudes: no hypot.
     double previous = INFINITY;
     for (int iteration = 0, quiet = 0; iteration < 200 && quiet < 2; ++iteration) {
         double largest = 0;
@@ -535,42 +669,47 @@ void quarticRoots(const double c[5], double scale, Complex z[4]) {
             const Complex w = ratio / (1.0 - ratio * sum);
             if (!(std::isfinite(w.real()) && std::isfinite(w.imag()))) continue;
             z[j] = x - w;
-            largest = std::fmax(largest, std::abs(w));
+            largest = std::fmax(largest, std::norm(w));
         }
-        const bool atFloor =
-            largest <= 1e-14 * scale || (largest <= 1e-9 * scale && largest >= 0.5 * previous);
+        const double s2 = scale * scale;
+        const bool atFloor = largest <= 1e-28 * s2 || (largest <= 1e-18 * s2 && largest >= 0.25 * previous);
         quiet = atFloor ? quiet + 1 : 0;
         previous = largest;
     }
+    return false;
 }
 
-// The D field of a propagating wave along unit wave normal kHat (principal frame): the eigenvectors of eps^-1
-// restricted to the plane across kHat, the larger eigenvalue 1 / n^2 (the smaller index) for Fast
+// E = eps^-1 D of a propagating wave along unit wave normal kHat (principal frame), D being an eigenvector of
+// eps^-1 restricted to the plane across kHat, the larger eigenvalue 1 / n^2 (the smaller index) for Fast
 // (Born & Wolf sec. 15.2.2: the index ellipsoid's section). A 2x2 symmetric eigenproblem stays well
 // conditioned where the two indices nearly agree (a weakly birefringent crystal, a wave normal near an optic
-// axis), unlike the null vector of the wave matrix; on an optic axis it still gives an orthogonal pair.
-Vec3 displacement(const Principal& p, const Vec3& kHat, bool slow) {
-    const Vec3 e1 = perpendicularTo(kHat), e2 = cross(kHat, e1);
-    const double u[3] = {1 / p.eps[0], 1 / p.eps[1], 1 / p.eps[2]};
-    auto form = [&](const Vec3& a, const Vec3& b) {
-        return u[0] * a.x * b.x + u[1] * a.y * b.y + u[2] * a.z * b.z;
-    };
-    const double theta = 0.5 * std::atan2(2 * form(e1, e2), form(e1, e1) - form(e2, e2));
-    const double c = std::cos(theta), sn = std::sin(theta);
-    return slow ? e2 * c - e1 * sn : e1 * c + e2 * sn;
-}
-// E = eps^-1 D of that wave (principal frame).
+// axis), unlike the null vector of the wave matrix; on an optic axis it still gives an orthogonal pair. The
+// eigenvector's angle theta = atan2(2 b, a - c) / 2 for the form [[a, b], [b, c]], its cosine and sine by the
+// half-angle formulas, each from the one that does not cancel.
 Vec3 fieldOf(const Principal& p, const Vec3& kHat, bool slow) {
-    const Vec3 d = displacement(p, kHat, slow);
-    return {d.x / p.eps[0], d.y / p.eps[1], d.z / p.eps[2]};
+    const Vec3 e1 = perpendicularTo(kHat), e2 = cross(kHat, e1);
+    auto form = [&](const Vec3& a, const Vec3& b) {
+        return p.u[0] * a.x * b.x + p.u[1] * a.y * b.y + p.u[2] * a.z * b.z;
+    };
+    const double x = form(e1, e1) - form(e2, e2), y = 2 * form(e1, e2), h = std::sqrt(x * x + y * y);
+    double c = 1, sn = 0;  // theta = 0 on an optic axis (h = 0), as atan2(0, 0) gives
+    if (h > 0 && x >= 0) {
+        c = std::sqrt(0.5 + 0.5 * x / h);
+        sn = 0.5 * y / (h * c);
+    } else if (h > 0) {
+        sn = std::copysign(std::sqrt(0.5 - 0.5 * x / h), y);
+        c = 0.5 * y / (h * sn);
+    }
+    const Vec3 d = slow ? e2 * c - e1 * sn : e1 * c + e2 * sn;
+    return {d.x * p.u[0], d.y * p.u[1], d.z * p.u[2]};
 }
 
 // The biaxial crystal's two waves of tangential kt whose energy leaves the facet along side * N, Fast then
 // Slow, with fields (unnormalised) and for a propagating one its ray's normal component. The quartic
 // det(k k^T - (k.k) I + eps) = 0 for k = kt + q N, with eps and G = tr(eps) eps - eps^2 in the principal
-// frame, is (k.k)(k.eps.k) - k.G.k + det eps = 0 (Fresnel's equation of wave normals multiplied out); its
-// four roots are two on each side: a real root by the sign of its Poynting flux along N, E x (k x E), a
-// complex one (evanescent) by the side it decays on.
+// frame, is F(k) = (k.k)(k.eps.k) - k.G.k + det eps = 0 (Fresnel's equation of wave normals multiplied out);
+// its four roots are two on each side: a real root by the sign of its Poynting flux along N, E x (k x E), a
+// complex one (evanescent) by the side it decays on. Only the two kept are refined and given fields.
 void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s, int side,
                   Wave<Complex> out[2]) {
     const Principal pr = principalOf(m);
@@ -584,55 +723,129 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
     const double c[5] = {u2 * a0 - g0 + pr.det, 2 * (u2 * a1 - g1), a0 + u2 * a2 - g2, 2 * a1, a2};
     Complex q[4];
     const double scale = m.gamma + std::sqrt(u2);
-    quarticRoots(c, scale, q);
+    const bool separated = quarticRoots(c, scale, q);
     for (Complex& r : q)
         if (std::fabs(r.imag()) <= 1e-9 * scale) r = r.real();
     // A double root (a wave normal on an optic axis) comes out as two roots about sqrt(rounding) apart on
     // either side of it: their mean is the root to rounding.
     for (int j = 0; j < 4; ++j)
         for (int l = j + 1; l < 4; ++l)
-            if (q[j].imag() == 0 && q[l].imag() == 0 && std::abs(q[j] - q[l]) <= 1e-7 * scale)
+            if (q[j].imag() == 0 && q[l].imag() == 0 && std::norm(q[j] - q[l]) <= 1e-14 * scale * scale)
                 q[j] = q[l] = 0.5 * (q[j] + q[l]);
 
-    // Each root's wave: a real root's field from the eigenproblem for its wave normal, on the sheet of the
-    // index surface whose index along it is nearer its |k| (a line of fixed kt may cross either sheet twice,
-    // the outer one being dimpled at the optic axes), a complex root's as the null vector of its wave matrix.
+    // A real root's wave normal and index on the sheet of the index surface whose index along it is nearer
+    // its |k| (a line of fixed kt may cross either sheet twice, the outer one being dimpled at the optic
+    // axes); its field from the eigenproblem for its wave normal (principal frame).
+    struct Point {
+        Vec3 kHat, ray;
+        double nk, index;
+    };
     Wave<Complex> w[4];
-    double score[4];
+    Point at[4];
     bool slowSheet[4] = {}, nearAxis[4] = {};
-    auto setField = [&](Wave<Complex>& wave, bool slow) {
-        const Vec3 k = realPart(wave.k), kHat = normalize(k);
-        const Vec3 e =
-            normalize(realPart(fromPrincipal(m, lift<Complex>(fieldOf(pr, toPrincipal(m, kHat), slow)))));
-        wave.field = lift<Complex>(e);
+    auto locate = [&](int j, bool classify) {
+        const Vec3 k = u + n * w[j].q.real();
+        at[j].nk = length(k);
+        at[j].kHat = k / at[j].nk;
+        const std::array<double, 2> indices = indicesAlong(pr, at[j].kHat);
+        if (classify) {
+            slowSheet[j] = std::fabs(at[j].nk - indices[1]) < std::fabs(at[j].nk - indices[0]);
+            nearAxis[j] = indices[1] - indices[0] <= 1e-6 * at[j].nk;
+        }
+        at[j].index = indices[slowSheet[j] ? 1 : 0];
+    };
+    auto setField = [&](Wave<Complex>& wave, Point& p, bool slow) {
+        const Vec3 k = u + n * wave.q.real();
+        p.nk = length(k);
+        p.kHat = k / p.nk;
+        const Vec3 e = normalize(fieldOf(pr, p.kHat, slow));
+        wave.field = lift<Complex>(fromPrincipal(m, e));
         const Vec3 flux = k - e * dot(e, k);
-        wave.rayNormal = dot(flux, N) / length(flux);
+        const double inverseLength = 1 / length(flux);
+        p.ray = flux * inverseLength;
+        wave.rayNormal = dot(p.ray, n);
+    };
+    // Newton's step along N onto root j's sheet, |k| = n(k / |k|): that function's gradient is the ray t
+    // over t.k/|k|, t along the ray or the gradient of F. Its sheets part where two roots of the quartic
+    // nearly meet (a weak birefringence, an axis close by), which the quartic's own rounding does not
+    // resolve.
+    auto newtonStep = [&](int j, const Vec3& t) {
+        const double step = (at[j].nk - at[j].index) * dot(t, at[j].kHat) / dot(t, n);
+        w[j].q -= step;
+        w[j].k = lift<Complex>(kt) + lift<Complex>(N) * w[j].q;
+        return step;
     };
     for (int j = 0; j < 4; ++j) {
         w[j].q = q[j];
         w[j].k = lift<Complex>(kt) + lift<Complex>(N) * q[j];
         w[j].propagating = q[j].imag() == 0;
-        if (w[j].propagating) {
-            for (int polish = 0; polish < 3; ++polish) {
-                // Newton's step along N onto the sheet, |k| = n(k / |k|): that function's gradient is the ray
-                // t over t.k/|k|. Its sheets part where two roots of the quartic nearly meet (a weak
-                // birefringence, an axis close by), which the quartic's own rounding does not resolve.
-                const Vec3 k = realPart(w[j].k), kHat = normalize(k);
-                const std::array<double, 2> indices = waveIndices(m, kHat);
-                const double nk = length(k);
-                if (polish == 0) {
-                    slowSheet[j] = std::fabs(nk - indices[1]) < std::fabs(nk - indices[0]);
-                    nearAxis[j] = indices[1] - indices[0] <= 1e-6 * nk;
-                }
-                setField(w[j], slowSheet[j]);
-                if (polish == 2 || !(std::fabs(w[j].rayNormal) > 1e-6)) break;
-                const Vec3 ray = normalize(k - realPart(w[j].field) * dot(realPart(w[j].field), k));
-                const double step = (nk - indices[slowSheet[j] ? 1 : 0]) * dot(ray, kHat) / w[j].rayNormal;
-                w[j].q -= step;
-                w[j].k = lift<Complex>(kt) + lift<Complex>(N) * w[j].q;
+    }
+    int kept[2];
+    if (separated) {
+        // Roots far apart, each simple: a line crosses a closed sheet entering it then leaving, so of the
+        // real roots in order, the sheets nested (the inner one the fast sheet), the last two leave along
+        // +N and the first two along -N; a line that misses the inner sheet and crosses the outer one four
+        // times through its dimples leaves at the second and fourth. Two real roots: entering, then leaving.
+        int real[4], count = 0, decaying = -1;
+        for (int j = 0; j < 4; ++j) {
+            if (w[j].propagating)
+                real[count++] = j;
+            else if (side * q[j].imag() > 0)
+                kept[decaying < 0 ? 0 : 1] = j, decaying = j;
+        }
+        for (int i = 1; i < count; ++i)  // in order of q
+            for (int l = i; l > 0 && q[real[l]].real() < q[real[l - 1]].real(); --l)
+                std::swap(real[l], real[l - 1]);
+        if (count == 2) kept[1] = side > 0 ? real[1] : real[0];
+        if (count == 4) {
+            const int middle = side > 0 ? real[2] : real[1];
+            locate(middle, true);
+            const bool nested = !slowSheet[middle];
+            kept[0] = side > 0 ? real[nested ? 2 : 1] : real[0];
+            kept[1] = side > 0 ? real[3] : real[nested ? 1 : 2];
+        }
+        for (int j : kept) {
+            if (!w[j].propagating) continue;
+            if (count < 4 || j != (side > 0 ? real[2] : real[1])) locate(j, true);
+            // From a root of the quartic the step is at its rounding; a second where the first was larger.
+            for (int polish = 0; polish < 2; ++polish) {
+                const Vec3 k = u + n * w[j].q.real();
+                const double kk = dot(k, k), kEpsK = form(pr.eps, k, k);
+                const Vec3 gradient =
+                    Vec3{k.x * (kEpsK + kk * pr.eps[0] - pr.g[0]), k.y * (kEpsK + kk * pr.eps[1] - pr.g[1]),
+                         k.z * (kEpsK + kk * pr.eps[2] - pr.g[2])};
+                if (std::fabs(newtonStep(j, gradient)) <= 1e-13 * at[j].nk || polish == 1) break;
+                locate(j, false);
             }
-            q[j] = w[j].q;
+            setField(w[j], at[j], slowSheet[j]);
+        }
+    } else {
+        // Roots close together: each real root's side from its field's Poynting flux.
+        double score[4];
+        for (int j = 0; j < 4; ++j) {
+            score[j] = q[j].imag() > 0 ? 2 : -2;
+            if (!w[j].propagating) continue;
+            locate(j, true);
+            setField(w[j], at[j], slowSheet[j]);
             score[j] = w[j].rayNormal;
+        }
+        // The two roots of `side`: the largest scores side * score.
+        int order[4] = {0, 1, 2, 3};
+        std::sort(order, order + 4, [&](int a, int b) { return side * score[a] > side * score[b]; });
+        kept[0] = order[0];
+        kept[1] = order[1];
+        for (int j : kept) {
+            if (!w[j].propagating) continue;
+            for (int polish = 0; polish < 2 && std::fabs(w[j].rayNormal) > 1e-6; ++polish) {
+                if (polish == 1) locate(j, false);
+                if (newtonStep(j, at[j].ray) == 0) break;  // the same root, field and ray again
+                setField(w[j], at[j], slowSheet[j]);
+            }
+        }
+    }
+    for (int j : kept) {
+        if (w[j].propagating) {
+            q[j] = w[j].q;
         } else {
             const CMat3 mat = waveMatrix(pr, toPrincipal(m, w[j].k));
             bool rank2;
@@ -640,21 +853,17 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
             if (!rank2) degeneratePair(mat, toPrincipal(m, lift<Complex>(s)), e, e2);
             w[j].field = fromPrincipal(m, e);
             w[j].rayNormal = 0;
-            score[j] = q[j].imag() > 0 ? 2 : -2;
         }
     }
-    // The two roots of `side`: the largest scores side * score.
-    int order[4] = {0, 1, 2, 3};
-    std::sort(order, order + 4, [&](int a, int b) { return side * score[a] > side * score[b]; });
-    int fast = order[0], slow = order[1];
+    int fast = kept[0], slow = kept[1];
     // Fast first: the smaller k.k (an evanescent wave's q^2 has a negative real part).
     if ((q[slow] * q[slow]).real() < (q[fast] * q[fast]).real()) std::swap(fast, slow);
     out[0] = w[fast];
     out[1] = w[slow];
     // Two waves next to an optic axis on the same sheet are the degenerate pair: one field each.
     if (nearAxis[fast] && nearAxis[slow] && slowSheet[fast] == slowSheet[slow]) {
-        setField(out[0], false);
-        setField(out[1], true);
+        setField(out[0], at[fast], false);
+        setField(out[1], at[slow], true);
     }
     out[0].mode = WaveMode::Fast;
     out[1].mode = WaveMode::Slow;
@@ -689,26 +898,12 @@ InterfaceWaves withTypes(bool crystalReal, bool outsideReal, F f) {
 }  // namespace
 
 std::array<Vec3, 2> opticAxes(const BiaxialMedium& m) {
-    const double a2 = m.alpha * m.alpha, b2 = m.beta * m.beta, g2 = m.gamma * m.gamma;
-    // cos^2 Vz = alpha^2 (gamma^2 - beta^2) / (beta^2 (gamma^2 - alpha^2)), the same angle as the tan form.
-    const double c2 = g2 > a2 ? a2 * (g2 - b2) / (b2 * (g2 - a2)) : 1;
-    const double c = std::sqrt(c2), sn = std::sqrt(std::fmax(0.0, 1 - c2));
-    return {m.z * c + m.x * sn, m.z * c - m.x * sn};
+    const Principal p = principalOf(m);
+    return {m.z * p.cosV + m.x * p.sinV, m.z * p.cosV - m.x * p.sinV};
 }
 
 std::array<double, 2> waveIndices(const BiaxialMedium& medium, const Vec3& waveNormal) {
-    // Fresnel's equation solved by way of the optic axes (Born & Wolf sec. 15.3.3): with u = 1 / n^2 and
-    // theta_1, theta_2 the angles between the wave normal and the two axes,
-    // u = ((u_x + u_z) + (u_x - u_z) cos(theta_1 -+ theta_2)) / 2. The split, (u_x - u_z) sin theta_1
-    // sin theta_2, is a product rather than the square root of a difference, so it keeps its precision next
-    // to an axis (where the quadratic's discriminant cancels).
-    const std::array<Vec3, 2> axes = opticAxes(medium);
-    const double ux = 1 / (medium.alpha * medium.alpha), uz = 1 / (medium.gamma * medium.gamma);
-    const double c1 = dot(waveNormal, axes[0]), c2 = dot(waveNormal, axes[1]);
-    const double s1 = length(cross(waveNormal, axes[0])), s2 = length(cross(waveNormal, axes[1]));
-    const double mean = 0.5 * (ux + uz), half = 0.5 * (ux - uz);
-    return {1 / std::sqrt(mean + half * (c1 * c2 + s1 * s2)),
-            1 / std::sqrt(mean + half * (c1 * c2 - s1 * s2))};
+    return indicesAlong(principalOf(medium), toPrincipal(medium, waveNormal));
 }
 
 PlaneWave biaxialWave(const BiaxialMedium& medium, const Vec3& waveNormal, WaveMode mode) {
@@ -718,7 +913,7 @@ PlaneWave biaxialWave(const BiaxialMedium& medium, const Vec3& waveNormal, WaveM
     const bool slow = mode == WaveMode::Slow;
     const Vec3 k = waveNormal * waveIndices(medium, waveNormal)[slow ? 1 : 0];
     const Vec3 e = fieldOf(principalOf(medium), toPrincipal(medium, waveNormal), slow);
-    const Wave<double> w{mode, k, realPart(fromPrincipal(medium, lift<Complex>(e))), true, 0, 0};
+    const Wave<double> w{mode, k, fromPrincipal(medium, e), true, 0, 0};
     return toPlaneWave(&medium, w);
 }
 

@@ -44,9 +44,10 @@ std::string pixels(const RenderSettings& r) {
 // long (0.91-0.97x its time quiet, docs/performance.md, "Polarised and birefringent tracing"), and a doubly
 // refracting stone solves each facet's waves one photon at a time: 2-11.5x (SCALAR to AVX-512, whose packet
 // walk gains most), counted at 12 (bench_trace's PolarizedVsPlain, 2026-12-03). A biaxial stone finds its
-// waves from a quartic's roots at every facet: 11x a uniaxial one's time (`facetlight trace --mesh
-// round_brilliant --photons 200000 --threads 1 --no-view`: topaz 2.7 s, sapphire with its axis tilted 30 deg
-// 0.25 s, topaz unpolarised 0.03 s), counted at 130.
+// waves from a quartic's roots at every facet: 2.65x a uniaxial one's time (`facetlight trace --mesh
+// round_brilliant --photons 200000 --threads 1 --no-view`, medians of 3 interleaved runs: topaz 0.69 s,
+// sapphire with its axis tilted 30 deg 0.26 s, topaz unpolarised 0.03 s; docs/performance.md, "Biaxial
+// crystal interface"), counted at 32.
 double polarizationFactor(const TraceSettings& t) {
     if (t.polarization == PolarizationMode::Off) return 1;
     switch (chosenOptic(t)) {
@@ -55,7 +56,7 @@ double polarizationFactor(const TraceSettings& t) {
         case Optic::Uniaxial:
             return 12;
         case Optic::Biaxial:
-            return 130;
+            return 32;
     }
     return 1;
 }

@@ -599,6 +599,38 @@ TEST(BiaxialCrystal, BothIndicesAreBetaAlongTheOpticAxes) {
     EXPECT_NEAR(totalShare(w, 1), 1, 1e-9);
 }
 
+// Next to an optic axis the outer sheet of the index surface is dimpled (there the two sheets meet in a
+// cone), so a line of fixed kt just beyond beta along the axis misses the inner sheet and crosses the outer
+// one four times: its waves leaving each side are the second and fourth roots, not the last two. Light from
+// an immersion liquid of index 1.8 into peridot: both transmitted waves are on the slow sheet with their
+// energy into the crystal; back out through a parallel face, both reflected waves on it too, their energy
+// back in; the energy is kept both ways.
+TEST(BiaxialCrystal, BothWavesOnTheOuterSheetWhereItsDimpleIsCrossed) {
+    const BiaxialMedium peridot{1.635, 1.651, 1.670, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const Vec3 N{0, 1, 0}, axis = opticAxes(peridot)[0];  // N across the axis, into the crystal
+    const double nOutside = 1.8;
+    auto onSlowSheet = [&](const OutgoingWave& w, double side) {
+        ASSERT_TRUE(w.propagating);
+        const std::array<double, 2> n = waveIndices(peridot, w.wave.waveNormal);
+        EXPECT_NEAR(w.wave.index, n[1], 1e-12);
+        EXPECT_GT(w.wave.index - n[0], 1e-6);
+        EXPECT_GT(side * dot(w.wave.ray, N), 1e-3);
+    };
+    for (double beyond : {1e-6, 1e-5, 3e-5}) {
+        const Vec3 kt = axis * (peridot.beta + beyond);
+        const Vec3 d = normalize(kt / nOutside + N * std::sqrt(1 - dot(kt, kt) / (nOutside * nOutside)));
+        const InterfaceWaves in = enterCrystal(peridot, d, -N, nOutside);
+        for (const OutgoingWave& t : in.transmitted) onSlowSheet(t, 1);
+        EXPECT_NEAR(totalShare(in, 0), 1, 1e-10) << beyond;
+        EXPECT_NEAR(totalShare(in, 1), 1, 1e-10) << beyond;
+        for (const OutgoingWave& t : in.transmitted) {
+            const InterfaceWaves out = leaveCrystal(peridot, t.wave, N, nOutside);
+            for (const OutgoingWave& r : out.reflected) onSlowSheet(r, -1);
+            EXPECT_NEAR(totalShare(out, 0), 1, 1e-10) << beyond;
+        }
+    }
+}
+
 TEST(BiaxialCrystal, RefusesBadMedia) {
     const BiaxialMedium unordered{1.7, 1.6, 1.8, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     EXPECT_THROW(enterCrystal(unordered, {0, 0, -1}, {0, 0, 1}), Error);
