@@ -117,8 +117,8 @@ void addSweepCommand(CLI::App& app) {
     cmd->add_option(
            "--vary", o->vary,
            "NAME=LO:HI:STEP or NAME=V1,V2,...: a parameter of the shape (a design's tier:NAME slope), or "
-           "tilt, head_shadow, material, light, n, size_mm, optic_axis_tilt or optic_axis_azimuth; once or "
-           "twice")
+           "tilt, head_shadow, material, light, n, size_mm, optic_axis_tilt, optic_axis_azimuth or "
+           "optic_axis_rotation (a biaxial stone's); once or twice")
         ->take_all();
     cmd->add_option("--set", o->set,
                     "NAME=VALUE: a parameter of the shape held at a value other than its default")

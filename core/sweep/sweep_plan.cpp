@@ -27,6 +27,8 @@ void applyAxis(const SweepAxis& axis, size_t i, CutValues& cut, TraceSettings& t
         trace.opticAxis.tiltDeg = axis.values[i];
     } else if (axis.name == "optic_axis_azimuth") {
         trace.opticAxis.azimuthDeg = axis.values[i];
+    } else if (axis.name == "optic_axis_rotation") {
+        trace.opticAxis.rotationDeg = axis.values[i];
     } else if (axis.name == "size_mm") {
         trace.sizeMm = axis.values[i];
     } else if (axis.name == "material") {
@@ -49,8 +51,7 @@ size_t SweepPlan::pointCount() const {
 }
 
 std::string SweepPlan::unit(const SweepAxis& axis) const {
-    if (axis.name == "tilt" || axis.name == "head_shadow" || axis.name == "optic_axis_tilt" ||
-        axis.name == "optic_axis_azimuth")
+    if (axis.name == "tilt" || axis.name == "head_shadow" || axis.name.starts_with("optic_axis_"))
         return "deg";
     if (axis.name == "size_mm") return "mm";
     if (isTraceAxis(axis.name)) return "";
@@ -59,15 +60,21 @@ std::string SweepPlan::unit(const SweepAxis& axis) const {
     return "";
 }
 
-// The optic axis means something to a uniaxial stone traced polarised (docs/optics.md, "Birefringent
-// stones"), and only the job's own material's: a material axis would change the stone under it.
+// The optic axis means something to a doubly refracting stone traced polarised (docs/optics.md,
+// "Birefringent stones", "Biaxial crystals"), the turn of X about Z to a biaxial one only, and only the job's
+// own material's: a material axis would change the stone under it.
 void SweepPlan::checkOpticAxisSweep(const std::string& name) const {
     if (std::any_of(axes.begin(), axes.end(),
                     [](const SweepAxis& a) { return a.name == "material" || a.name == "n"; }))
         throw Error("sweep axis " + name +
                     " turns one material's optic axis: sweep it without a material or n axis");
-    if (chosenOptic(trace) != Optic::Uniaxial)
-        throw Error("sweep axis " + name + " needs a uniaxial material, whose optic axis it turns (got " +
+    const Optic optic = chosenOptic(trace);
+    if (name == "optic_axis_rotation" && optic != Optic::Biaxial)
+        throw Error("sweep axis " + name + " needs a biaxial material, whose X axis it turns about Z (got " +
+                    chosenMaterialName(trace) + ")");
+    if (optic == Optic::Isotropic)
+        throw Error("sweep axis " + name +
+                    " needs a doubly refracting (uniaxial or biaxial) material, whose axes it turns (got " +
                     chosenMaterialName(trace) + ")");
     if (trace.polarization == PolarizationMode::Off)
         throw Error("sweep axis " + name +
@@ -97,8 +104,7 @@ void SweepPlan::validate() const {
         if (trace.customMaterial && (axis.name == "material" || axis.name == "n"))
             throw Error("sweep axis " + axis.name +
                         " would replace the job's own material (custom_material): sweep one or the other");
-        if (axis.name == "optic_axis_tilt" || axis.name == "optic_axis_azimuth")
-            checkOpticAxisSweep(axis.name);
+        if (axis.name.starts_with("optic_axis_")) checkOpticAxisSweep(axis.name);
         if (axis.numeric() == isChoiceAxis(axis.name))
             throw Error("sweep axis " + axis.name + (axis.numeric() ? " takes names" : " takes numbers"));
         for (size_t i = 0; i < axis.size(); ++i) {

@@ -118,8 +118,10 @@ fails "no point of the sweep absorbs (the material auto, diamond or a design's o
   round_brilliant --vary size_mm=3,6 --colour
 fails "sweep.axes\[0\]: the colour view sees the stone face-up" round_brilliant --vary tilt=0,10 --colour \
   --material emerald
-fails "sweep axis optic_axis_tilt needs a uniaxial material, whose optic axis it turns (got diamond)" \
+fails "sweep axis optic_axis_tilt needs a doubly refracting (uniaxial or biaxial) material, whose axes it turns (got diamond)" \
   round_brilliant --vary optic_axis_tilt=0:90:15 --material diamond
+fails "sweep axis optic_axis_rotation needs a biaxial material, whose X axis it turns about Z (got sapphire)" \
+  round_brilliant --vary optic_axis_rotation=0,90 --material sapphire
 fails "sweep axis optic_axis_tilt needs polarization on" round_brilliant --vary optic_axis_tilt=0,90 \
   --material sapphire --polarization off
 fails "sweep.axes\[0\]: the optic axis lies along the table's normal (optic_axis tilt 0 deg), where its azimuth" \

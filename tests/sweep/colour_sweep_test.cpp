@@ -279,10 +279,24 @@ TEST(ColourSweep, TheOpticAxisIsSweptOnlyWhereItMeansSomething) {
     try {
         planSweep("round_brilliant", request, trace, std::nullopt);
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("needs a uniaxial material"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("needs a doubly refracting"), std::string::npos) << e.what();
     }
     trace.material = "sapphire";
     EXPECT_EQ(fieldOf([&] { planSweep("round_brilliant", request, trace, std::nullopt); }), "");
+    // A biaxial stone's Z axis tilts as a uniaxial one's axis does; its X turns about Z only for a biaxial
+    // one.
+    const SweepRequest rotation = requestOf({"optic_axis_rotation=0,90"}, "crown_return");
+    try {
+        planSweep("round_brilliant", rotation, trace, std::nullopt);
+        ADD_FAILURE() << "a uniaxial stone has no X axis to turn";
+    } catch (const Error& e) {
+        EXPECT_NE(e.field().find("sweep.axes"), std::string::npos) << e.field();
+        EXPECT_NE(std::string(e.what()).find("needs a biaxial material"), std::string::npos) << e.what();
+    }
+    trace.material = "topaz";
+    EXPECT_EQ(fieldOf([&] { planSweep("round_brilliant", request, trace, std::nullopt); }), "");
+    EXPECT_EQ(fieldOf([&] { planSweep("round_brilliant", rotation, trace, std::nullopt); }), "");
+    trace.material = "sapphire";
     trace.polarization = PolarizationMode::Off;
     EXPECT_NE(fieldOf([&] { planSweep("round_brilliant", request, trace, std::nullopt); }).find("sweep.axes"),
               std::string::npos);

@@ -105,7 +105,7 @@ export function initSweepForm() {
 }
 
 // The quantities any stone can be swept over besides its own parameters (sweep_axis.h's trace axes).
-const TRACE_QUANTITIES = ['tilt', 'head_shadow', 'n', 'size_mm', 'optic_axis_tilt', 'optic_axis_azimuth'];
+const TRACE_QUANTITIES = ['tilt', 'head_shadow', 'n', 'size_mm', 'optic_axis_tilt', 'optic_axis_azimuth', 'optic_axis_rotation'];
 // Every mesh the form offers, by its `mesh` name: a library shape's parameters, an upload's tiers.
 const sweepMeshes = new Map();
 
@@ -384,7 +384,7 @@ function designJob(job, shape, point) {
     else if (name === 'light') design.light.model = value;
     else if (name === 'material') design.material = value;
     else if (name === 'n' || name === 'size_mm') design[name] = value;
-    else if (name === 'optic_axis_tilt' || name === 'optic_axis_azimuth') {
+    else if (name.startsWith('optic_axis_')) {
       design.optic_axis = { ...settings.optic_axis, [name.replace('optic_axis_', '') + '_deg']: value };
     } else design.cut[name] = value;
   }
