@@ -314,6 +314,19 @@ Vec3 sDirection(const Vec3& kt, const Vec3& N) {
     return len > 1e-12 ? s / len : perpendicularTo(N);
 }
 
+// A crystal wave meeting a facet of outward normal N from inside: its wave vector, that vector's part along the
+// facet and s. Refuses a wave whose energy does not travel into the facet.
+struct InsideIncidence {
+    Vec3 k, kt, s;
+};
+InsideIncidence insideIncidence(const PlaneWave& incident, const Vec3& N) {
+    if (!(dot(incident.ray, N) > 0))
+        throw Error("birefringence: the wave's energy does not travel into the facet");
+    const Vec3 k = incident.waveNormal * incident.index;
+    const Vec3 kt = k - N * dot(k, N);
+    return {k, kt, sDirection(kt, N)};
+}
+
 void checkMedia(const UniaxialMedium& crystal, double nOutside) {
     if (!(crystal.nO > 0 && crystal.nE > 0 && nOutside > 0))
         throw Error("birefringence: indices must be positive");
@@ -425,11 +438,7 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
     const Vec3& N = outwardNormal;  // along the incident energy flow, out of the crystal
     if (incident.mode != WaveMode::Ordinary && incident.mode != WaveMode::Extraordinary)
         throw Error("birefringence: a wave inside the crystal is ordinary or extraordinary");
-    if (!(dot(incident.ray, N) > 0))
-        throw Error("birefringence: the wave's energy does not travel into the facet");
-    const Vec3 k = incident.waveNormal * incident.index;
-    const Vec3 kt = k - N * dot(k, N);
-    const Vec3 s = sDirection(kt, N);
+    const auto [k, kt, s] = insideIncidence(incident, N);
     const ExtraordinaryRoots roots = extraordinaryRoots(crystal, kt, N);
     return withNumberTypes(crystal, roots, kt, nOutside, [&](auto c, auto i) {
         return leaveWith<decltype(c), decltype(i)>(crystal, incident, roots, k, kt, N, s, nOutside);
@@ -950,11 +959,7 @@ InterfaceWaves leaveCrystal(const BiaxialMedium& crystal, const PlaneWave& incid
     const Vec3& N = outwardNormal;
     if (incident.mode != WaveMode::Fast && incident.mode != WaveMode::Slow)
         throw Error("birefringence: a wave inside a biaxial crystal is Fast or Slow");
-    if (!(dot(incident.ray, N) > 0))
-        throw Error("birefringence: the wave's energy does not travel into the facet");
-    const Vec3 k = incident.waveNormal * incident.index;
-    const Vec3 kt = k - N * dot(k, N);
-    const Vec3 s = sDirection(kt, N);
+    const auto [k, kt, s] = insideIncidence(incident, N);
     Wave<Complex> waves[2];
     biaxialWaves(crystal, kt, N, s, -1, waves);
     const bool crystalReal = waves[0].propagating && waves[1].propagating;
