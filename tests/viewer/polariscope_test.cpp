@@ -59,6 +59,26 @@ TEST(Polariscope, SlabCutAlongItsAxisBlinksFourTimesATurn) {
     for (const PolariscopeReading& r : along.readings) EXPECT_EQ(r.passed, 0u) << r.angleDeg;
 }
 
+TEST(Polariscope, BiaxialPlateGoesDarkWhereItsAxesMeetThePolarisers) {
+    // Topaz with its Z axis up the light and its X turned 45 deg from the stone's x: the waves down Z vibrate
+    // along X and Y, so the plate goes dark where the polarisers lie along them (the stone turned 45, 135,
+    // 225 and 315 deg, whichever way it turns) and passes sin^2(2 (angle - 45)) / 2 between; turned 0 (X
+    // along x) the dark angles move to 0, 90, 180 and 270 deg.
+    TraceSettings s = block("topaz", 0);
+    s.polarization = PolarizationMode::On;
+    s.opticAxis.rotationDeg = 45;
+    const Polariscope p = polariscope(test::unitCube(), s, {8, 3000});
+    EXPECT_TRUE(p.blinks);
+    EXPECT_EQ(p.darkAnglesDeg, (std::vector<double>{45, 135, 225, 315}));
+    for (const PolariscopeReading& r : p.readings) {
+        const double expected = 0.5 * std::pow(std::sin(2 * radians(r.angleDeg - 45)), 2);
+        EXPECT_NEAR(r.share(), expected, 4 * r.shareStderr() + 0.02) << r.angleDeg << " deg";
+    }
+    s.opticAxis.rotationDeg = 0;
+    EXPECT_EQ(polariscope(test::unitCube(), s, {8, 2000}).darkAnglesDeg,
+              (std::vector<double>{0, 90, 180, 270}));
+}
+
 TEST(Polariscope, UnderADiffuseLampTheSlabStillBlinksAndAnIsotropicCubeStaysNearlyDark) {
     // A light box: light from every direction below, of which the eye takes what leaves within 15 deg of the
     // vertical. The calcite block with its axis along x still goes dark where the polariser lies along or
