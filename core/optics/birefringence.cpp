@@ -361,22 +361,45 @@ PlaneWave extraordinaryWave(const UniaxialMedium& medium, const Vec3& waveNormal
 
 namespace {
 
+// Light from outside, once the crystal's two waves are known (either medium): the s and p waves incident and
+// reflected outside, and the fields matched.
+template <class I, class C, class M>
+InterfaceWaves fromOutside(const M& crystal, const Wave<C> transmitted[2], const Vec3& kt, const Vec3& N,
+                           const Vec3& s, double nOutside) {
+    const Wave<I> incident[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
+                                 isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
+    const Wave<I> reflected[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, -1),
+                                  isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, -1)};
+    InterfaceWaves out;
+    out.incidentCount = 2;
+    for (int i = 0; i < 2; ++i) out.incident[i] = toPlaneWave<M>(nullptr, incident[i]);
+    matchFields(crystal, false, incident, 2, transmitted, reflected, N, s, nOutside, out);
+    return out;
+}
+
+// A crystal wave from inside (`in`, as given in `incident`), once the crystal's reflected waves are known:
+// the s and p waves transmitted outside, and the fields matched.
+template <class I, class C, class M>
+InterfaceWaves fromInside(const M& crystal, const PlaneWave& incident, const Wave<double> in[1],
+                          const Wave<C> reflected[2], const Vec3& kt, const Vec3& N, const Vec3& s,
+                          double nOutside) {
+    const Wave<I> transmitted[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
+                                    isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
+    InterfaceWaves out;
+    out.incidentCount = 1;
+    out.incident[0] = incident;
+    matchFields(crystal, true, in, 1, reflected, transmitted, N, s, nOutside, out);
+    return out;
+}
+
 // enterCrystal() once its number types are known (C for the crystal's waves, I for those outside): N is
 // along the incident energy flow, into the crystal.
 template <class C, class I>
 InterfaceWaves enterWith(const UniaxialMedium& crystal, const ExtraordinaryRoots& roots, const Vec3& kt,
                          const Vec3& N, const Vec3& s, double nOutside) {
-    const Wave<I> incident[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
-                                 isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
-    const Wave<I> reflected[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, -1),
-                                  isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, -1)};
     const Wave<C> transmitted[2] = {ordinaryInterfaceWave<C>(crystal, kt, N, s, 1),
                                     extraordinaryInterfaceWave<C>(crystal, roots, kt, N, s, 1)};
-    InterfaceWaves out;
-    out.incidentCount = 2;
-    for (int i = 0; i < 2; ++i) out.incident[i] = toPlaneWave<UniaxialMedium>(nullptr, incident[i]);
-    matchFields(crystal, false, incident, 2, transmitted, reflected, N, s, nOutside, out);
-    return out;
+    return fromOutside<I>(crystal, transmitted, kt, N, s, nOutside);
 }
 
 // leaveCrystal() once its number types are known: N is along the incident energy flow, out of the crystal; k
@@ -396,13 +419,7 @@ InterfaceWaves leaveWith(const UniaxialMedium& crystal, const PlaneWave& inciden
                                  : 0;
     const double rayNormal = twinRayNormal > 0 ? twinRayNormal : dot(incident.ray, N);
     const Wave<double> in[1] = {{incident.mode, k, incident.field, true, rayNormal, dot(k, N)}};
-    const Wave<I> transmitted[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
-                                    isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
-    InterfaceWaves out;
-    out.incidentCount = 1;
-    out.incident[0] = incident;
-    matchFields(crystal, true, in, 1, reflected, transmitted, N, s, nOutside, out);
-    return out;
+    return fromInside<I>(crystal, incident, in, reflected, kt, N, s, nOutside);
 }
 
 // f(C{}, I{}) with the number types of an interface of tangential kt: double for the crystal's waves (C) or
@@ -939,17 +956,8 @@ InterfaceWaves enterCrystal(const BiaxialMedium& crystal, const Vec3& direction,
     const bool crystalReal = waves[0].propagating && waves[1].propagating;
     return withTypes(crystalReal, nOutside * nOutside - dot(kt, kt) > 0, [&](auto c, auto i) {
         using C = decltype(c);
-        using I = decltype(i);
-        const Wave<I> incident[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
-                                     isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
-        const Wave<I> reflected[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, -1),
-                                      isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, -1)};
         const Wave<C> transmitted[2] = {narrowed<C>(waves[0]), narrowed<C>(waves[1])};
-        InterfaceWaves out;
-        out.incidentCount = 2;
-        for (int j = 0; j < 2; ++j) out.incident[j] = toPlaneWave<BiaxialMedium>(nullptr, incident[j]);
-        matchFields(crystal, false, incident, 2, transmitted, reflected, N, s, nOutside, out);
-        return out;
+        return fromOutside<decltype(i)>(crystal, transmitted, kt, N, s, nOutside);
     });
 }
 
@@ -966,15 +974,8 @@ InterfaceWaves leaveCrystal(const BiaxialMedium& crystal, const PlaneWave& incid
     const Wave<double> in[1] = {{incident.mode, k, incident.field, true, dot(incident.ray, N), dot(k, N)}};
     return withTypes(crystalReal, nOutside * nOutside - dot(kt, kt) > 0, [&](auto c, auto i) {
         using C = decltype(c);
-        using I = decltype(i);
         const Wave<C> reflected[2] = {narrowed<C>(waves[0]), narrowed<C>(waves[1])};
-        const Wave<I> transmitted[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
-                                        isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
-        InterfaceWaves out;
-        out.incidentCount = 1;
-        out.incident[0] = incident;
-        matchFields(crystal, true, in, 1, reflected, transmitted, N, s, nOutside, out);
-        return out;
+        return fromInside<decltype(i)>(crystal, incident, in, reflected, kt, N, s, nOutside);
     });
 }
 
