@@ -103,6 +103,18 @@ TEST(GemSpectra, ZoisiteShowsThreeColours) {
     EXPECT_GT(z.b, 3);
     EXPECT_LT(transmitted(Material::byName("zoisite"), 6.5).chroma(),
               std::min({x.chroma(), y.chroma(), z.chroma()}));
+    // docs/optics.md's row, rounded: X 62 23 -16, Y 89 -3.5 -12, Z 92 -25 28 at 6.5 mm; the mean 97 0 0
+    // through 1 mm and 80 -1 0 through 6.5 mm (near grey).
+    const auto expectLab = [](const Lab& c, double L, double a, double b, const char* what) {
+        EXPECT_NEAR(c.L, L, 0.6) << what;
+        EXPECT_NEAR(c.a, a, 0.6) << what;
+        EXPECT_NEAR(c.b, b, 0.6) << what;
+    };
+    expectLab(x, 62, 23, -16, "X");
+    expectLab(y, 89, -3.5, -12, "Y");
+    expectLab(z, 92, -25, 28, "Z");
+    expectLab(transmitted(Material::byName("zoisite"), 1), 97, 0, 0, "mean, 1 mm");
+    expectLab(transmitted(Material::byName("zoisite"), 6.5), 80, -1, 0, "mean, 6.5 mm");
 }
 
 // Alexandrite's colour change: redder under incandescent light (A) than in daylight (D65), each against its
