@@ -1397,6 +1397,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     // A biaxial stone: its Z axis placed by tilt and azimuth, its X turned about Z.
     await page.selectOption('#f-material', 'topaz');
     assert.equal(await page.isVisible('#axis-rotation-field'), true, 'a biaxial stone has three axes');
+    await shot('15b-form-biaxial');
     await page.selectOption('#f-material', 'sapphire');
     await page.selectOption('#f-polarization', 'off');
     assert.equal(await page.isHidden('#optic-axis-fields'), true, 'unpolarised, the axis does not matter');
