@@ -20,15 +20,11 @@ struct SweepAxis {
 };
 
 // The trace settings a sweep may vary, besides the shape's parameters.
-inline const std::vector<std::string> kTraceAxes{"tilt",
-                                                 "head_shadow",
-                                                 "material",
-                                                 "light",
-                                                 "n",
-                                                 "size_mm",
-                                                 "optic_axis_tilt",
-                                                 "optic_axis_azimuth",
-                                                 "optic_axis_rotation"};
+// clang-format off
+inline const std::vector<std::string> kTraceAxes{
+    "tilt", "head_shadow", "material", "light", "n", "size_mm",
+    "optic_axis_tilt", "optic_axis_azimuth", "optic_axis_rotation"};
+// clang-format on
 constexpr size_t kMaxSweepPoints = 10000;
 constexpr size_t kMaxSweepAxes = 2;
 

@@ -88,8 +88,8 @@ class PhotonWalker {
             ph.n = float(s.scene().material().index(wavelength));
         }
         visit.wavelength(wavelength);
-        if (s.birefringent()) ph.nE = s.extraordinaryIndex(wavelength);
-        if (s.biaxial()) ph.nA = s.alphaIndex(wavelength);
+        if (s.birefringent()) ph.nE = s.principalIndex(2, wavelength);
+        if (s.biaxial()) ph.nA = s.principalIndex(0, wavelength);
         ph.setAbsorption(s, wavelength);
         return enter(s, isect, ray, visit, ph);
     }
@@ -271,10 +271,10 @@ class PhotonWalker {
 
     // A birefringent stone (docs/optics.md, "Birefringent stones"): where a ray along d from outside meets
     // facet `facet` at p, it reflects or enters as the ordinary or the extraordinary wave (a biaxial stone's
-    // Fast or Slow one), chosen by their
-    // energy shares for the photon's state (optics/birefringence.h); near the optic axis it goes on as one
-    // polarised state at n_o instead (TraceBase::nearOpticAxis). False after visit.reflectedAtEntry; else d
-    // is the wave's ray (energy) direction and ph.wave the wave.
+    // fast or slow one), chosen by their energy shares for the photon's state (optics/birefringence.h); near
+    // a uniaxial stone's optic axis it goes on as one polarised state at n_o instead
+    // (TraceBase::nearOpticAxis). False after visit.reflectedAtEntry; else d is the wave's ray (energy)
+    // direction and ph.wave the wave.
     template <class Visitor>
     static bool enterCrystalWave(const TraceBase& s, const Vec3f& normal, uint32_t facet, const Vec3f& p,
                                  Vec3f& d, Visitor& visit, Photon& ph) {

@@ -83,13 +83,9 @@ std::vector<TraceBase::FixedEntry> TraceBase::fixedEntriesAt(float n) const {
     return entries;
 }
 
-float TraceBase::extraordinaryIndex(double wavelengthNm) const {
-    return float(scene_.material().principalIndices(scene_.dispersive() ? wavelengthNm : Material::kSodiumD)[2]);
-}
-
-float TraceBase::alphaIndex(double wavelengthNm) const {
-    return float(
-        scene_.material().principalIndices(scene_.dispersive() ? wavelengthNm : Material::kSodiumD)[0]);
+float TraceBase::principalIndex(int axis, double wavelengthNm) const {
+    const double nm = scene_.dispersive() ? wavelengthNm : Material::kSodiumD;
+    return float(scene_.material().principalIndices(nm)[size_t(axis)]);
 }
 
 float TraceBase::absorption(float wavelengthNm) const {

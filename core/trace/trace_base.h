@@ -61,8 +61,9 @@ class TraceBase {
     BiaxialMedium biaxialCrystal(float alpha, float beta, float gamma) const {
         return {alpha, beta, gamma, principalAxes_[0], principalAxes_[1], principalAxes_[2]};
     }
-    float extraordinaryIndex(double wavelengthNm) const;
-    float alphaIndex(double wavelengthNm) const;
+    // The material's principal index 0, 1 or 2 (alpha, beta, gamma; n_o, n_o, n_e) at a wavelength, or at
+    // 589.3 nm in a trace without dispersion.
+    float principalIndex(int axis, double wavelengthNm) const;
     float birefringenceD() const { return birefringenceD_; }
     float alphaOffsetD() const { return alphaOffsetD_; }
     // Whether a wave normal k is so near the optic axis that the ordinary and extraordinary waves stay within

@@ -93,8 +93,8 @@ Doubling doubling(const Stone& stone, const TraceSettings& settings, const Doubl
     Doubling out;
     out.doublyRefracting = trace.birefringent();
     out.nO = scene.fixedIndex();
-    out.nE = out.doublyRefracting ? trace.extraordinaryIndex(Material::kSodiumD) : out.nO;
-    if (trace.biaxial()) out.nA = trace.alphaIndex(Material::kSodiumD);
+    out.nE = out.doublyRefracting ? trace.principalIndex(2, Material::kSodiumD) : out.nO;
+    if (trace.biaxial()) out.nA = trace.principalIndex(0, Material::kSodiumD);
     out.sizeMm = s.sizeMm;
     out.diameterMm = s.sizeMm;  // the mesh is scaled so that its girdle diameter is size_mm
     out.loupe = d.loupe;

@@ -178,7 +178,7 @@ void shootThrough(const TraceBase& trace, const Scene& scene, float x, float y, 
         PhotonWalker::Photon ph;
         ph.rng = Rng(5, i);
         ph.n = scene.fixedIndex();
-        ph.nE = trace.extraordinaryIndex(Material::kSodiumD);
+        ph.nE = trace.principalIndex(2, Material::kSodiumD);
         const LightRay ray{{x, y, 3}, {0, 0, -1}};
         if (PhotonWalker::enter(trace, *scene.convex(), ray, v, ph)) {
             while (PhotonWalker::step(trace, *scene.convex(), v, ph)) {
