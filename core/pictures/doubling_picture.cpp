@@ -26,10 +26,13 @@ std::string mm(double v) {
 }  // namespace
 
 std::string doublingTitle(const Stone& stone, const TraceSettings& settings) {
-    return "Doubling: " + stone.name + ", " + chooseMaterial(settings, stone).material.name() +
-           ", optic axis " + formatNumber("%g", settings.opticAxis.tiltDeg) +
-           " deg from the table's normal toward " + formatNumber("%g", settings.opticAxis.azimuthDeg) +
-           " deg";
+    const Material material = chooseMaterial(settings, stone).material;
+    const OpticAxisSettings& axis = settings.opticAxis;
+    const bool biaxial = material.optic() == Optic::Biaxial;
+    return "Doubling: " + stone.name + ", " + material.name() + (biaxial ? ", Z axis " : ", optic axis ") +
+           formatNumber("%g", axis.tiltDeg) + " deg from the table's normal toward " +
+           formatNumber("%g", axis.azimuthDeg) + " deg" +
+           (biaxial ? ", X turned " + formatNumber("%g", axis.rotationDeg) + " deg" : "");
 }
 
 std::string doublingSummary(const Doubling& d) {
@@ -40,7 +43,8 @@ std::string doublingSummary(const Doubling& d) {
            " % of the girdle, " + formatNumber("%.1f", d.arcMinutes(t.medianMm)) + " arcmin through a " +
            formatNumber("%g", d.loupe) + "x loupe; through the whole crown: median " + mm(d.crown.medianMm) +
            " mm (quartiles " + mm(d.crown.lowMm) + "-" + mm(d.crown.highMm) + "), seen " +
-           formatNumber("%.0f", d.viewToAxisDeg) + " deg from the optic axis";
+           formatNumber("%.0f", d.viewToAxisDeg) +
+           (d.nA > 0 ? " deg from the nearer optic axis" : " deg from the optic axis");
 }
 
 Image doublingPicture(const Doubling& d, const std::string& title) {
@@ -81,10 +85,17 @@ Image doublingPicture(const Doubling& d, const std::string& title) {
     drawTitleBlock(image, title, doublingSummary(d), 1.5, 16);
     const double y0 = top + side + 10;
     drawScaleBar(image, y0, 2 * d.halfWidthMm, side / (2 * d.halfWidthMm), d.sizeMm);
+    // A biaxial stone's fast wave sees an index between alpha and beta, its slow one between beta and gamma
+    // (Born & Wolf sec. 15.3); d.nO and d.nE are then beta and gamma.
+    const auto index = [](double v) { return formatNumber("%.4f", v); };
+    const bool biaxial = d.nA > 0;
     const std::pair<Rgb, std::string> legend[3] = {
-        {kOrdinary, "pavilion edges seen through the ordinary wave (n_o " + formatNumber("%.4f", d.nO) + ")"},
+        {kOrdinary,
+         biaxial ? "pavilion edges seen through the fast wave (n " + index(d.nA) + " to " + index(d.nO) + ")"
+                 : "pavilion edges seen through the ordinary wave (n_o " + index(d.nO) + ")"},
         {kExtraordinary,
-         "pavilion edges seen through the extraordinary wave (n_e " + formatNumber("%.4f", d.nE) + ")"},
+         biaxial ? "pavilion edges seen through the slow wave (n " + index(d.nO) + " to " + index(d.nE) + ")"
+                 : "pavilion edges seen through the extraordinary wave (n_e " + index(d.nE) + ")"},
         {kCrownEdge, "crown facet outlines (purple: both images on one pixel)"}};
     for (int k = 0; k < 3; ++k) {
         const double y = y0 + (k + 1) * kLegendRow;

@@ -239,7 +239,7 @@ export function doublingText(d) {
   const t = d.table;
   return `Doubling: through the table ${t.median_mm.toFixed(3)} mm (quartiles ${t.quartiles_mm.map((q) => q.toFixed(3)).join('–')} mm), `
     + `${(100 * t.median_share_of_diameter).toFixed(2)} % of the girdle, ${t.median_arcmin.toFixed(1)}′ through a ${d.loupe}× loupe; `
-    + `through the whole crown ${d.crown.median_mm.toFixed(3)} mm; seen ${d.view_to_axis_deg.toFixed(0)}° from the optic axis`;
+    + `through the whole crown ${d.crown.median_mm.toFixed(3)} mm; seen ${d.view_to_axis_deg.toFixed(0)}° from the ${d.alpha ? 'nearer optic axis' : 'optic axis'}`;
 }
 
 // A job's viewer figures: the ASET picture with its shares, the tilt series' animation with its
