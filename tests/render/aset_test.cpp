@@ -15,16 +15,6 @@ using namespace facetlight;
 
 namespace {
 
-// An axis-aligned box from the origin to (sx, sy, sz).
-Stone box(double sx, double sy, double sz) {
-    PolygonMesh m;
-    for (int i = 0; i < 8; ++i)
-        m.vertices.push_back({sx * (i & 1), sy * ((i >> 1) & 1), sz * ((i >> 2) & 1)});
-    m.polygons = {{{0, 2, 3, 1}, "bottom"}, {{4, 5, 7, 6}, "top"},  {{0, 1, 5, 4}, "front"},
-                  {{2, 6, 7, 3}, "back"},   {{0, 4, 6, 2}, "left"}, {{1, 3, 7, 5}, "right"}};
-    return Stone::build(m, "box");
-}
-
 TraceSettings diamond() {
     TraceSettings s;
     s.material = "diamond";
@@ -53,7 +43,7 @@ double share(const AsetView& v, AsetClass c) {
 // slab's parallel faces, so the share is the mean of each part's own 2R / (1 + R). Face-up the mirror
 // direction is the viewer's head; at 60 deg elevation bright light, at 30 deg low light.
 TEST(AsetView, SlabShowsItsMirrorDirectionByFresnelAndSnell) {
-    const Stone slab = box(20, 20, 1);
+    const Stone slab = test::box(20, 20, 1);
     const double n = Material::byName("diamond").indexD();
     const struct {
         double elevation;
@@ -93,7 +83,7 @@ TEST(AsetView, SlabShowsItsMirrorDirectionByFresnelAndSnell) {
 // picture (the top is 3.5 diameters from the camera, the field 20 deg), and nearly vertical rays go out
 // through the bottom: (1 - R) / (1 + R) leak, at normal incidence R = 0.1720 (optics.md).
 TEST(AsetView, CubeLeaksThroughItsBottom) {
-    const Stone cube = box(1, 1, 1);
+    const Stone cube = test::box(1, 1, 1);
     const Scene scene(cube, diamond());
     const TraceBase trace(scene, diamond());
     AsetSettings settings;

@@ -67,14 +67,12 @@ TEST(Doubling, AWedgeDoublesByTheImagesNotByTheRaysHits) {
     // the extraordinary wave at y' with y' + s_e D(y') = y + s_o D(y), D(y') = D(y) + (y' - y) tan alpha, so
     // the images lie (s_o - s_e) D(y) / (1 + s_e tan alpha) apart: not the rays' own (s_o - s_e) D(y).
     const double alpha = radians(20);
-    PolygonMesh m;
-    for (int i = 0; i < 8; ++i) {
-        const double y = (i >> 1) & 1;
-        m.vertices.push_back({double(i & 1), y, (i >> 2) & 1 ? 1 + y * std::tan(alpha) : 0.0});
-    }
-    m.polygons = {{{0, 2, 3, 1}, "bottom"}, {{4, 5, 7, 6}, "top"},  {{0, 1, 5, 4}, "front"},
-                  {{2, 6, 7, 3}, "back"},   {{0, 4, 6, 2}, "left"}, {{1, 3, 7, 5}, "right"}};
-    const Stone wedge = Stone::build(m, "wedge");
+    const Stone wedge = test::hexahedron(
+        [&](int i) {
+            const double y = (i >> 1) & 1;
+            return Vec3{double(i & 1), y, (i >> 2) & 1 ? 1 + y * std::tan(alpha) : 0.0};
+        },
+        "wedge");
     const TraceSettings s = stoneOf("calcite", 45, 90);
     const Doubling d = doubling(wedge, s, {96});
     const Facet& top = *std::find_if(wedge.facets.begin(), wedge.facets.end(),

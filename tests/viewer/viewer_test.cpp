@@ -16,16 +16,6 @@ using namespace facetlight;
 
 namespace {
 
-// An axis-aligned box from the origin to (sx, sy, sz).
-Stone box(double sx, double sy, double sz) {
-    PolygonMesh m;
-    for (int i = 0; i < 8; ++i)
-        m.vertices.push_back({sx * (i & 1), sy * ((i >> 1) & 1), sz * ((i >> 2) & 1)});
-    m.polygons = {{{0, 2, 3, 1}, "bottom"}, {{4, 5, 7, 6}, "top"},  {{0, 1, 5, 4}, "front"},
-                  {{2, 6, 7, 3}, "back"},   {{0, 4, 6, 2}, "left"}, {{1, 3, 7, 5}, "right"}};
-    return Stone::build(m, "box");
-}
-
 // Unpolarised Fresnel reflectance from air into index n at incidence `theta` (optics.md), with Snell's law.
 double reflectance(double n, double theta) {
     const double ci = std::cos(theta), ct = std::sqrt(1 - std::pow(std::sin(theta) / n, 2));
@@ -60,7 +50,7 @@ ViewerFigure measure(const ViewerFigures& f, std::string_view fault) {
 // elevation, of radiance sin 30 deg = 0.5 under the cosine dome. The tray (albedo a) has radiance
 // a E / pi = 2a / 3 under it.
 TEST(OfficeView, SlabShowsItsMirrorDirectionAndTheTrayByFresnel) {
-    const Stone slab = box(1000, 1000, 1);  // wide: few rays meet its sides
+    const Stone slab = test::box(1000, 1000, 1);  // wide: few rays meet its sides
     const double n = Material::byName("diamond").indexD();
     for (const double tiltDeg : {0.0, 30.0}) {
         TraceSettings s = diamondWithoutDispersion();
