@@ -146,9 +146,11 @@ Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const
         if (r.share() <= before && r.share() < after && r.share() < 0.5 * brightest->share() &&
             brightest->share() - r.share() > 5 * std::hypot(brightest->shareStderr(), r.shareStderr())) {
             out.darkAnglesDeg.push_back(r.angleDeg);
-            out.blinks = true;
+            out.reaction = PolariscopeReaction::Blinks;
         }
     }
+    if (!out.blinks() && brightest != out.readings.end() && brightest->share() >= kStaysDarkShare)
+        out.reaction = PolariscopeReaction::StaysLight;
     for (size_t k = 0, dark = out.darkAnglesDeg.size(); k < dark; ++k)
         out.darkAnglesDeg.push_back(out.darkAnglesDeg[k] + 180);
     return out;
@@ -162,7 +164,10 @@ nlohmann::json toJson(const Polariscope& p) {
                             {"share_stderr", r.shareStderr()},
                             {"upward", r.upward},
                             {"passed", r.passed}});
-    return {{"readings", readings}, {"dark_angles_deg", p.darkAnglesDeg}, {"blinks", p.blinks}};
+    return {{"readings", readings},
+            {"dark_angles_deg", p.darkAnglesDeg},
+            {"blinks", p.blinks()},
+            {"reaction", kPolariscopeReactionNames.name(p.reaction)}};
 }
 
 }  // namespace facetlight

@@ -1,8 +1,9 @@
 #pragma once
-// The polariscope, a gemmologist's first test of an unknown stone (docs/optics.md, "The polariscope"): the stone
-// on a turntable between crossed polarisers, lit from below. A singly refracting stone stays dark as it turns;
-// a doubly refracting one blinks, dark four times a turn, where the lower polariser lies along the field of one
-// of its two waves.
+// The polariscope, a gemmologist's first test of an unknown stone (docs/optics.md, "The polariscope"): the
+// stone on a turntable between crossed polarisers, lit from below. A singly refracting stone stays dark as it
+// turns; a doubly refracting one blinks, dark four times a turn, where the lower polariser lies along the
+// field of one of its two waves; a faceted stone may stay light whichever it is, its reflections turning the
+// polarisation.
 #include <cstdint>
 #include <vector>
 
@@ -44,13 +45,27 @@ struct PolariscopeReading {
     double shareStderr() const;
 };
 
+// What a gemmologist reports of the turn: the field stays dark, blinks, or stays light.
+enum class PolariscopeReaction { StaysDark, Blinks, StaysLight };
+inline constexpr NameTable<PolariscopeReaction, 3> kPolariscopeReactionNames{
+    {{{PolariscopeReaction::StaysDark, "stays_dark"},
+      {PolariscopeReaction::Blinks, "blinks"},
+      {PolariscopeReaction::StaysLight, "stays_light"}}}};
+
 struct Polariscope {
     std::vector<PolariscopeReading> readings;
     // The turntable angles where the stone goes dark (local minima under half the brightest reading),
-    // over a whole turn; blinks when it does so clearly (the brightest reading 5 standard errors above them).
+    // over a whole turn; it blinks when it does so clearly (the brightest reading 5 standard errors above
+    // them). Otherwise it stays dark when every reading passes under kStaysDarkShare, and light when not.
     std::vector<double> darkAnglesDeg;
-    bool blinks = false;
+    PolariscopeReaction reaction = PolariscopeReaction::StaysDark;
+    bool blinks() const { return reaction == PolariscopeReaction::Blinks; }
 };
+
+// Our line between a field that stays dark and one that stays light: a tenth of the upward light, well above
+// what an isotropic cube leaks under a light box (about 1 %, docs/optics.md) and below a faceted stone's
+// reflections (a diamond brilliant about 40 %).
+inline constexpr double kStaysDarkShare = 0.1;
 
 // `settings` gives the stone's material, optic axis, seed and threads; the instrument sets the rest: the lamp's
 // light travelling up, a polariser at -angle (the stone turned by angle), the analyser crossed above it, and

@@ -1443,7 +1443,7 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     assert.doesNotMatch(await page.textContent('#view-result .lede'), /unpolarised/, 'polarised is the default, not named');
     // The polariscope's animation with its verdict, and its chart.
     await page.waitForSelector('figure.viewer-polariscope img[src$="polariscope.webp"]');
-    assert.match(await page.textContent('figure.viewer-polariscope figcaption'), /^Polariscope: (dark at .* doubly refracting|no blink)/);
+    assert.match(await page.textContent('figure.viewer-polariscope figcaption'), /^Polariscope: (dark at .* doubly refracting|stays (dark|light) as it turns)/);
     assert.ok(await page.$('figure.viewer-polariscope-chart img[src$="polariscope.png"]'));
     // The doubling's face-up view with what was measured: sapphire at 30 deg to its axis doubles a little.
     await page.waitForSelector('figure.viewer-doubling img[src$="doubling.png"]');

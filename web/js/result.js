@@ -227,9 +227,12 @@ export function scintillationText(tilt) {
   return `Rocked ±${fmtNumber(max, 1)}° about ${tiltAxisName(axis)}: scintillation ${fmtPctErr(tilt.scintillation, tilt.scintillation_stderr)} of the face-up area per frame, over ${tilt.frames.length} frames`;
 }
 
-// The polariscope's verdict: where the stone goes dark as it turns, or that it does not blink.
+// The polariscope's verdict: where the stone goes dark as it turns, or that it stays dark or light.
 export function polariscopeText(p) {
-  if (!p.blinks) return 'Polariscope: no blink as it turns (singly refracting, or seen along an optic axis)';
+  if (p.reaction === 'stays_dark') return 'Polariscope: stays dark as it turns (singly refracting, or seen along an optic axis)';
+  if (p.reaction === 'stays_light') {
+    return 'Polariscope: stays light as it turns (the facets\' reflections turn the polarisation, so single and double refraction look alike)';
+  }
   return `Polariscope: dark at ${p.dark_angles_deg.map((a) => `${a}°`).join(', ')} of a turn: doubly refracting`;
 }
 
