@@ -148,6 +148,22 @@ std::pair<std::string, std::string> breakToFit(std::string_view text, double sca
     return {std::string(text), ""};
 }
 
+std::vector<std::string> wrapToFit(std::string_view text, double scale, double width, bool atSpaces) {
+    std::vector<std::string> lines;
+    for (std::string rest(text); !rest.empty();) {
+        auto [first, second] = breakToFit(rest, scale, width);
+        // No separator that fits: the last space that does.
+        for (size_t at = first.size(); atSpaces && textWidth(first, scale) > width && at-- > 1;)
+            if (first[at] == ' ' && textWidth(std::string_view(first).substr(0, at), scale) <= width) {
+                second = first.substr(at + 1) + (second.empty() ? "" : " " + second);
+                first.resize(at);
+            }
+        lines.push_back(std::move(first));
+        rest = std::move(second);
+    }
+    return lines;
+}
+
 void drawText(Image& image, double x, double y, std::string_view text, double scale, const Rgb& c,
               Align align) {
     size_t start = 0;

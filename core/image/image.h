@@ -54,5 +54,8 @@ double textHeight(double scale);  // of one line
 // or "; " that lets the first line fit (a picture's subtitle at a legible size rather than shrunk). The
 // second is empty when one line fits or no break helps.
 std::pair<std::string, std::string> breakToFit(std::string_view text, double scale, double width);
+// `text` in as many lines as it takes, each broken as breakToFit() breaks it or, with `atSpaces` where no
+// ", " or "; " lets the line fit, at its last space that does (a word wider than `width` stays whole).
+std::vector<std::string> wrapToFit(std::string_view text, double scale, double width, bool atSpaces = true);
 
 }  // namespace facetlight

@@ -11,7 +11,7 @@
 namespace facetlight {
 
 std::string colourTitle(const Stone& stone, const TraceSettings& settings);
-// "L* 62.1 +- 0.3 (spread 14.2), a* ..., windowed 3.1 %": the figures in one line.
+// "L* 62.1 +- 0.3 (spread 14.2), a* ...; windowed 3.1 %": the figures in one line (the picture wraps it).
 std::string colourSummary(const ColourView& view);
 Image colourPicture(const ColourView& view, const std::string& title);
 

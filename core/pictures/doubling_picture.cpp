@@ -11,8 +11,6 @@
 namespace facetlight {
 namespace {
 
-constexpr int kTitleHeight = 68;
-constexpr int kLegendRow = 22;
 const Rgb kInk{0.1f, 0.1f, 0.1f};
 const Rgb kOrdinary{0.1f, 0.3f, 0.95f};
 const Rgb kExtraordinary{0.95f, 0.35f, 0.05f};
@@ -50,8 +48,9 @@ std::string doublingSummary(const Doubling& d) {
 Image doublingPicture(const Doubling& d, const std::string& title) {
     const int n = d.size, s = std::max(1, 480 / std::max(n, 1)), side = n * s;
     const int width = std::max(side + 20, 720);
-    Image image(width, kTitleHeight + side + 12 + 4 * kLegendRow, {1, 1, 1});
-    const int left = (width - side) / 2, top = kTitleHeight;
+    const TitleBlock head = titleBlock(title, doublingSummary(d), width);
+    Image image(width, head.height() + side + 10 + kScaleBarHeight + 3 * kLegendLineStep + 12, {1, 1, 1});
+    const int left = (width - side) / 2, top = head.height();
     auto at = [&](const std::vector<int32_t>& v, int x, int y) {
         return v[size_t(y) * size_t(n) + size_t(x)];
     };
@@ -82,7 +81,7 @@ Image doublingPicture(const Doubling& d, const std::string& title) {
             for (int dy = 0; dy < s; ++dy)
                 for (int dx = 0; dx < s; ++dx) image.at(left + x * s + dx, top + y * s + dy) = c;
         }
-    drawTitleBlock(image, title, doublingSummary(d), 1.5, 16);
+    drawTitleBlock(image, head);
     const double y0 = top + side + 10;
     drawScaleBar(image, y0, 2 * d.halfWidthMm, side / (2 * d.halfWidthMm), d.sizeMm);
     // A biaxial stone's fast wave sees an index between alpha and beta, its slow one between beta and gamma
@@ -98,11 +97,11 @@ Image doublingPicture(const Doubling& d, const std::string& title) {
                  : "pavilion edges seen through the extraordinary wave (n_e " + index(d.nE) + ")"},
         {kCrownEdge, "crown facet outlines (purple: both images on one pixel)"}};
     for (int k = 0; k < 3; ++k) {
-        const double y = y0 + (k + 1) * kLegendRow;
+        const double y = y0 + kScaleBarHeight + 4 + k * kLegendLineStep;
         const Point2 box[4] = {Point2{10, y}, Point2{26, y}, Point2{26, y + 16}, Point2{10, y + 16}};
         fillPolygon(image, box, legend[k].first);
         drawPolyline(image, box, true, 1, kInk);
-        drawText(image, 34, y + 3, legend[k].second, 1.5, kInk);
+        drawLegendLine(image, 34, y + 2, legend[k].second);
     }
     return image;
 }

@@ -9,19 +9,45 @@ namespace {
 
 const Rgb kInk{0.1f, 0.1f, 0.1f};
 
+constexpr double kLegible = 2, kTitleScale = 2.4, kTop = 6;
+
+double fittingScale(const std::string& text, double width, double largest) {
+    return std::min(largest, width / std::max(1.0, textWidth(text, 1)));
+}
+
+double lineStep(double scale) {
+    return textHeight(scale) + 4;
+}
+
 }  // namespace
 
-void drawTitleBlock(Image& image, const std::string& title, const std::string& summary, double summaryScale,
-                    double lineStep) {
-    const size_t cut = summary.find("; ");
-    const std::string lines[3] = {title, summary.substr(0, cut),
-                                  cut == std::string::npos ? "" : summary.substr(cut + 2)};
+int TitleBlock::height() const {
+    return int(kTop + lineStep(kTitleScale) * double(title.size()) + 4 +
+               lineStep(kLegible) * double(summary.size()) + 6);
+}
+
+TitleBlock titleBlock(const std::string& title, const std::string& summary, int pictureWidth) {
+    // The title broken only between its parts, each shrunk to fit if it must: no word left alone on a line.
+    return {wrapToFit(title, kTitleScale, pictureWidth - 10, false),
+            wrapToFit(summary, kLegible, pictureWidth - 10)};
+}
+
+void drawTitleBlock(Image& image, const TitleBlock& block) {
     const double width = image.width();
-    for (int k = 0; k < 3; ++k) {
-        const double scale =
-            std::min(k == 0 ? 2.0 : summaryScale, (width - 10) / std::max(1.0, textWidth(lines[k], 1)));
-        drawText(image, width / 2.0, k == 0 ? 6 : 14 + lineStep * k, lines[k], scale, kInk, Align::Center);
+    double y = kTop;
+    for (const std::string& line : block.title) {
+        drawText(image, width / 2, y, line, fittingScale(line, width - 10, kTitleScale), kInk, Align::Center);
+        y += lineStep(kTitleScale);
     }
+    y += 4;
+    for (const std::string& line : block.summary) {
+        drawText(image, width / 2, y, line, fittingScale(line, width - 10, kLegible), kInk, Align::Center);
+        y += lineStep(kLegible);
+    }
+}
+
+void drawLegendLine(Image& image, double x, double y, const std::string& text) {
+    drawText(image, x, y, text, fittingScale(text, image.width() - 5 - x, kLegible), kInk);
 }
 
 void drawScaleBar(Image& image, double y, double spanMm, double pixelsPerMm, double stoneMm) {

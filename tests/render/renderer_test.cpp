@@ -334,6 +334,31 @@ TEST(Pictures, BreakToFitBreaksAtTheLastSeparatorThatFits) {
     EXPECT_EQ(breakToFit("no separator here at all", 2, 50).first, "no separator here at all");
 }
 
+// Every line wrapToFit gives fits the width, broken after ", " or "; " where one lets it fit and else at a
+// space; the lines joined by spaces are the text again. Without spaces as breaks, a part too wide stays
+// whole.
+TEST(Pictures, WrapToFitBreaksEveryLineToTheWidth) {
+    const std::string text =
+        "through the table: median 0.088 mm (quartiles 0.081-0.097), 1.35 % of the girdle, "
+        "12.1 arcmin through a 10x loupe; through the whole crown: median 0.057 mm "
+        "(quartiles 0.030-0.081), seen 45 deg from the optic axis";
+    const std::vector<std::string> lines = wrapToFit(text, 2, 710);
+    ASSERT_GE(lines.size(), 4u);
+    std::string joined;
+    for (const std::string& line : lines) {
+        EXPECT_LE(textWidth(line, 2), 710) << line;
+        joined += (joined.empty() ? "" : " ") + line;
+    }
+    EXPECT_EQ(joined, text);
+    EXPECT_EQ(lines[0], "through the table: median 0.088 mm (quartiles 0.081-0.097),");
+    EXPECT_EQ(lines[3], "0.030-0.081), seen 45 deg from the optic axis") << "broken at a space";
+    const std::vector<std::string> parts = wrapToFit(text, 2, 710, false);
+    EXPECT_EQ(
+        parts.back(),
+        "through the whole crown: median 0.057 mm (quartiles 0.030-0.081), seen 45 deg from the optic axis");
+    EXPECT_EQ(wrapToFit("", 2, 100).size(), 0u);
+}
+
 TEST(Pictures, PngSignatureAndSize) {
     Image image(20, 10, {0.5f, 0.25f, 1});
     drawText(image, 1, 1, "42%", 1, {0, 0, 0});

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "pictures/colour_picture.h"
+#include "pictures/face_up_frame.h"
 #include "support/fixtures.h"
 #include "util/error.h"
 #include "viewer/colour_view.h"
@@ -130,6 +131,10 @@ TEST(ColourView, ThePictureHasItsTitleScaleAndLegend) {
     const Image image = colourPicture(v, "title");
     EXPECT_GE(image.width(), 720);
     EXPECT_GT(image.height(), 480);
+    // The figures above the view at the legible size (scale 2), in as many lines as they take.
+    const TitleBlock head = titleBlock("title", colourSummary(v), image.width());
+    EXPECT_GE(head.summary.size(), 3u);
+    for (const std::string& line : head.summary) EXPECT_LE(textWidth(line, 2), image.width() - 10) << line;
     const nlohmann::json j = toJson(v);
     EXPECT_EQ(j["illuminant"], "D65");
     EXPECT_EQ(j["pixels"], v.pixels);
