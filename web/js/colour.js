@@ -273,8 +273,9 @@ export function meanColourText(c) {
 
 function colourFigures(c) {
   return h('div', { class: 'colour-figures' },
-    h('p', { class: 'colour-mean' }, colourSwatch(c.mean_colour.srgb, `The mean colour, ${meanColourText(c)}`, ' large'),
-      h('span', {}, h('strong', {}, 'Mean colour '), meanColourText(c))),
+    h('p', { class: 'colour-mean' }, colourSwatch(c.mean_colour.srgb, `The face-up area's light averaged, ${meanColourText(c)}`, ' large'),
+      h('span', {}, h('strong', {}, 'Colour seen from afar '), meanColourText(c),
+        h('br'), h('span', { class: 'muted' }, 'the face-up area\'s light averaged; the table averages its pixels\' CIELAB'))),
     h('table', { class: 'data colour-lab' },
       h('caption', {}, `CIELAB over the stone's ${fmtInt(c.pixels)} pixels, ± one standard error`),
       h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, ''), h('th', { scope: 'col', class: 'num' }, 'Mean'),
