@@ -51,12 +51,15 @@ std::vector<Image> polariscopeFrames(const Polariscope& p) {
         smooth.push_back(std::move(s));
     }
     const Rgb ink{0.85f, 0.85f, 0.85f};
+    // A small grid's cells drawn as blocks, so that the frame holds its label: at least 160 pixels across.
+    const int cell = std::max(1, 160 / n), side = n * cell;
     for (size_t k = 0; k < p.readings.size(); ++k) {
-        Image image(n, n + 24, {0, 0, 0});
-        for (int y = 0; y < n; ++y)
-            for (int x = 0; x < n; ++x) {
+        Image image(side, side + 24, {0, 0, 0});
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) {
                 // Square root: the dim extinction positions stay visibly dark against a bright blink.
-                const float v = float(std::sqrt(smooth[k][size_t(y) * size_t(n) + size_t(x)] / brightest));
+                const size_t at = size_t(y / cell) * size_t(n) + size_t(x / cell);
+                const float v = float(std::sqrt(smooth[k][at] / brightest));
                 image.at(x, y + 24) = {v, v, v};
             }
         const PolariscopeReading& r = p.readings[k];

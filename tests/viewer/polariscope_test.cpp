@@ -141,7 +141,10 @@ TEST(Polariscope, PicturesShowTheLightWhereItLeavesAndBlinkWithIt) {
     }
     const std::vector<Image> frames = polariscopeFrames(p);
     ASSERT_EQ(frames.size(), 4u);
-    auto centre = [&](const Image& f) { return f.at(20, 20 + 24).r; };
+    // A 40-cell grid drawn in blocks of 4 pixels, so that the label above fits.
+    EXPECT_EQ(frames[0].width(), 160);
+    EXPECT_EQ(frames[0].height(), 160 + 24);
+    auto centre = [&](const Image& f) { return f.at(80, 80 + 24).r; };
     EXPECT_EQ(centre(frames[0]), 0.0f);
     EXPECT_GT(centre(frames[1]), 0.5f);
 }
