@@ -433,6 +433,73 @@ struct BandExits {
     BandExit& lane(uint32_t id) { return exits[id]; }
 };
 
+// A birefringent stone's photons, one per lane: the exit search a packet at a time, the rest of each step
+// (PhotonWalker::meet(): the crystal interface, in scalar double arithmetic) lane by lane, each lane's photon
+// kept whole. Started one photon at a time (PhotonWalker::start()), as a crystal's entry is not in
+// enterBeam().
+struct alignas(64) CrystalPacket {
+    float px[kMaxLanes]{}, py[kMaxLanes]{}, pz[kMaxLanes]{};  // the photons' p and d, for the exit search
+    float dx[kMaxLanes]{}, dy[kMaxLanes]{}, dz[kMaxLanes]{};
+    PhotonWalker::Photon ph[kMaxLanes];
+    uint32_t id[kMaxLanes]{};
+    LaneBits live = 0;
+
+    void put(int k, const PhotonWalker::Photon& photon, uint32_t photonId) {
+        ph[k] = photon;
+        px[k] = photon.p.x, py[k] = photon.p.y, pz[k] = photon.p.z;
+        dx[k] = photon.d.x, dy[k] = photon.d.y, dz[k] = photon.d.z;
+        id[k] = photonId;
+        live |= LaneBits(1) << k;
+    }
+};
+
+// PhotonWalker::step() for every live lane; the lanes whose photon is done are no longer live.
+template <class Visitor>
+void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
+    Floats t;
+    Facets facet;
+    LeavePacket(s.convex, maskOf(lanes.live), Floats::load(lanes.px), Floats::load(lanes.py),
+                Floats::load(lanes.pz), Floats::load(lanes.dx), Floats::load(lanes.dy),
+                Floats::load(lanes.dz), t, facet);
+    alignas(64) float ts[kMaxLanes];
+    alignas(64) int32_t facets[kMaxLanes];
+    t.store(ts);
+    hn::StoreU(facet, IndexTag(), facets);
+    forEachLane(lanes.live, [&](int k) {
+        PhotonWalker::Photon& ph = lanes.ph[k];
+        auto& v = visit.lane(lanes.id[k]);
+        bool stays = false;
+        if (!(ts[k] < kInf)) {
+            v.lost(ph.bounces);
+        } else {
+            stays = PhotonWalker::meet(s.trace, SurfaceHit{ts[k], uint32_t(facets[k])}, v, ph);
+        }
+        if (!stays) {
+            lanes.live &= ~(LaneBits(1) << k);
+            return;
+        }
+        lanes.px[k] = ph.p.x, lanes.py[k] = ph.p.y, lanes.pz[k] = ph.p.z;
+        lanes.dx[k] = ph.d.x, lanes.dy[k] = ph.d.y, lanes.dz[k] = ph.d.z;
+    });
+}
+
+// Photons [begin, end) of a birefringent convex stone, a packet at a time (walkLanes() for CrystalPacket).
+void walkCrystalPhotons(const Packets& s, uint64_t begin, uint64_t end, Tally& tally) {
+    const LaneBits all = laneCount() == 64 ? ~LaneBits(0) : (LaneBits(1) << laneCount()) - 1;
+    CrystalPacket lanes;
+    uint64_t next = begin;
+    for (;;) {
+        for (LaneBits empty = all & ~lanes.live; empty && next < end; ++next) {
+            PhotonWalker::Photon ph;
+            if (!PhotonWalker::start(s.trace, s.convex, next, tally, ph)) continue;
+            lanes.put(std::countr_zero(empty), ph, uint32_t(next - begin));
+            empty &= empty - 1;
+        }
+        if (!lanes.live) return;
+        stepCrystalPacket(s, lanes, tally);
+    }
+}
+
 // Photons [begin, end) of a convex stone, a packet at a time; with `keep`, a collimated beam's packets'
 // starts into keep[0], keep[1], ... in turn.
 void walkPhotons(const Packets& s, uint64_t begin, uint64_t end, Tally& tally, KeptStart* keep) {
@@ -457,6 +524,10 @@ void walkBands(const Packets& s, uint64_t begin, uint64_t end, std::span<const F
 // takes, so the tally has the same bits.
 void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
                  PhotonWalker::Tally& tally) {
+    if (s.trace.birefringent()) {
+        walkCrystalPhotons(s, begin, end, tally);
+        return;
+    }
     walkPhotons(s, begin, end, tally, nullptr);
 }
 

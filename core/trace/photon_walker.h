@@ -145,6 +145,13 @@ class PhotonWalker {
             visit.lost(ph.bounces);
             return false;
         }
+        return meet(s, hit, visit, ph);
+    }
+
+    // step() once the exit search has found `hit`: the segment's absorption, then the facet's reflection or
+    // exit. The packet walk of a birefringent stone calls it for each lane after its packet's exit search.
+    template <class Visitor>
+    static bool meet(const TraceBase& s, const SurfaceHit& hit, Visitor& visit, Photon& ph) {
         if (s.absorbs()) {
             if constexpr (requires { visit.attenuated(0.0f); }) {
                 // A weighted view ray (viewer/colour_view.cpp) keeps going and adds up alpha L instead.
@@ -456,10 +463,11 @@ class PhotonWalker {
         uint32_t maxBounces;
     };
     // Photons [begin, end) of a convex stone a packet at a time, one per SIMD lane, on the CPU's best
-    // target. Each photon takes exactly the steps walk() takes, so the tally has the same bits.
+    // target. Each photon takes exactly the steps walk() takes, so the tally has the same bits. A
+    // birefringent stone's lanes share the exit search and meet() their facets one lane at a time.
     static void packets(const TraceBase& s, uint64_t begin, uint64_t end, Tally& t);
     // The packet walk of blockBands(), on a convex stone; and packets() and bandPackets() of the same
-    // photons, which start a collimated beam's photons once for both. None walks a birefringent stone.
+    // photons, which start a collimated beam's photons once for both. Neither walks a birefringent stone.
     static void bandPackets(const TraceBase& s, uint64_t begin, uint64_t end, std::span<const FireBand> bands,
                             std::span<BandExit> exits);
     static void packetsAndBands(const TraceBase& s, uint64_t begin, uint64_t end, Tally& t,
@@ -468,10 +476,8 @@ class PhotonWalker {
     // Photons [begin, end) into one thread's tally.
     static void tally(const TraceBase& s, uint64_t begin, uint64_t end, FacetStats& stats) {
         Tally t{s, stats};
-        if (s.scene().convex() && !s.birefringent()) {
+        if (s.scene().convex()) {
             packets(s, begin, end, t);
-        } else if (s.scene().convex()) {
-            for (uint64_t i = begin; i < end; ++i) walk(s, *s.scene().convex(), i, t);
         } else {
             for (uint64_t i = begin; i < end; ++i) walk(s, *s.scene().embree(), i, t);
         }

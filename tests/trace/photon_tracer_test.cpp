@@ -274,6 +274,8 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
         std::optional<double> polarizerDeg = std::nullopt;
         bool absorbing = false;
         std::string material = "diamond";
+        double opticAxisTiltDeg = 0;
+        double opticAxisRotationDeg = 0;
     };
     // Absorbing more at the ends of the spectrum, differently for the extraordinary wave.
     const AbsorptionSpectrum spectrum{{400, 550, 700}, {0.3, 0.05, 0.15}, {0.1, 0.25, 0.02}};
@@ -330,7 +332,44 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
                On,
                {},
                true,
-               "tourmaline"}}) {
+               "tourmaline"},
+          // The crystal packet walk: the axis tilted so that no wave is near it, and near it (the coherent
+          // zone, reflections along the table's normal), absorbing, through a polariser; and a biaxial stone.
+          Case{"sapphire, tilted axis, collimated, tilted, dispersion, 6 bounces at most",
+               LightModelKind::Collimated,
+               true,
+               20,
+               6,
+               U,
+               On,
+               {},
+               false,
+               "sapphire",
+               35},
+          Case{"absorbing sapphire, axis on the table's normal, hemisphere",
+               LightModelKind::Hemisphere,
+               false,
+               0,
+               64,
+               U,
+               On,
+               {},
+               true,
+               "sapphire"},
+          Case{"absorbing sapphire, tilted axis, collimated through a polariser, 5 bounces at most",
+               LightModelKind::Collimated, true, 0, 5, U, On, 30.0, true, "sapphire", 60},
+          Case{"topaz, turned axes, hemisphere, dispersion, 6 bounces at most",
+               LightModelKind::Hemisphere,
+               true,
+               0,
+               6,
+               U,
+               On,
+               {},
+               false,
+               "topaz",
+               25,
+               40}}) {
         SCOPED_TRACE(c.what);
         TraceSettings settings = baseSettings(2 * kPhotonBlock + 1000);
         settings.light.model = c.light;
@@ -341,6 +380,8 @@ void expectTracePhotonReproducesTheTally(const Stone& stone) {
         settings.polarization = c.polarization;
         settings.light.polarizerDeg = c.polarizerDeg;
         settings.material = c.material;
+        settings.opticAxis.tiltDeg = c.opticAxisTiltDeg;
+        settings.opticAxis.rotationDeg = c.opticAxisRotationDeg;
         if (c.absorbing) settings.absorption = c.material == "diamond" ? isotropic : spectrum;
         const Scene scene(stone, settings);
         const TraceBase trace(scene, settings);
