@@ -435,8 +435,8 @@ struct BandExits {
 
 // A birefringent stone's photons, one per lane: the exit search a packet at a time, the rest of each step
 // (PhotonWalker::meet(): the crystal interface, in scalar double arithmetic) lane by lane, each lane's photon
-// kept whole. Started one photon at a time (PhotonWalker::start()), as a crystal's entry is not in
-// enterBeam().
+// kept whole. A collimated beam's photons are started as a packet up to their entry search (startBeam()),
+// then enter lane by lane (PhotonWalker::enterAt()); other light's one photon at a time.
 struct alignas(64) CrystalPacket {
     float px[kMaxLanes]{}, py[kMaxLanes]{}, pz[kMaxLanes]{};  // the photons' p and d, for the exit search
     float dx[kMaxLanes]{}, dy[kMaxLanes]{}, dz[kMaxLanes]{};
@@ -452,6 +452,45 @@ struct alignas(64) CrystalPacket {
         live |= LaneBits(1) << k;
     }
 };
+
+// PhotonWalker::start() for photons [first, min(first + lanes, end)) of the block from `begin`, as
+// startPacket() does: those that get in become live lanes of `started`, which has none live before.
+void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end, Tally& tally,
+                        CrystalPacket& started) {
+    const size_t count = std::min<uint64_t>(laneCount(), end - first);
+    int next = 0;  // started's next lane
+    if (!s.beam) {
+        for (uint64_t i = first; i < first + count; ++i) {
+            PhotonWalker::Photon ph;
+            if (PhotonWalker::start(s.trace, s.convex, i, tally, ph))
+                started.put(next++, ph, uint32_t(i - begin));
+        }
+        return;
+    }
+    BeamStart b;
+    Floats n;
+    alignas(64) uint64_t state[kMaxLanes];
+    startBeam(s, first, count, state, b, &n);
+    alignas(64) float index[kMaxLanes];
+    n.store(index);
+    const Vec3f d(s.light.direction());
+    forEachLane(b.photons, [&](int k) {
+        const uint32_t id = uint32_t(first - begin) + uint32_t(k);
+        tally.wavelength(b.wavelength[k]);
+        if (!(b.hits >> k & 1)) {
+            tally.missed();
+            return;
+        }
+        PhotonWalker::Photon ph;
+        ph.rng = Rng::resume(state[k]);
+        ph.n = index[k];
+        ph.nE = s.trace.principalIndex(2, b.wavelength[k]);
+        if (s.trace.biaxial()) ph.nA = s.trace.principalIndex(0, b.wavelength[k]);
+        ph.setAbsorption(s.trace, b.wavelength[k]);
+        if (PhotonWalker::enterAt(s.trace, uint32_t(b.hit.facet[k]), b.hit.p(k), d, tally, ph))
+            started.put(next++, ph, id);
+    });
+}
 
 // PhotonWalker::step() for every live lane; the lanes whose photon is done are no longer live.
 template <class Visitor>
@@ -483,16 +522,22 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
     });
 }
 
-// Photons [begin, end) of a birefringent convex stone, a packet at a time (walkLanes() for CrystalPacket).
+// Photons [begin, end) of a birefringent convex stone, a packet at a time, as walkLanes() steps them.
 void walkCrystalPhotons(const Packets& s, uint64_t begin, uint64_t end, Tally& tally) {
     const LaneBits all = laneCount() == 64 ? ~LaneBits(0) : (LaneBits(1) << laneCount()) - 1;
-    CrystalPacket lanes;
-    uint64_t next = begin;
+    CrystalPacket lanes, started;  // started: photons inside the stone, waiting for a lane
+    uint64_t next = begin;         // the first photon not started
     for (;;) {
-        for (LaneBits empty = all & ~lanes.live; empty && next < end; ++next) {
-            PhotonWalker::Photon ph;
-            if (!PhotonWalker::start(s.trace, s.convex, next, tally, ph)) continue;
-            lanes.put(std::countr_zero(empty), ph, uint32_t(next - begin));
+        for (LaneBits empty = all & ~lanes.live; empty;) {
+            if (!started.live) {
+                if (next >= end) break;
+                startCrystalPacket(s, begin, next, end, tally, started);
+                next += laneCount();
+                continue;
+            }
+            const int j = std::countr_zero(started.live);
+            lanes.put(std::countr_zero(empty), started.ph[j], started.id[j]);
+            started.live &= started.live - 1;
             empty &= empty - 1;
         }
         if (!lanes.live) return;

@@ -99,39 +99,47 @@ class PhotonWalker {
     template <class Intersector, class Visitor>
     static bool enter(const TraceBase& s, const Intersector& isect, const LightRay& ray, Visitor& visit,
                       Photon& ph) {
-        Vec3f d(ray.direction), p(ray.origin);
+        const Vec3f d(ray.direction), p(ray.origin);
         SurfaceHit hit;
         if (!(s.scene().beamEntry() ? s.scene().beamEntry()->enter(p, hit) : isect.enter(p, d, hit))) {
             visit.missed();
             return false;
         }
-        p = p + d * hit.t;
+        return enterAt(s, hit.facet, p + d * hit.t, d, visit, ph);
+    }
+
+    // enter() once the entry search has found where the ray along d meets the stone: facet `facet` at p. The
+    // packet walk of a birefringent stone calls it for each lane of a collimated beam after its packet's
+    // entry search.
+    template <class Visitor>
+    static bool enterAt(const TraceBase& s, uint32_t facet, const Vec3f& p, Vec3f d, Visitor& visit,
+                        Photon& ph) {
         if (!s.fixedEntries().empty()) {
-            const TraceBase::FixedEntry& e = s.fixedEntries()[hit.facet];
+            const TraceBase::FixedEntry& e = s.fixedEntries()[facet];
             if (ph.rng.uniform() < e.reflectance) {
-                visit.reflectedAtEntry(hit.facet, p, e.reflected);
+                visit.reflectedAtEntry(facet, p, e.reflected);
                 return false;
             }
             d = e.refracted;
         } else if (s.polarized()) {
             ph.pol = s.sourcePolarization(d);
-            const Vec3f& normal = s.scene().normal(hit.facet);
-            if (!(s.birefringent() ? enterCrystalWave(s, normal, hit.facet, p, d, visit, ph)
-                                   : enterPolarized(normal, 1.0f / ph.n, hit.facet, p, d, visit, ph)))
+            const Vec3f& normal = s.scene().normal(facet);
+            if (!(s.birefringent() ? enterCrystalWave(s, normal, facet, p, d, visit, ph)
+                                   : enterPolarized(normal, 1.0f / ph.n, facet, p, d, visit, ph)))
                 return false;
         } else {
-            const Vec3f normal = s.scene().normal(hit.facet);
+            const Vec3f normal = s.scene().normal(facet);
             const float cosI = std::clamp(-dot(d, normal), 0.0f, 1.0f);
             const float eta = 1.0f / ph.n;
             const FresnelResult fr = fresnel(cosI, eta);
             if (ph.rng.uniform() < fr.reflectance) {
-                visit.reflectedAtEntry(hit.facet, p, reflectOff(d, normal, cosI));
+                visit.reflectedAtEntry(facet, p, reflectOff(d, normal, cosI));
                 return false;
             }
             d = refractIn(d, normal, eta, cosI, fr.cosT);
         }
         ph.depth = absorbing(ph) ? freePath(ph.rng) : 0.0f;
-        visit.entered(hit.facet);
+        visit.entered(facet);
         ph.p = p;
         ph.d = d;
         return true;
