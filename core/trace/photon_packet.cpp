@@ -400,39 +400,6 @@ void stepPacket(const Packets& s, Packet& lanes, Visitor& visit) {
     lanes.live = reflects & ~trapped;
 }
 
-// Steps lanes until start(started) has no more photons to put into `started` (which has none live when it is
-// called) and every lane is done. A lane whose photon is done takes the next started photon.
-template <class Visitor, class Start>
-void walkLanes(const Packets& s, Visitor& visit, Start&& start) {
-    const LaneBits all = laneCount() == 64 ? ~LaneBits(0) : (LaneBits(1) << laneCount()) - 1;
-    Packet lanes, started;  // started: photons inside the stone, waiting for a lane
-    for (bool more = true;;) {
-        for (LaneBits empty = all & ~lanes.live; empty;) {
-            if (!started.live) {
-                if (!more || !(more = start(started))) break;
-                continue;
-            }
-            lanes.take(std::countr_zero(empty), started, std::countr_zero(started.live));
-            started.live &= started.live - 1;
-            empty &= empty - 1;
-        }
-        if (!lanes.live) return;
-        if (s.polarized) {
-            s.trace.absorbs() ? stepPacket<true, true>(s, lanes, visit)
-                              : stepPacket<true, false>(s, lanes, visit);
-        } else {
-            s.trace.absorbs() ? stepPacket<false, true>(s, lanes, visit)
-                              : stepPacket<false, false>(s, lanes, visit);
-        }
-    }
-}
-
-// The visitor of a band walk's lanes: lane id is exits[id].
-struct BandExits {
-    std::span<BandExit> exits;
-    BandExit& lane(uint32_t id) { return exits[id]; }
-};
-
 // A birefringent stone's photons, one per lane: the exit search a packet at a time, the rest of each step
 // (PhotonWalker::meet(): the crystal interface, in scalar double arithmetic) lane by lane, each lane's photon
 // kept whole. A collimated beam's photons are started as a packet up to their entry search (startBeam()),
@@ -455,15 +422,16 @@ struct alignas(64) CrystalPacket {
 
 // PhotonWalker::start() for photons [first, min(first + lanes, end)) of the block from `begin`, as
 // startPacket() does: those that get in become live lanes of `started`, which has none live before.
-void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end, Tally& tally,
+template <class Visitor>
+void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end, Visitor& visit,
                         CrystalPacket& started) {
     const size_t count = std::min<uint64_t>(laneCount(), end - first);
     int next = 0;  // started's next lane
     if (!s.beam) {
         for (uint64_t i = first; i < first + count; ++i) {
             PhotonWalker::Photon ph;
-            if (PhotonWalker::start(s.trace, s.convex, i, tally, ph))
-                started.put(next++, ph, uint32_t(i - begin));
+            const uint32_t id = uint32_t(i - begin);
+            if (PhotonWalker::start(s.trace, s.convex, i, visit.lane(id), ph)) started.put(next++, ph, id);
         }
         return;
     }
@@ -476,9 +444,10 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
     const Vec3f d(s.light.direction());
     forEachLane(b.photons, [&](int k) {
         const uint32_t id = uint32_t(first - begin) + uint32_t(k);
-        tally.wavelength(b.wavelength[k]);
+        auto& v = visit.lane(id);
+        v.wavelength(b.wavelength[k]);
         if (!(b.hits >> k & 1)) {
-            tally.missed();
+            v.missed();
             return;
         }
         PhotonWalker::Photon ph;
@@ -487,7 +456,7 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
         ph.nE = s.trace.principalIndex(2, b.wavelength[k]);
         if (s.trace.biaxial()) ph.nA = s.trace.principalIndex(0, b.wavelength[k]);
         ph.setAbsorption(s.trace, b.wavelength[k]);
-        if (PhotonWalker::enterAt(s.trace, uint32_t(b.hit.facet[k]), b.hit.p(k), d, tally, ph))
+        if (PhotonWalker::enterAt(s.trace, uint32_t(b.hit.facet[k]), b.hit.p(k), d, v, ph))
             started.put(next++, ph, id);
     });
 }
@@ -522,8 +491,10 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
     });
 }
 
-// Photons [begin, end) of a birefringent convex stone, a packet at a time, as walkLanes() steps them.
-void walkCrystalPhotons(const Packets& s, uint64_t begin, uint64_t end, Tally& tally) {
+// Photons [begin, end) of a birefringent convex stone, a packet at a time, as walkLanes() steps them, photon
+// i known to the visitor as i - begin.
+template <class Visitor>
+void walkCrystalPhotons(const Packets& s, uint64_t begin, uint64_t end, Visitor& visit) {
     const LaneBits all = laneCount() == 64 ? ~LaneBits(0) : (LaneBits(1) << laneCount()) - 1;
     CrystalPacket lanes, started;  // started: photons inside the stone, waiting for a lane
     uint64_t next = begin;         // the first photon not started
@@ -531,7 +502,7 @@ void walkCrystalPhotons(const Packets& s, uint64_t begin, uint64_t end, Tally& t
         for (LaneBits empty = all & ~lanes.live; empty;) {
             if (!started.live) {
                 if (next >= end) break;
-                startCrystalPacket(s, begin, next, end, tally, started);
+                startCrystalPacket(s, begin, next, end, visit, started);
                 next += laneCount();
                 continue;
             }
@@ -541,9 +512,42 @@ void walkCrystalPhotons(const Packets& s, uint64_t begin, uint64_t end, Tally& t
             empty &= empty - 1;
         }
         if (!lanes.live) return;
-        stepCrystalPacket(s, lanes, tally);
+        stepCrystalPacket(s, lanes, visit);
     }
 }
+
+// Steps lanes until start(started) has no more photons to put into `started` (which has none live when it is
+// called) and every lane is done. A lane whose photon is done takes the next started photon.
+template <class Visitor, class Start>
+void walkLanes(const Packets& s, Visitor& visit, Start&& start) {
+    const LaneBits all = laneCount() == 64 ? ~LaneBits(0) : (LaneBits(1) << laneCount()) - 1;
+    Packet lanes, started;  // started: photons inside the stone, waiting for a lane
+    for (bool more = true;;) {
+        for (LaneBits empty = all & ~lanes.live; empty;) {
+            if (!started.live) {
+                if (!more || !(more = start(started))) break;
+                continue;
+            }
+            lanes.take(std::countr_zero(empty), started, std::countr_zero(started.live));
+            started.live &= started.live - 1;
+            empty &= empty - 1;
+        }
+        if (!lanes.live) return;
+        if (s.polarized) {
+            s.trace.absorbs() ? stepPacket<true, true>(s, lanes, visit)
+                              : stepPacket<true, false>(s, lanes, visit);
+        } else {
+            s.trace.absorbs() ? stepPacket<false, true>(s, lanes, visit)
+                              : stepPacket<false, false>(s, lanes, visit);
+        }
+    }
+}
+
+// The visitor of a band walk's lanes: lane id is exits[id].
+struct BandExits {
+    std::span<BandExit> exits;
+    BandExit& lane(uint32_t id) { return exits[id]; }
+};
 
 // Photons [begin, end) of a convex stone, a packet at a time; with `keep`, a collimated beam's packets'
 // starts into keep[0], keep[1], ... in turn.
