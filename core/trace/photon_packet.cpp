@@ -300,17 +300,18 @@ struct KeptStart {
     alignas(64) uint64_t drawn[kMaxLanes];
 };
 
-// PhotonWalker::start() for photons [first, min(first + lanes, end)) of the block from `begin`: tallies
+// PhotonWalker::start() for photons [first, min(first + lanes, end)) of the block from `begin`: visits
 // those that miss or reflect off the stone and makes those that get in live lanes of `started`, which has
 // none live before. With `keep`, a collimated beam's start goes there too.
-void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end, Tally& tally,
+template <class Visitor>
+void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end, Visitor& visit,
                  Packet& started, KeptStart* keep) {
     const size_t count = std::min<uint64_t>(laneCount(), end - first);
     if (!s.beam) {
         int k = 0;
         for (uint64_t i = first; i < first + count; ++i) {
             PhotonWalker::Photon ph;
-            if (PhotonWalker::start(s.trace, s.convex, i, tally, ph))
+            if (PhotonWalker::start(s.trace, s.convex, i, visit.lane(uint32_t(i - begin)), ph))
                 started.put(k++, ph, uint32_t(i - begin));
         }
         return;
@@ -325,7 +326,7 @@ void startPacket(const Packets& s, uint64_t begin, uint64_t first, uint64_t end,
     alignas(64) float absorption[kMaxLanes] = {};
     if (s.trace.absorbs())
         forEachLane(b.hits, [&](int k) { absorption[k] = s.trace.absorption(b.wavelength[k]); });
-    enterBeam(s, b, n, absorption, started.rng, tally, uint32_t(first - begin), 1, started);
+    enterBeam(s, b, n, absorption, started.rng, visit, uint32_t(first - begin), 1, started);
 }
 
 // PhotonWalker::step() for every live lane of the packet, in a polarised trace or not, through an absorbing
@@ -549,13 +550,14 @@ struct BandExits {
     BandExit& lane(uint32_t id) { return exits[id]; }
 };
 
-// Photons [begin, end) of a convex stone, a packet at a time; with `keep`, a collimated beam's packets'
-// starts into keep[0], keep[1], ... in turn.
-void walkPhotons(const Packets& s, uint64_t begin, uint64_t end, Tally& tally, KeptStart* keep) {
+// Photons [begin, end) of a convex stone, a packet at a time, photon i known to the visitor as i - begin;
+// with `keep`, a collimated beam's packets' starts into keep[0], keep[1], ... in turn.
+template <class Visitor>
+void walkPhotons(const Packets& s, uint64_t begin, uint64_t end, Visitor& visit, KeptStart* keep) {
     uint64_t next = begin;
-    walkLanes(s, tally, [&](Packet& started) {
+    walkLanes(s, visit, [&](Packet& started) {
         if (next >= end) return false;
-        startPacket(s, begin, next, end, tally, started, keep);
+        startPacket(s, begin, next, end, visit, started, keep);
         if (keep) ++keep;
         next += laneCount();
         return true;
@@ -578,6 +580,12 @@ void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t en
         return;
     }
     walkPhotons(s, begin, end, tally, nullptr);
+}
+
+// walkPackets() with each photon's walk also recorded (PhotonWalker::TallyWithExits).
+void walkPacketsWithExits(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                          PhotonWalker::TallyWithExits& visit) {
+    walkPhotons(s, begin, end, visit, nullptr);
 }
 
 // The bands of photons [begin, end), one (photon, band) per lane: a packet of photons is started once (the
@@ -664,6 +672,11 @@ void walkPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t en
                  PhotonWalker::Tally& tally) {
     for (uint64_t i = begin; i < end; ++i) PhotonWalker::walk(s.trace, s.convex, i, tally);
 }
+void walkPacketsWithExits(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
+                          PhotonWalker::TallyWithExits& visit) {
+    for (uint64_t i = begin; i < end; ++i)
+        PhotonWalker::walk(s.trace, s.convex, i, visit.lane(uint32_t(i - begin)));
+}
 void walkBandPackets(const PhotonWalker::PacketScene& s, uint64_t begin, uint64_t end,
                      std::span<const FireBand> bands, std::span<PhotonWalker::BandExit> exits) {
     for (uint64_t i = begin; i < end; ++i)
@@ -686,6 +699,7 @@ HWY_AFTER_NAMESPACE();
 namespace facetlight {
 
 HWY_EXPORT(walkPackets);
+HWY_EXPORT(walkPacketsWithExits);
 HWY_EXPORT(walkBandPackets);
 HWY_EXPORT(walkPacketsAndBands);
 
@@ -706,6 +720,10 @@ PhotonWalker::PacketScene PhotonWalker::packetScene(const TraceBase& t) {
 
 void PhotonWalker::packets(const TraceBase& s, uint64_t begin, uint64_t end, Tally& tally) {
     HWY_DYNAMIC_DISPATCH(walkPackets)(packetScene(s), begin, end, tally);
+}
+
+void PhotonWalker::packetsWithExits(const TraceBase& s, uint64_t begin, uint64_t end, TallyWithExits& visit) {
+    HWY_DYNAMIC_DISPATCH(walkPacketsWithExits)(packetScene(s), begin, end, visit);
 }
 
 void PhotonWalker::packetsAndBands(const TraceBase& s, uint64_t begin, uint64_t end, Tally& tally,

@@ -3,6 +3,7 @@
 // and the view rays of the ASET view (render/aset.cpp). It reads the world from the scene and the trace's
 // own settings and caches from the TraceBase.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -24,6 +25,7 @@ namespace facetlight {
 class PhotonWalker {
   public:
     struct Tally;
+    struct TallyWithExits;
 
     // A photon inside the stone, between two interactions.
     struct Photon {
@@ -480,6 +482,21 @@ class PhotonWalker {
                             std::span<BandExit> exits);
     static void packetsAndBands(const TraceBase& s, uint64_t begin, uint64_t end, Tally& t,
                                 std::span<const FireBand> bands, std::span<BandExit> exits);
+    // packets() with each photon's walk also recorded (TallyWithExits).
+    static void packetsWithExits(const TraceBase& s, uint64_t begin, uint64_t end, TallyWithExits& visit);
+
+    // Whether every band's walk is the plain walk of the same photon, bit for bit: when the scene is not
+    // dispersive, fireBands() puts each band at the plain photon's index and wavelength and startBand() draws
+    // what start() draws. Not in a birefringent stone, whose bands take n_e from n_o (Photon::setIndex).
+    static bool bandsArePlain(const TraceBase& s, std::span<const FireBand> bands) {
+        const float wavelength = float(Material::kSodiumD);
+        return !s.scene().dispersive() && !s.birefringent() &&
+               std::ranges::all_of(bands, [&](const FireBand& b) {
+                   return std::bit_cast<uint32_t>(b.index) ==
+                              std::bit_cast<uint32_t>(s.scene().fixedIndex()) &&
+                          std::bit_cast<uint32_t>(b.wavelengthNm) == std::bit_cast<uint32_t>(wavelength);
+               });
+    }
 
     // Photons [begin, end) into one thread's tally.
     static void tally(const TraceBase& s, uint64_t begin, uint64_t end, FacetStats& stats) {
@@ -495,6 +512,10 @@ class PhotonWalker {
     // tally() and blockBands() of photons [begin, end).
     static void tallyAndBands(const TraceBase& s, uint64_t begin, uint64_t end, FacetStats& stats,
                               std::span<const FireBand> bands, std::span<BandExit> exits) {
+        if (bandsArePlain(s, bands)) {
+            tallyAsBands(s, begin, end, stats, bands.size(), exits);
+            return;
+        }
         if (!s.scene().convex() || s.birefringent()) {
             tally(s, begin, end, stats);
             blockBands(s, begin, end, bands, exits);
@@ -559,6 +580,73 @@ class PhotonWalker {
         void absorbed(uint32_t) { ++st.absorbed; }
     };
     static_assert(kWeightScale == double(1ULL << 30), "weightSquareSum's shift assumes a 2^30 scale");
+
+    // The visitor of a plain walk that also records each photon's walk as a band's: the tally, and photon
+    // (lane) id's walk into exits[id * stride].
+    struct TallyWithExit {
+        Tally& tally;
+        BandExit* exit;
+        void wavelength(float w) { tally.wavelength(w); }
+        void missed() {
+            tally.missed();
+            exit->missed();
+        }
+        void reflectedAtEntry(uint32_t facet, const Vec3f& p, const Vec3f& dir) {
+            tally.reflectedAtEntry(facet, p, dir);
+            exit->reflectedAtEntry(facet, p, dir);
+        }
+        void entered(uint32_t facet) {
+            tally.entered(facet);
+            exit->entered(facet);
+        }
+        void internalReflection(uint32_t facet) {
+            tally.internalReflection(facet);
+            exit->internalReflection(facet);
+        }
+        void exited(uint32_t facet, const Vec3f& p, const Vec3f& dir, uint32_t bounces) {
+            tally.exited(facet, p, dir, bounces);
+            exit->exited(facet, p, dir, bounces);
+        }
+        void trapped(uint32_t bounces) {
+            tally.trapped(bounces);
+            exit->trapped(bounces);
+        }
+        void lost(uint32_t bounces) {
+            tally.lost(bounces);
+            exit->lost(bounces);
+        }
+        void absorbed(uint32_t bounces) {
+            tally.absorbed(bounces);
+            exit->absorbed(bounces);
+        }
+    };
+    struct TallyWithExits {
+        std::span<BandExit> exits;
+        size_t stride;
+        TallyWithExit at;  // the lane's, re-aimed by each lane() call
+
+        TallyWithExit& lane(uint32_t id) {
+            at.exit = &exits[id * stride];
+            return at;
+        }
+    };
+
+    // tallyAndBands() where every band is the plain walk (bandsArePlain()): the plain walk once, each
+    // photon's copied to its bands.
+    static void tallyAsBands(const TraceBase& s, uint64_t begin, uint64_t end, FacetStats& stats,
+                             size_t bands, std::span<BandExit> exits) {
+        Tally t{s, stats};
+        TallyWithExits visit{exits, bands, {t, nullptr}};
+        if (s.scene().convex()) {
+            packetsWithExits(s, begin, end, visit);
+        } else {
+            for (uint64_t i = begin; i < end; ++i)
+                walk(s, *s.scene().embree(), i, visit.lane(uint32_t(i - begin)));
+        }
+        stats.photons += end - begin;
+        for (size_t i = 0; i < end - begin; ++i)
+            std::fill_n(&exits[i * bands + 1], bands - 1, exits[i * bands]);
+    }
 
   private:
     static PacketScene packetScene(const TraceBase& s);

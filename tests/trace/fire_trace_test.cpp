@@ -14,6 +14,7 @@
 #include "support/fixtures.h"
 #include "support/simd_targets.h"
 #include "trace/photon_tracer.h"
+#include "trace/photon_walker.h"
 #include "util/random.h"
 
 using namespace facetlight;
@@ -183,7 +184,8 @@ TEST(FireTrace, LeavesThePlainTallyAsItWas) {
 // walk, each photon's bands one at a time (PhotonWalker::walkBands), on every SIMD target: light that the
 // packet walk starts lane-wise (one collimated beam) and photon by photon (the others, and polarised
 // photons), a stone whose exit search skips the girdle, one without, and one traced by Embree (which takes
-// the reference walk); and the plain tally taken with them is the plain trace's.
+// the reference walk), with dispersion and without (where the bands are the plain walk); and the plain tally
+// taken with them is the plain trace's.
 TEST(FireTrace, PacketWalkReproducesTheOneByOneWalk) {
     struct Case {
         const char* what;
@@ -205,7 +207,19 @@ TEST(FireTrace, PacketWalkReproducesTheOneByOneWalk) {
         s.dispersion = false;
         s.maxBounces = 3;
     });
+    brilliant("no dispersion, unpolarised", [](TraceSettings& s) {
+        s.dispersion = false;
+        s.polarization = PolarizationMode::Off;
+    });
+    brilliant("constant index, hemisphere", [](TraceSettings& s) {
+        s.constantIndex = 2.4173;
+        s.light.model = LightModelKind::Hemisphere;
+    });
     brilliant("embree", [](TraceSettings& s) { s.intersector = IntersectorKind::Embree; });
+    brilliant("embree, no dispersion", [](TraceSettings& s) {
+        s.intersector = IntersectorKind::Embree;
+        s.dispersion = false;
+    });
     brilliant("polarised, hemisphere", [](TraceSettings& s) {
         s.polarization = PolarizationMode::On;
         s.light.model = LightModelKind::Hemisphere;
@@ -232,6 +246,8 @@ TEST(FireTrace, PacketWalkReproducesTheOneByOneWalk) {
             const Scene scene(c.stone, c.settings);
             const TraceBase trace(scene, c.settings);
             const uint64_t photons = c.settings.photons;
+            // Without dispersion the bands are the plain walk's photons (traced once for both).
+            EXPECT_EQ(PhotonWalker::bandsArePlain(trace, fireBands(scene)), !scene.dispersive());
             FacetStats stats;
             FireStats packets, reference(c.stone.facets.size());
             traceBlocks(trace, 0, blockCount(photons), 1, stats, nullptr, &packets);
