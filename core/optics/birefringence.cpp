@@ -4,6 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "optics/uniaxial_entry.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -57,9 +58,8 @@ Vec3Of<T> lift(const Vec3& v) {
 
 // Any unit vector perpendicular to unit n (Duff et al., "Building an orthonormal basis, revisited", 2017).
 Vec3 perpendicularTo(const Vec3& n) {
-    const double sign = std::copysign(1.0, n.z);
-    const double a = -1 / (sign + n.z);
-    return {1 + sign * n.x * n.x * a, sign * n.x * n.y * a, -sign * n.x};
+    const uniaxial::V3<double> p = uniaxial::perpendicularTo(uniaxial::V3<double>{n.x, n.y, n.z});
+    return {p.x, p.y, p.z};
 }
 
 // Below this |k x c| / |k| the wave normal counts as along the axis, where the ordinary and extraordinary
@@ -330,7 +330,7 @@ InsideIncidence insideIncidence(const PlaneWave& incident, const Vec3& N) {
 void checkMedia(const UniaxialMedium& crystal, double nOutside) {
     if (!(crystal.nO > 0 && crystal.nE > 0 && nOutside > 0))
         throw Error("birefringence: indices must be positive");
-    if (!(std::fabs(dot(crystal.axis, crystal.axis) - 1) < 1e-9))
+    if (!uniaxial::mediumChecks(crystal.axis, nOutside))
         throw Error("birefringence: the optic axis must be a unit vector");
 }
 
@@ -438,6 +438,15 @@ InterfaceWaves withNumberTypes(const UniaxialMedium& crystal, const Extraordinar
 InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction, const Vec3& outwardNormal,
                             double nOutside) {
     checkMedia(crystal, nOutside);
+    // Where every wave propagates, the arithmetic the packet walk's lanes share (optics/uniaxial_entry.h).
+    const uniaxial::UniaxialEntry<double> entry = uniaxial::enterUniaxial<double>(
+        crystal.nO, crystal.nE, crystal.axis, {direction.x, direction.y, direction.z},
+        {outwardNormal.x, outwardNormal.y, outwardNormal.z}, nOutside);
+    if (std::all_of(std::begin(entry.met), std::end(entry.met), [](bool met) { return met; })) {
+        InterfaceWaves out;
+        uniaxial::putInterfaceWaves(entry, out);
+        return out;
+    }
     const Vec3 N = -outwardNormal;  // along the incident energy flow, into the crystal
     const double cosI = dot(direction, N);
     if (!(cosI > 0)) throw Error("birefringence: the light does not travel into the facet");

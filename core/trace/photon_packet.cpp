@@ -17,6 +17,7 @@
 
 #include "hwy/highway.h"
 #include "intersect/convex_search-inl.h"
+#include "optics/uniaxial_entry-inl.h"
 #include "util/lanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -411,6 +412,7 @@ struct alignas(64) CrystalPacket {
     PhotonWalker::Photon ph[kMaxLanes];
     uint32_t id[kMaxLanes]{};
     LaneBits live = 0;
+    InterfaceWaves entries[kMaxLanes];  // startCrystalPacket()'s, kept from one call to the next
 
     void put(int k, const PhotonWalker::Photon& photon, uint32_t photonId) {
         ph[k] = photon;
@@ -443,6 +445,31 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
     alignas(64) float index[kMaxLanes];
     n.store(index);
     const Vec3f d(s.light.direction());
+    // A uniaxial stone's entries, lanes of doubles at a time (optics/uniaxial_entry-inl.h), for the lanes
+    // that meet it: lane k's waves are entries[slot[k]] where bit k of `entered` is set; enterAt() finds the
+    // others' (uniaxial::UniaxialEntry's conditions unmet) one at a time.
+    alignas(64) float extraordinary[kMaxLanes];
+    InterfaceWaves* entries = started.entries;
+    int slot[kMaxLanes];
+    LaneBits entered = 0;
+    const bool laneEntries = s.trace.polarized() && !s.trace.biaxial() && s.trace.fixedEntries().empty();
+    if (laneEntries) {
+        alignas(64) double nO[kMaxLanes], nE[kMaxLanes], dir[3][kMaxLanes], normal[3][kMaxLanes];
+        int lane[kMaxLanes], count = 0;
+        forEachLane(b.photons & b.hits, [&](int k) {
+            extraordinary[k] = s.trace.principalIndex(2, b.wavelength[k]);
+            const Vec3f& nk = s.trace.scene().normal(uint32_t(b.hit.facet[k]));
+            nO[count] = index[k], nE[count] = extraordinary[k];
+            dir[0][count] = d.x, dir[1][count] = d.y, dir[2][count] = d.z;
+            normal[0][count] = nk.x, normal[1][count] = nk.y, normal[2][count] = nk.z;
+            slot[k] = count, lane[count++] = k;
+        });
+        const double* const dirs[3] = {dir[0], dir[1], dir[2]};
+        const double* const normals[3] = {normal[0], normal[1], normal[2]};
+        const uint64_t met =
+            enterUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, dirs, normals, size_t(count), entries);
+        forEachLane(met, [&](int j) { entered |= LaneBits(1) << lane[j]; });
+    }
     forEachLane(b.photons, [&](int k) {
         const uint32_t id = uint32_t(first - begin) + uint32_t(k);
         auto& v = visit.lane(id);
@@ -454,10 +481,11 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
         PhotonWalker::Photon ph;
         ph.rng = Rng::resume(state[k]);
         ph.n = index[k];
-        ph.nE = s.trace.principalIndex(2, b.wavelength[k]);
+        ph.nE = laneEntries ? extraordinary[k] : s.trace.principalIndex(2, b.wavelength[k]);
         if (s.trace.biaxial()) ph.nA = s.trace.principalIndex(0, b.wavelength[k]);
         ph.setAbsorption(s.trace, b.wavelength[k]);
-        if (PhotonWalker::enterAt(s.trace, uint32_t(b.hit.facet[k]), b.hit.p(k), d, v, ph))
+        if (PhotonWalker::enterAt(s.trace, uint32_t(b.hit.facet[k]), b.hit.p(k), d, v, ph,
+                                  entered >> k & 1 ? &entries[slot[k]] : nullptr))
             started.put(next++, ph, id);
     });
 }

@@ -112,10 +112,10 @@ class PhotonWalker {
 
     // enter() once the entry search has found where the ray along d meets the stone: facet `facet` at p. The
     // packet walk of a birefringent stone calls it for each lane of a collimated beam after its packet's
-    // entry search.
+    // entry search, with the crystal's waves there (`entry`, enterCrystal()'s) where its lanes found them.
     template <class Visitor>
     static bool enterAt(const TraceBase& s, uint32_t facet, const Vec3f& p, Vec3f d, Visitor& visit,
-                        Photon& ph) {
+                        Photon& ph, const InterfaceWaves* entry = nullptr) {
         if (!s.fixedEntries().empty()) {
             const TraceBase::FixedEntry& e = s.fixedEntries()[facet];
             if (ph.rng.uniform() < e.reflectance) {
@@ -126,7 +126,7 @@ class PhotonWalker {
         } else if (s.polarized()) {
             ph.pol = s.sourcePolarization(d);
             const Vec3f& normal = s.scene().normal(facet);
-            if (!(s.birefringent() ? enterCrystalWave(s, normal, facet, p, d, visit, ph)
+            if (!(s.birefringent() ? enterCrystalWave(s, normal, facet, p, d, visit, ph, entry)
                                    : enterPolarized(normal, 1.0f / ph.n, facet, p, d, visit, ph)))
                 return false;
         } else {
@@ -291,17 +291,25 @@ class PhotonWalker {
     // fast or slow one), chosen by their energy shares for the photon's state (optics/birefringence.h); near
     // a uniaxial stone's optic axis it goes on as one polarised state at n_o instead
     // (TraceBase::nearOpticAxis). False after visit.reflectedAtEntry; else d is the wave's ray (energy)
-    // direction and ph.wave the wave.
+    // direction and ph.wave the wave. `entry`, where given, is the interface's waves, already found.
     template <class Visitor>
     static bool enterCrystalWave(const TraceBase& s, const Vec3f& normal, uint32_t facet, const Vec3f& p,
-                                 Vec3f& d, Visitor& visit, Photon& ph) {
+                                 Vec3f& d, Visitor& visit, Photon& ph,
+                                 const InterfaceWaves* entry = nullptr) {
         if (!(dot(d, normal) < 0)) {  // grazing, where float rounding put the entry: all is reflected
             visit.reflectedAtEntry(facet, p, d);
             return false;
         }
+        if (entry) return chooseCrystalWave(s, *entry, normal, facet, p, d, visit, ph);
         const InterfaceWaves w =
             s.biaxial() ? enterCrystal(s.biaxialCrystal(ph.nA, ph.n, ph.nE), toVec3(d), toVec3(normal))
                         : enterCrystal(s.crystal(ph.n, ph.nE), toVec3(d), toVec3(normal));
+        return chooseCrystalWave(s, w, normal, facet, p, d, visit, ph);
+    }
+    // enterCrystalWave() once the interface's waves w are known.
+    template <class Visitor>
+    static bool chooseCrystalWave(const TraceBase& s, const InterfaceWaves& w, const Vec3f& normal,
+                                  uint32_t facet, const Vec3f& p, Vec3f& d, Visitor& visit, Photon& ph) {
         ph.coherent = s.nearOpticAxis(w.transmitted[0].wave.waveNormal);
         if (ph.coherent) return enterPolarized(normal, 1.0f / ph.n, facet, p, d, visit, ph);
         const Coherency j = coherencyOf(ph.pol, d, Vec3f(w.incident[0].field));

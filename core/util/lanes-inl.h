@@ -72,6 +72,11 @@ template <class D>
 inline Lanes<D> sqrt(Lanes<D> a) {
     return hn::Sqrt(a.v);
 }
+// std::copysign: the magnitude of a with the sign bit of b.
+template <class D>
+inline Lanes<D> copysign(Lanes<D> a, Lanes<D> b) {
+    return hn::CopySign(a.v, b.v);
+}
 // a where the mask is set, else b: the lane-wise `mask ? a : b`.
 template <class D>
 inline Lanes<D> select(hn::Mask<D> mask, Lanes<D> a, Lanes<D> b) {

@@ -1,0 +1,154 @@
+// The entry into a uniaxial crystal computed in lanes of doubles (optics/uniaxial_entry-inl.h) against
+// enterCrystal() one incidence at a time: the same bits, on every SIMD target this machine runs.
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "optics/uniaxial_entry_test.cpp"
+#include "hwy/foreach_target.h"  // IWYU pragma: keep
+
+#include "hwy/highway.h"
+#include "optics/uniaxial_entry-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace facetlight {
+namespace HWY_NAMESPACE {
+
+// enterUniaxialLanes(); nothing on Highway's one-lane fallback, which has no lanes of doubles.
+uint64_t EnterLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
+                    const double* const direction[3], const double* const normal[3], size_t count,
+                    InterfaceWaves* out) {
+#if HWY_TARGET != HWY_SCALAR
+    return enterUniaxialLanes(axis, nOutside, nO, nE, direction, normal, count, out);
+#else
+    (void)axis, (void)nOutside, (void)nO, (void)nE, (void)direction, (void)normal, (void)count, (void)out;
+    return 0;
+#endif
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace facetlight
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+#include "support/simd_targets.h"
+
+namespace facetlight {
+HWY_EXPORT(EnterLanes);
+namespace {
+
+constexpr size_t kBatch = 16;  // up to a packet of AVX-512 float lanes, as the packet walk sends
+
+Vec3 randomUnit(std::mt19937_64& rng) {
+    std::normal_distribution<double> g;
+    return normalize(Vec3{g(rng), g(rng), g(rng)});
+}
+
+// Bit for bit, NaN payloads and the sign of zero included.
+bool same(double a, double b) {
+    return std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b);
+}
+bool same(const Vec3& a, const Vec3& b) {
+    return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
+}
+bool same(const PlaneWave& a, const PlaneWave& b) {
+    return a.mode == b.mode && same(a.waveNormal, b.waveNormal) && same(a.ray, b.ray) &&
+           same(a.field, b.field) && same(a.index, b.index);
+}
+bool same(const OutgoingWave& a, const OutgoingWave& b) {
+    bool s = same(a.wave, b.wave) && a.propagating == b.propagating && same(a.fluxRatio, b.fluxRatio);
+    for (int i = 0; i < 2; ++i)
+        s = s && same(a.amplitude[i].real(), b.amplitude[i].real()) &&
+            same(a.amplitude[i].imag(), b.amplitude[i].imag()) && same(a.share[i], b.share[i]);
+    return s;
+}
+bool same(const InterfaceWaves& a, const InterfaceWaves& b) {
+    bool s = a.incidentCount == b.incidentCount;
+    for (int i = 0; i < 2; ++i)
+        s = s && same(a.incident[i], b.incident[i]) && same(a.reflected[i], b.reflected[i]) &&
+            same(a.transmitted[i], b.transmitted[i]);
+    return s;
+}
+
+// One batch: crystals of random indices about one axis, incidences from random directions, a share of them
+// at normal incidence or along the axis (the branches the lanes take as selects).
+struct Batch {
+    Vec3 axis;
+    size_t count = kBatch;
+    alignas(64) double nO[kBatch], nE[kBatch], d[3][kBatch], n[3][kBatch];
+};
+Batch randomBatch(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> index(1.3, 2.8), u(0, 1);
+    Batch b;
+    b.axis = randomUnit(rng);
+    b.count = 1 + rng() % kBatch;  // tails shorter than a vector too
+    for (size_t j = 0; j < kBatch; ++j) {
+        b.nO[j] = index(rng), b.nE[j] = index(rng);
+        Vec3 normal = randomUnit(rng), dir = randomUnit(rng);
+        const double kind = u(rng);
+        if (kind < 0.1) {
+            dir = -normal;  // normal incidence
+        } else if (kind < 0.15) {
+            normal = -b.axis, dir = b.axis;  // along the axis at normal incidence
+        } else if (dot(dir, normal) > 0) {
+            dir = -dir;
+        }
+        for (int c = 0; c < 3; ++c) b.d[c][j] = dir[c], b.n[c][j] = normal[c];
+    }
+    return b;
+}
+
+TEST(UniaxialEntry, LanesGiveEnterCrystalsBitsOnEveryTarget) {
+    test::forEachSimdTarget([] {
+        std::mt19937_64 rng(28);
+        size_t compared = 0, incidences = 0;
+        for (int round = 0; round < 500; ++round) {
+            const Batch b = randomBatch(rng);
+            std::vector<InterfaceWaves> lanes(kBatch);
+            const double* const d[3] = {b.d[0], b.d[1], b.d[2]};
+            const double* const n[3] = {b.n[0], b.n[1], b.n[2]};
+            const uint64_t met =
+                HWY_DYNAMIC_DISPATCH(EnterLanes)(b.axis, 1, b.nO, b.nE, d, n, b.count, lanes.data());
+            ASSERT_EQ(met >> b.count, 0u);
+            for (size_t j = 0; j < b.count; ++j) {
+                ++incidences;
+                if (!(met >> j & 1)) continue;
+                const Vec3 dir{b.d[0][j], b.d[1][j], b.d[2][j]}, normal{b.n[0][j], b.n[1][j], b.n[2][j]};
+                const InterfaceWaves one =
+                    enterCrystal(UniaxialMedium{b.nO[j], b.nE[j], b.axis}, dir, normal);
+                ASSERT_TRUE(same(lanes[j], one)) << "round " << round << ", incidence " << j;
+                ++compared;
+            }
+        }
+        // Entering from air every wave propagates: each incidence is computed in lanes where there are lanes.
+        if (hwy::SupportedTargets() != HWY_SCALAR) {
+            EXPECT_EQ(compared, incidences);
+        }
+    });
+}
+
+TEST(UniaxialEntry, RefusedInputIsLeftToEnterCrystal) {
+    test::forEachSimdTarget([] {
+        alignas(64) double nO[kBatch], nE[kBatch], d[3][kBatch], n[3][kBatch];
+        for (size_t j = 0; j < kBatch; ++j) {
+            nO[j] = j % 2 ? 1.77 : -1.0, nE[j] = 1.76;  // a negative index in every other lane
+            d[0][j] = 0, d[1][j] = 0, d[2][j] = -1, n[0][j] = 0, n[1][j] = 0.6, n[2][j] = 0.8;
+        }
+        const double* const dp[3] = {d[0], d[1], d[2]};
+        const double* const np[3] = {n[0], n[1], n[2]};
+        std::vector<InterfaceWaves> out(kBatch);
+        const uint64_t met =
+            HWY_DYNAMIC_DISPATCH(EnterLanes)(Vec3{0, 0, 1}, 1, nO, nE, dp, np, kBatch, out.data());
+        EXPECT_EQ(met & 0x5555, 0u);
+        EXPECT_EQ(HWY_DYNAMIC_DISPATCH(EnterLanes)(Vec3{0, 0, 2}, 1, nO, nE, dp, np, kBatch, out.data()), 0u);
+    });
+}
+
+}  // namespace
+}  // namespace facetlight
+#endif
