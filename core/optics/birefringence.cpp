@@ -4,7 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
-#include "optics/uniaxial_entry.h"
+#include "optics/uniaxial_interface.h"
 #include "util/error.h"
 
 namespace facetlight {
@@ -438,7 +438,8 @@ InterfaceWaves withNumberTypes(const UniaxialMedium& crystal, const Extraordinar
 InterfaceWaves enterCrystal(const UniaxialMedium& crystal, const Vec3& direction, const Vec3& outwardNormal,
                             double nOutside) {
     checkMedia(crystal, nOutside);
-    // Where every wave propagates, the arithmetic the packet walk's lanes share (optics/uniaxial_entry.h).
+    // Where every wave propagates, the arithmetic the packet walk's lanes share
+    // (optics/uniaxial_interface.h).
     const uniaxial::UniaxialEntry<double> entry = uniaxial::enterUniaxial<double>(
         crystal.nO, crystal.nE, crystal.axis, {direction.x, direction.y, direction.z},
         {outwardNormal.x, outwardNormal.y, outwardNormal.z}, nOutside);
@@ -464,6 +465,28 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
     const Vec3& N = outwardNormal;  // along the incident energy flow, out of the crystal
     if (incident.mode != WaveMode::Ordinary && incident.mode != WaveMode::Extraordinary)
         throw Error("birefringence: a wave inside the crystal is ordinary or extraordinary");
+    // Where the crystal's reflected waves propagate, the arithmetic the packet walk's lanes share
+    // (optics/uniaxial_interface.h).
+    {
+        using uniaxial::V3;
+        auto v3 = [](const Vec3& v) { return V3<double>{v.x, v.y, v.z}; };
+        const uniaxial::LeavingStart<double> start = uniaxial::startLeaving<double>(
+            crystal.nO, crystal.nE, crystal.axis, v3(incident.waveNormal), v3(incident.ray),
+            v3(incident.field), incident.index, incident.mode == WaveMode::Ordinary, v3(N), nOutside);
+        auto allMet = [](const bool* met, int count) {
+            return std::all_of(met, met + count, [](bool m) { return m; });
+        };
+        if (allMet(start.out.met, 6)) {
+            const bool evanescent = start.outside2 < 0;
+            const uniaxial::UniaxialLeaving<double> w =
+                evanescent ? uniaxial::leaveIntoEvanescent(start) : uniaxial::leaveIntoPropagating(start);
+            if (allMet(w.met, w.kConditions)) {
+                InterfaceWaves out;
+                uniaxial::putInterfaceWaves(w, incident, evanescent, out);
+                return out;
+            }
+        }
+    }
     const auto [k, kt, s] = insideIncidence(incident, N);
     const ExtraordinaryRoots roots = extraordinaryRoots(crystal, kt, N);
     return withNumberTypes(crystal, roots, kt, nOutside, [&](auto c, auto i) {

@@ -17,7 +17,7 @@
 
 #include "hwy/highway.h"
 #include "intersect/convex_search-inl.h"
-#include "optics/uniaxial_entry-inl.h"
+#include "optics/uniaxial_interface-inl.h"
 #include "util/lanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -412,7 +412,9 @@ struct alignas(64) CrystalPacket {
     PhotonWalker::Photon ph[kMaxLanes];
     uint32_t id[kMaxLanes]{};
     LaneBits live = 0;
-    InterfaceWaves entries[kMaxLanes];  // startCrystalPacket()'s, kept from one call to the next
+    // The crystal's waves that the lanes found for its photons (startCrystalPacket()'s entries,
+    // stepCrystalPacket()'s leavings), kept from one call to the next.
+    InterfaceWaves waves[kMaxLanes];
 
     void put(int k, const PhotonWalker::Photon& photon, uint32_t photonId) {
         ph[k] = photon;
@@ -445,11 +447,11 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
     alignas(64) float index[kMaxLanes];
     n.store(index);
     const Vec3f d(s.light.direction());
-    // A uniaxial stone's entries, lanes of doubles at a time (optics/uniaxial_entry-inl.h), for the lanes
+    // A uniaxial stone's entries, lanes of doubles at a time (optics/uniaxial_interface-inl.h), for the lanes
     // that meet it: lane k's waves are entries[slot[k]] where bit k of `entered` is set; enterAt() finds the
     // others' (uniaxial::UniaxialEntry's conditions unmet) one at a time.
     alignas(64) float extraordinary[kMaxLanes];
-    InterfaceWaves* entries = started.entries;
+    InterfaceWaves* entries = started.waves;
     int slot[kMaxLanes];
     LaneBits entered = 0;
     const bool laneEntries = s.trace.polarized() && !s.trace.biaxial() && s.trace.fixedEntries().empty();
@@ -502,6 +504,29 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
     alignas(64) int32_t facets[kMaxLanes];
     t.store(ts);
     hn::StoreU(facet, IndexTag(), facets);
+    // A uniaxial stone's leavings, lanes of doubles at a time (optics/uniaxial_interface-inl.h), for the
+    // lanes whose photon goes on as one crystal wave: lane k's waves are lanes.waves[slot[k]] where bit k of
+    // `left` is set; meet() finds the others' one at a time.
+    int slot[kMaxLanes];
+    LaneBits left = 0;
+    if (!s.trace.biaxial()) {
+        alignas(64) double nO[kMaxLanes], nE[kMaxLanes], normal[3][kMaxLanes];
+        const PlaneWave* incident[kMaxLanes];
+        int lane[kMaxLanes], count = 0;
+        forEachLane(lanes.live, [&](int k) {
+            const PhotonWalker::Photon& ph = lanes.ph[k];
+            if (!(ts[k] < kInf) || ph.coherent) return;
+            const Vec3f& nk = s.trace.scene().normal(uint32_t(facets[k]));
+            nO[count] = ph.n, nE[count] = ph.nE;
+            normal[0][count] = nk.x, normal[1][count] = nk.y, normal[2][count] = nk.z;
+            incident[count] = &ph.wave;
+            slot[k] = count, lane[count++] = k;
+        });
+        const double* const normals[3] = {normal[0], normal[1], normal[2]};
+        const uint64_t met =
+            leaveUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, incident, normals, size_t(count), lanes.waves);
+        forEachLane(met, [&](int j) { left |= LaneBits(1) << lane[j]; });
+    }
     forEachLane(lanes.live, [&](int k) {
         PhotonWalker::Photon& ph = lanes.ph[k];
         auto& v = visit.lane(lanes.id[k]);
@@ -509,7 +534,8 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
         if (!(ts[k] < kInf)) {
             v.lost(ph.bounces);
         } else {
-            stays = PhotonWalker::meet(s.trace, SurfaceHit{ts[k], uint32_t(facets[k])}, v, ph);
+            stays = PhotonWalker::meet(s.trace, SurfaceHit{ts[k], uint32_t(facets[k])}, v, ph,
+                                       left >> k & 1 ? &lanes.waves[slot[k]] : nullptr);
         }
         if (!stays) {
             lanes.live &= ~(LaneBits(1) << k);

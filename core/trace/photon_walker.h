@@ -159,9 +159,11 @@ class PhotonWalker {
     }
 
     // step() once the exit search has found `hit`: the segment's absorption, then the facet's reflection or
-    // exit. The packet walk of a birefringent stone calls it for each lane after its packet's exit search.
+    // exit. The packet walk of a birefringent stone calls it for each lane after its packet's exit search,
+    // with the crystal's waves there (`leaving`, leaveCrystal()'s) where its lanes found them.
     template <class Visitor>
-    static bool meet(const TraceBase& s, const SurfaceHit& hit, Visitor& visit, Photon& ph) {
+    static bool meet(const TraceBase& s, const SurfaceHit& hit, Visitor& visit, Photon& ph,
+                     const InterfaceWaves* leaving = nullptr) {
         if (s.absorbs()) {
             if constexpr (requires { visit.attenuated(0.0f); }) {
                 // A weighted view ray (viewer/colour_view.cpp) keeps going and adds up alpha L instead.
@@ -174,7 +176,7 @@ class PhotonWalker {
                 }
             }
         }
-        if (s.birefringent() && !ph.coherent) return stepCrystalWave(s, hit, visit, ph);
+        if (s.birefringent() && !ph.coherent) return stepCrystalWave(s, hit, visit, ph, leaving);
         const Vec3f p = ph.p + ph.d * hit.t, d = ph.d;
         const Vec3f normal = s.scene().normal(hit.facet);
         const float cosI = std::clamp(dot(d, normal), 0.0f, 1.0f), n = ph.n;
@@ -340,17 +342,26 @@ class PhotonWalker {
 
     // step() in a birefringent stone, the exit search done: the wave leaves into the air (its state from the
     // s and p amplitudes) or reflects as the ordinary or the extraordinary wave, by their energy shares.
+    // `leaving`, where given, is the interface's waves, already found.
     template <class Visitor>
-    static bool stepCrystalWave(const TraceBase& s, const SurfaceHit& hit, Visitor& visit, Photon& ph) {
-        const Vec3f p = ph.p + ph.d * hit.t;
+    static bool stepCrystalWave(const TraceBase& s, const SurfaceHit& hit, Visitor& visit, Photon& ph,
+                                const InterfaceWaves* leaving = nullptr) {
         const Vec3 normal = toVec3(s.scene().normal(hit.facet));
         if (!(dot(ph.wave.ray, normal) > 1e-9)) {  // grazing, where float rounding put the exit
             visit.lost(ph.bounces);
             return false;
         }
+        if (leaving) return chooseLeavingWave(s, *leaving, hit, visit, ph);
         const InterfaceWaves w = s.biaxial()
                                      ? leaveCrystal(s.biaxialCrystal(ph.nA, ph.n, ph.nE), ph.wave, normal)
                                      : leaveCrystal(s.crystal(ph.n, ph.nE), ph.wave, normal);
+        return chooseLeavingWave(s, w, hit, visit, ph);
+    }
+    // stepCrystalWave() once the interface's waves w are known.
+    template <class Visitor>
+    static bool chooseLeavingWave(const TraceBase& s, const InterfaceWaves& w, const SurfaceHit& hit,
+                                  Visitor& visit, Photon& ph) {
+        const Vec3f p = ph.p + ph.d * hit.t;
         const double out = w.transmitted[0].share[0] + w.transmitted[1].share[0];
         const double ordinary = w.reflected[0].share[0];
         const double u = ph.rng.uniform() * (out + ordinary + w.reflected[1].share[0]);

@@ -1,4 +1,4 @@
-// The entry into a uniaxial crystal computed in lanes of doubles (optics/uniaxial_entry-inl.h) against
+// The entry into a uniaxial crystal computed in lanes of doubles (optics/uniaxial_interface-inl.h) against
 // enterCrystal() one incidence at a time: the same bits, on every SIMD target this machine runs.
 #include <bit>
 #include <cstdint>
@@ -9,11 +9,11 @@
 #include <gtest/gtest.h>
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "optics/uniaxial_entry_test.cpp"
+#define HWY_TARGET_INCLUDE "optics/uniaxial_interface_test.cpp"
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 
 #include "hwy/highway.h"
-#include "optics/uniaxial_entry-inl.h"
+#include "optics/uniaxial_interface-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace facetlight {
@@ -31,6 +31,18 @@ uint64_t EnterLanes(const Vec3& axis, double nOutside, const double* nO, const d
 #endif
 }
 
+// leaveUniaxialLanes(), as EnterLanes.
+uint64_t LeaveLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
+                    const PlaneWave* const incident[], const double* const normal[3], size_t count,
+                    InterfaceWaves* out) {
+#if HWY_TARGET != HWY_SCALAR
+    return leaveUniaxialLanes(axis, nOutside, nO, nE, incident, normal, count, out);
+#else
+    (void)axis, (void)nOutside, (void)nO, (void)nE, (void)incident, (void)normal, (void)count, (void)out;
+    return 0;
+#endif
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace facetlight
 HWY_AFTER_NAMESPACE();
@@ -40,6 +52,7 @@ HWY_AFTER_NAMESPACE();
 
 namespace facetlight {
 HWY_EXPORT(EnterLanes);
+HWY_EXPORT(LeaveLanes);
 namespace {
 
 constexpr size_t kBatch = 16;  // up to a packet of AVX-512 float lanes, as the packet walk sends
@@ -83,12 +96,13 @@ struct Batch {
     alignas(64) double nO[kBatch], nE[kBatch], d[3][kBatch], n[3][kBatch];
 };
 Batch randomBatch(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> index(1.3, 2.8), u(0, 1);
+    // Birefringence up to calcite's (0.17) and beyond.
+    std::uniform_real_distribution<double> index(1.3, 2.8), birefringence(-0.2, 0.2), u(0, 1);
     Batch b;
     b.axis = randomUnit(rng);
     b.count = 1 + rng() % kBatch;  // tails shorter than a vector too
     for (size_t j = 0; j < kBatch; ++j) {
-        b.nO[j] = index(rng), b.nE[j] = index(rng);
+        b.nO[j] = index(rng), b.nE[j] = b.nO[j] + birefringence(rng);
         Vec3 normal = randomUnit(rng), dir = randomUnit(rng);
         const double kind = u(rng);
         if (kind < 0.1) {
@@ -128,6 +142,57 @@ TEST(UniaxialEntry, LanesGiveEnterCrystalsBitsOnEveryTarget) {
         // Entering from air every wave propagates: each incidence is computed in lanes where there are lanes.
         if (hwy::SupportedTargets() != HWY_SCALAR) {
             EXPECT_EQ(compared, incidences);
+        }
+    });
+}
+
+// Crystal waves of random kind and wave normal meeting random facets from inside: partly out, or totally
+// reflected (the outside waves evanescent), a share at normal incidence.
+TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
+    test::forEachSimdTarget([] {
+        std::mt19937_64 rng(29);
+        std::uniform_real_distribution<double> u(0, 1);
+        size_t compared = 0, incidences = 0, out = 0, totallyReflected = 0;
+        for (int round = 0; round < 500; ++round) {
+            Batch b = randomBatch(rng);
+            PlaneWave waves[kBatch];
+            const PlaneWave* incident[kBatch];
+            for (size_t j = 0; j < kBatch; ++j) {
+                const UniaxialMedium crystal{b.nO[j], b.nE[j], b.axis};
+                const Vec3 k = randomUnit(rng);
+                waves[j] = u(rng) < 0.5 ? ordinaryWave(crystal, k) : extraordinaryWave(crystal, k);
+                Vec3 normal = u(rng) < 0.05 ? waves[j].ray : randomUnit(rng);
+                if (dot(waves[j].ray, normal) < 0) normal = -normal;
+                for (int c = 0; c < 3; ++c) b.n[c][j] = normal[c];
+                incident[j] = &waves[j];
+            }
+            std::vector<InterfaceWaves> lanes(kBatch);
+            const double* const n[3] = {b.n[0], b.n[1], b.n[2]};
+            const uint64_t met =
+                HWY_DYNAMIC_DISPATCH(LeaveLanes)(b.axis, 1, b.nO, b.nE, incident, n, b.count, lanes.data());
+            ASSERT_EQ(met >> b.count, 0u);
+            for (size_t j = 0; j < b.count; ++j) {
+                ++incidences;
+                const Vec3 normal{b.n[0][j], b.n[1][j], b.n[2][j]};
+                const InterfaceWaves one =
+                    leaveCrystal(UniaxialMedium{b.nO[j], b.nE[j], b.axis}, waves[j], normal);
+                const bool crystalReal = one.reflected[0].propagating && one.reflected[1].propagating;
+                if (!(met >> j & 1)) {
+                    if (hwy::SupportedTargets() != HWY_SCALAR) {
+                        EXPECT_FALSE(crystalReal);
+                    }
+                    continue;
+                }
+                ASSERT_TRUE(same(lanes[j], one)) << "round " << round << ", incidence " << j;
+                ++compared;
+                (one.totalInternalReflection() ? totallyReflected : out) += 1;
+            }
+        }
+        if (hwy::SupportedTargets() != HWY_SCALAR) {
+            // Only a crystal wave evanescent is left to leaveCrystal (above); both outside cases are met.
+            EXPECT_GT(compared, incidences * 8 / 10);
+            EXPECT_GT(out, compared / 10);
+            EXPECT_GT(totallyReflected, compared / 10);
         }
     });
 }

@@ -1,0 +1,132 @@
+// Inside core/ (per SIMD target, included after hwy/foreach_target.h or hwy/highway.h): the entry into a
+// uniaxial crystal (optics/uniaxial_interface.h) for several photons at once, lanes of doubles, with the bits
+// of enterCrystal() for each.
+#if defined(FACETLIGHT_UNIAXIAL_INTERFACE_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef FACETLIGHT_UNIAXIAL_INTERFACE_INL_H_
+#undef FACETLIGHT_UNIAXIAL_INTERFACE_INL_H_
+#else
+#define FACETLIGHT_UNIAXIAL_INTERFACE_INL_H_
+#endif
+
+#include <algorithm>
+#include <cstdint>
+
+#include "hwy/highway.h"
+#include "optics/uniaxial_interface.h"
+#include "util/lanes-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace facetlight {
+namespace HWY_NAMESPACE {
+#if HWY_TARGET != HWY_SCALAR
+
+// Light from the isotropic medium of index nOutside entering crystals {nO[j], nE[j], axis} along unit
+// direction[j] through facets of unit outward normal[j], for j < count (each array readable up to count
+// rounded up to a whole vector of doubles): out[j] = enterCrystal(...) for each j whose bit is set in the
+// result (every wave propagating, no degenerate direction); the others are left to enterCrystal.
+HWY_INLINE uint64_t enterUniaxialLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
+                                       const double* const direction[3], const double* const normal[3],
+                                       size_t count, InterfaceWaves* out) {
+    if (!uniaxial::mediumChecks(axis, nOutside)) return 0;
+    const DoubleTag d;
+    const size_t lanes = hn::Lanes(d);
+    using Entry = uniaxial::UniaxialEntry<Doubles>;
+    alignas(64) double numbers[Entry::kNumbers][HWY_LANES(double)];
+    uint64_t entered = 0;
+    for (size_t first = 0; first < count; first += lanes) {
+        auto load = [&](const double* const v[3]) {
+            return uniaxial::V3<Doubles>{Doubles::load(v[0] + first), Doubles::load(v[1] + first),
+                                         Doubles::load(v[2] + first)};
+        };
+        Entry e = uniaxial::enterUniaxial(Doubles::load(nO + first), Doubles::load(nE + first), axis,
+                                          load(direction), load(normal), nOutside);
+        auto met = e.met[0];
+        for (int i = 1; i < Entry::kConditions; ++i) met = hn::And(met, e.met[i]);
+        uint64_t bits = 0;
+        hn::StoreMaskBits(d, met, reinterpret_cast<uint8_t*>(&bits));
+        bits &= count - first >= 64 ? ~uint64_t(0) : (uint64_t(1) << (count - first)) - 1;
+        if (!bits) continue;
+        int i = 0;
+        e.forEachNumber([&](Doubles& v) { v.store(numbers[i++]); });
+        for (uint64_t b = bits; b; b &= b - 1) {
+            const int k = __builtin_ctzll(b);
+            uniaxial::UniaxialEntry<double> one;
+            int j = 0;
+            one.forEachNumber([&](double& v) { v = numbers[j++][k]; });
+            uniaxial::putInterfaceWaves(one, out[first + k]);
+        }
+        entered |= bits << first;
+    }
+    return entered;
+}
+
+// A crystal wave incident[j] of crystal {nO[j], nE[j], axis} meeting a facet of unit outward normal[j] from
+// inside, the isotropic medium outside of index nOutside, for j < count (nO, nE and normal readable as
+// above): out[j] = leaveCrystal(...) for each j whose bit is set in the result (the crystal's reflected waves
+// propagating; the outside ones too, or neither); the others are left to leaveCrystal.
+HWY_INLINE uint64_t leaveUniaxialLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
+                                       const PlaneWave* const incident[], const double* const normal[3],
+                                       size_t count, InterfaceWaves* out) {
+    if (!uniaxial::mediumChecks(axis, nOutside)) return 0;
+    const DoubleTag d;
+    const size_t lanes = hn::Lanes(d);
+    using Leaving = uniaxial::UniaxialLeaving<Doubles>;
+    constexpr size_t kLanes = HWY_LANES(double);
+    alignas(64) double numbers[Leaving::kNumbers][kLanes];
+    // The incident waves' numbers: wave normal, ray, field, index, ordinary (1) or not (0).
+    alignas(64) double wave[11][kLanes];
+    uint64_t left = 0;
+    for (size_t first = 0; first < count; first += lanes) {
+        const size_t here = std::min(lanes, count - first);
+        for (size_t k = 0; k < lanes; ++k) {
+            const PlaneWave& p = *incident[first + std::min(k, here - 1)];
+            const Vec3* v[3] = {&p.waveNormal, &p.ray, &p.field};
+            for (int i = 0; i < 3; ++i)
+                wave[3 * i][k] = v[i]->x, wave[3 * i + 1][k] = v[i]->y, wave[3 * i + 2][k] = v[i]->z;
+            wave[9][k] = p.index;
+            wave[10][k] = p.mode == WaveMode::Ordinary ? 1 : 0;
+        }
+        auto vec = [&](const double* x, const double* y, const double* z) {
+            return uniaxial::V3<Doubles>{Doubles::load(x), Doubles::load(y), Doubles::load(z)};
+        };
+        const uniaxial::LeavingStart<Doubles> start = uniaxial::startLeaving(
+            Doubles::load(nO + first), Doubles::load(nE + first), axis, vec(wave[0], wave[1], wave[2]),
+            vec(wave[3], wave[4], wave[5]), vec(wave[6], wave[7], wave[8]), Doubles::load(wave[9]),
+            Doubles(0.5) < Doubles::load(wave[10]),
+            vec(normal[0] + first, normal[1] + first, normal[2] + first), nOutside);
+        auto met = start.out.met[0];
+        for (int i = 1; i < Leaving::kConditions - 1; ++i) met = hn::And(met, start.out.met[i]);
+        auto bitsOf = [&](hn::Mask<DoubleTag> m) {
+            uint64_t bits = 0;
+            hn::StoreMaskBits(d, hn::And(met, m), reinterpret_cast<uint8_t*>(&bits));
+            return bits & ((uint64_t(1) << here) - 1);
+        };
+        const Doubles zero(0.0);
+        // Each kind of outside wave where a lane has it: its waves in lanes, then into each lane's out[].
+        for (const bool evanescent : {false, true}) {
+            const uint64_t kind = bitsOf(evanescent ? start.outside2 < zero : zero < start.outside2);
+            if (!kind) continue;
+            Leaving e =
+                evanescent ? uniaxial::leaveIntoEvanescent(start) : uniaxial::leaveIntoPropagating(start);
+            const uint64_t bits = kind & bitsOf(e.met[Leaving::kConditions - 1]);
+            int i = 0;
+            e.forEachNumber([&](Doubles& v) { v.store(numbers[i++]); });
+            for (uint64_t b = bits; b; b &= b - 1) {
+                const int k = __builtin_ctzll(b);
+                uniaxial::UniaxialLeaving<double> one;
+                int j = 0;
+                one.forEachNumber([&](double& v) { v = numbers[j++][k]; });
+                uniaxial::putInterfaceWaves(one, *incident[first + k], evanescent, out[first + k]);
+            }
+            left |= bits << first;
+        }
+    }
+    return left;
+}
+
+#endif  // HWY_TARGET != HWY_SCALAR
+}  // namespace HWY_NAMESPACE
+}  // namespace facetlight
+HWY_AFTER_NAMESPACE();
+
+#endif
