@@ -476,7 +476,7 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
         auto allMet = [](const bool* met, int count) {
             return std::all_of(met, met + count, [](bool m) { return m; });
         };
-        if (allMet(start.out.met, 6)) {
+        if (allMet(start.out.met, start.out.kStartConditions)) {
             const bool evanescent = start.outside2 < 0;
             const uniaxial::UniaxialLeaving<double> w =
                 evanescent ? uniaxial::leaveIntoEvanescent(start) : uniaxial::leaveIntoPropagating(start);

@@ -95,7 +95,7 @@ HWY_INLINE uint64_t leaveUniaxialLanes(const Vec3& axis, double nOutside, const 
             Doubles(0.5) < Doubles::load(wave[10]),
             vec(normal[0] + first, normal[1] + first, normal[2] + first), nOutside);
         auto met = start.out.met[0];
-        for (int i = 1; i < Leaving::kConditions - 1; ++i) met = hn::And(met, start.out.met[i]);
+        for (int i = 1; i < Leaving::kStartConditions; ++i) met = hn::And(met, start.out.met[i]);
         auto bitsOf = [&](hn::Mask<DoubleTag> m) {
             uint64_t bits = 0;
             hn::StoreMaskBits(d, hn::And(met, m), reinterpret_cast<uint8_t*>(&bits));

@@ -276,6 +276,7 @@ template <class T>
 struct UniaxialLeaving {
     using Mask = decltype(T{} < T{});
     static constexpr int kConditions = 7;
+    static constexpr int kStartConditions = 6;        // startLeaving()'s; the last, leaveInto...()'s
     static constexpr int kNumbers = 4 * (3 * 3 + 5);  // forEachNumber's
     Mask met[kConditions];
     LeavingWave<T> reflected[2], transmitted[2];
