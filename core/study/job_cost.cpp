@@ -40,6 +40,21 @@ std::string pixels(const RenderSettings& r) {
     return std::to_string(r.width) + "x" + std::to_string(r.height) + " pixels";
 }
 
+// How much longer a doubly refracting stone traced polarised takes, its rays split into two waves at every
+// facet: `uniaxial` or `biaxial` times a singly refracting one's time.
+double splitFactor(const TraceSettings& t, double uniaxial, double biaxial) {
+    if (t.polarization == PolarizationMode::Off) return 1;
+    switch (chosenOptic(t)) {
+        case Optic::Isotropic:
+            return 1;
+        case Optic::Uniaxial:
+            return uniaxial;
+        case Optic::Biaxial:
+            return biaxial;
+    }
+    return 1;
+}
+
 // The calibration traces polarised, the default (cost_calibration.cpp); an unpolarised one takes about as
 // long (0.91-0.97x its time quiet, docs/performance.md, "Polarised and birefringent tracing"), and a doubly
 // refracting stone solves each facet's waves one photon at a time: 2-11.5x (SCALAR to AVX-512, whose packet
@@ -49,16 +64,15 @@ std::string pixels(const RenderSettings& r) {
 // sapphire with its axis tilted 30 deg 0.26 s, topaz unpolarised 0.03 s; docs/performance.md, "Biaxial
 // crystal interface"), counted at 32.
 double polarizationFactor(const TraceSettings& t) {
-    if (t.polarization == PolarizationMode::Off) return 1;
-    switch (chosenOptic(t)) {
-        case Optic::Isotropic:
-            return 1;
-        case Optic::Uniaxial:
-            return 12;
-        case Optic::Biaxial:
-            return 32;
-    }
-    return 1;
+    return splitFactor(t, 12, 32);
+}
+
+// The colour view's rays split likewise: the view alone (`facetlight trace --mesh round_brilliant --photons
+// 1000 --no-view --threads 1 --material M --colour --colour-picture 100`, less the same without --colour,
+// medians of 3 interleaved runs, 2026-12-03) took ruby 0.39 s unpolarised and 1.26 s polarised (3.2x),
+// zoisite 0.34 s and 3.33 s (9.8x): counted at 4 and 10.
+double colourViewFactor(const TraceSettings& t) {
+    return splitFactor(t, 4, 10);
 }
 
 // A trace of `photons` photons (with the fire trace when enabled): every job's, and each sweep point's.
@@ -177,8 +191,8 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                          3 * px * rates.asetRay});
     }
     if (s.colour) {
-        // Each pixel `samples` paths, each a view ray at every one of `wavelengths`, at the ASET view's rate;
-        // in a sweep, at every point.
+        // Each pixel `samples` paths, each a view ray at every one of `wavelengths`, at the ASET view's rate
+        // (times the split's); in a sweep, at every point.
         const ColourSettings& c = *s.colour;
         const ColourSettings usual;
         const double views = colourViews(s);
@@ -190,7 +204,7 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                         {"colour.wavelengths", double(c.wavelengths), double(usual.wavelengths)}}),
              (views > 1 ? count(views) + " views x " : "") + count(px) + " pixels x " +
                  std::to_string(c.samples) + " paths x " + std::to_string(c.wavelengths) + " wavelengths",
-             views * px * c.samples * c.wavelengths * rates.asetRay});
+             views * px * c.samples * c.wavelengths * rates.asetRay * colourViewFactor(t)});
     }
     if (s.render) {
         const RenderSettings& r = *s.render;

@@ -175,6 +175,17 @@ TEST(JobCost, TheColourViewCostsItsRaysAPixel) {
     s.sweep->axes = {parseSweepAxis("size_mm=3:12:1")};
     const JobCost sweep = estimateJobCost(s, unitRates(), 1);
     EXPECT_NEAR(partSeconds(sweep, "colour"), 10 * 1000.0 * 1000.0 * 8 * 20 * 1e-6 * kCostSafetyFactor, 1e-9);
+
+    // Traced polarised, a doubly refracting stone's view rays split at every facet: a uniaxial stone's at 4x,
+    // a biaxial one's at 10x (measured: job_cost.cpp); unpolarised, one index, as a clear stone's.
+    s.sweep.reset();
+    const double plain = partSeconds(estimateJobCost(s, unitRates(), 1), "colour");
+    s.trace.material = "blue_sapphire";
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "colour") / plain, 4, 1e-9);
+    s.trace.material = "zoisite";
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "colour") / plain, 10, 1e-9);
+    s.trace.polarization = PolarizationMode::Off;
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "colour") / plain, 1, 1e-9);
 }
 
 // The detail of a refused job names its largest part, its size and the field that makes it large.
