@@ -67,11 +67,15 @@ double polarizationFactor(const TraceSettings& t) {
     return splitFactor(t, 12, 32);
 }
 
-// The colour view's rays split likewise: the view alone (`facetlight trace --mesh round_brilliant --photons
-// 1000 --no-view --threads 1 --material M --colour --colour-picture 100`, less the same without --colour,
-// medians of 3 interleaved runs, 2026-12-03) took ruby 0.39 s unpolarised and 1.26 s polarised (3.2x),
-// zoisite 0.34 s and 3.33 s (9.8x): counted at 4 and 10.
-double colourViewFactor(const TraceSettings& t) {
+// The viewer's and the colour view's rays split likewise, one at a time either way, so they lose no SIMD
+// lanes to the split: the colour view alone (`facetlight trace --mesh round_brilliant --photons 1000
+// --no-view
+// --threads 1 --material M --colour --colour-picture 100`, less the same without --colour, medians of 3
+// interleaved runs, 2026-12-03) took ruby 0.39 s unpolarised and 1.26 s polarised (3.2x), zoisite 0.34 s and
+// 3.33 s (9.8x); the viewer (the same without --no-view and --colour, with --view-tilts 2 --view-azimuths 1
+// --office-points 20000 --spot-photons 200000) sapphire 0.57 s and 1.77 s (3.1x), topaz 0.50 s and 4.57 s
+// (9.1x), diamond 0.87 s and 1.21 s: counted at 4 and 10.
+double viewRayFactor(const TraceSettings& t) {
     return splitFactor(t, 4, 10);
 }
 
@@ -81,7 +85,7 @@ double traceSeconds(const TraceSettings& t, uint64_t photons, const CostRates& r
 }
 
 double viewerSeconds(const TraceSettings& t, const CostRates& rates) {
-    return t.viewer.enabled ? double(viewerUnits(t.viewer)) * rates.viewerUnit * polarizationFactor(t) : 0;
+    return t.viewer.enabled ? double(viewerUnits(t.viewer)) * rates.viewerUnit * viewRayFactor(t) : 0;
 }
 
 std::string viewerField(const ViewerSettings& v) {
@@ -204,7 +208,7 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                         {"colour.wavelengths", double(c.wavelengths), double(usual.wavelengths)}}),
              (views > 1 ? count(views) + " views x " : "") + count(px) + " pixels x " +
                  std::to_string(c.samples) + " paths x " + std::to_string(c.wavelengths) + " wavelengths",
-             views * px * c.samples * c.wavelengths * rates.asetRay * colourViewFactor(t)});
+             views * px * c.samples * c.wavelengths * rates.asetRay * viewRayFactor(t)});
     }
     if (s.render) {
         const RenderSettings& r = *s.render;
