@@ -40,6 +40,21 @@ std::string pixels(const RenderSettings& r) {
     return std::to_string(r.width) + "x" + std::to_string(r.height) + " pixels";
 }
 
+// How much longer a doubly refracting stone traced polarised takes, its rays split into two waves at every
+// facet: `uniaxial` or `biaxial` times a singly refracting one's time.
+double splitFactor(const TraceSettings& t, double uniaxial, double biaxial) {
+    if (t.polarization == PolarizationMode::Off) return 1;
+    switch (chosenOptic(t)) {
+        case Optic::Isotropic:
+            return 1;
+        case Optic::Uniaxial:
+            return uniaxial;
+        case Optic::Biaxial:
+            return biaxial;
+    }
+    return 1;
+}
+
 // The calibration traces polarised, the default (cost_calibration.cpp); an unpolarised one takes about as
 // long (0.91-0.97x its time quiet, docs/performance.md, "Polarised and birefringent tracing"), and a doubly
 // refracting stone solves each facet's waves one photon at a time: 2-11.5x (SCALAR to AVX-512, whose packet
@@ -49,16 +64,19 @@ std::string pixels(const RenderSettings& r) {
 // sapphire with its axis tilted 30 deg 0.26 s, topaz unpolarised 0.03 s; docs/performance.md, "Biaxial
 // crystal interface"), counted at 32.
 double polarizationFactor(const TraceSettings& t) {
-    if (t.polarization == PolarizationMode::Off) return 1;
-    switch (chosenOptic(t)) {
-        case Optic::Isotropic:
-            return 1;
-        case Optic::Uniaxial:
-            return 12;
-        case Optic::Biaxial:
-            return 32;
-    }
-    return 1;
+    return splitFactor(t, 12, 32);
+}
+
+// The viewer's and the colour view's rays split likewise, one at a time either way, so they lose no SIMD
+// lanes to the split: the colour view alone (`facetlight trace --mesh round_brilliant --photons 1000
+// --no-view
+// --threads 1 --material M --colour --colour-picture 100`, less the same without --colour, medians of 3
+// interleaved runs, 2026-12-03) took ruby 0.39 s unpolarised and 1.26 s polarised (3.2x), zoisite 0.34 s and
+// 3.33 s (9.8x); the viewer (the same without --no-view and --colour, with --view-tilts 2 --view-azimuths 1
+// --office-points 20000 --spot-photons 200000) sapphire 0.57 s and 1.77 s (3.1x), topaz 0.50 s and 4.57 s
+// (9.1x), diamond 0.87 s and 1.21 s: counted at 4 and 10.
+double viewRayFactor(const TraceSettings& t) {
+    return splitFactor(t, 4, 10);
 }
 
 // A trace of `photons` photons (with the fire trace when enabled): every job's, and each sweep point's.
@@ -67,7 +85,7 @@ double traceSeconds(const TraceSettings& t, uint64_t photons, const CostRates& r
 }
 
 double viewerSeconds(const TraceSettings& t, const CostRates& rates) {
-    return t.viewer.enabled ? double(viewerUnits(t.viewer)) * rates.viewerUnit * polarizationFactor(t) : 0;
+    return t.viewer.enabled ? double(viewerUnits(t.viewer)) * rates.viewerUnit * viewRayFactor(t) : 0;
 }
 
 std::string viewerField(const ViewerSettings& v) {
@@ -177,8 +195,8 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                          3 * px * rates.asetRay});
     }
     if (s.colour) {
-        // Each pixel `samples` paths, each a view ray at every one of `wavelengths`, at the ASET view's rate;
-        // in a sweep, at every point.
+        // Each pixel `samples` paths, each a view ray at every one of `wavelengths`, at the ASET view's rate
+        // (times the split's); in a sweep, at every point.
         const ColourSettings& c = *s.colour;
         const ColourSettings usual;
         const double views = colourViews(s);
@@ -190,7 +208,7 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                         {"colour.wavelengths", double(c.wavelengths), double(usual.wavelengths)}}),
              (views > 1 ? count(views) + " views x " : "") + count(px) + " pixels x " +
                  std::to_string(c.samples) + " paths x " + std::to_string(c.wavelengths) + " wavelengths",
-             views * px * c.samples * c.wavelengths * rates.asetRay});
+             views * px * c.samples * c.wavelengths * rates.asetRay * viewRayFactor(t)});
     }
     if (s.render) {
         const RenderSettings& r = *s.render;
