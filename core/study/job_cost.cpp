@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <span>
 
 #include "optics/material.h"
 #include "scene/scene.h"
@@ -117,13 +118,32 @@ double colourViews(const StudySettings& s) {
     return n.points + (s.sweep->maximize.empty() ? 0 : s.sweep->refineRounds * n.refined);
 }
 
+// f(trace) of a sweep's point, averaged over its material axis's choices (a point's cost depends on how its
+// material splits the light), or f(t) without one.
+template <class F>
+double meanOverMaterials(const TraceSettings& t, const SweepRequest* sweep, F f) {
+    const auto axes = sweep ? std::span<const SweepAxis>(sweep->axes) : std::span<const SweepAxis>();
+    const auto material =
+        std::find_if(axes.begin(), axes.end(), [](const SweepAxis& a) { return a.name == "material"; });
+    if (material == axes.end()) return f(t);
+    double sum = 0;
+    for (const std::string& name : material->choices) {
+        TraceSettings point = t;
+        point.material = name;
+        sum += f(point);
+    }
+    return sum / double(material->choices.size());
+}
+
 // A sweep's grid, and with `maximize` its search's finer rounds (sweep/optimizer.h's maximize()).
 void addSweepParts(const TraceSettings& t, const SweepRequest& sweep, const CostRates& rates,
                    std::vector<CostPart>& parts) {
     const TraceSettings usual;
     const OptimizeSettings search;
     const auto [points, refined] = sweepGridSize(sweep);
-    const double point = traceSeconds(t, t.photons, rates) + viewerSeconds(t, rates);
+    const double point = meanOverMaterials(t, &sweep, [&](const TraceSettings& p) {
+        return traceSeconds(p, p.photons, rates) + viewerSeconds(p, rates);
+    });
     // The reference stone the viewer figures are scored against is traced once.
     parts.push_back(
         {"sweep",
@@ -138,8 +158,10 @@ void addSweepParts(const TraceSettings& t, const SweepRequest& sweep, const Cost
         growth *= double(search.photonGrowth);
         // The viewer's samples grow with the photons; each round scores against its own reference.
         const TraceSettings r = searchRoundTrace(t, photons);
-        seconds +=
-            refined * (traceSeconds(r, photons, rates) + viewerSeconds(r, rates)) + viewerSeconds(r, rates);
+        seconds += meanOverMaterials(r, &sweep, [&](const TraceSettings& p) {
+            return refined * (traceSeconds(p, photons, rates) + viewerSeconds(p, rates)) +
+                   viewerSeconds(p, rates);
+        });
     }
     const double usualGrowth = std::pow(double(search.photonGrowth), SweepRequest{}.refineRounds);
     parts.push_back({"search",
@@ -208,7 +230,8 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                         {"colour.wavelengths", double(c.wavelengths), double(usual.wavelengths)}}),
              (views > 1 ? count(views) + " views x " : "") + count(px) + " pixels x " +
                  std::to_string(c.samples) + " paths x " + std::to_string(c.wavelengths) + " wavelengths",
-             views * px * c.samples * c.wavelengths * rates.asetRay * viewRayFactor(t)});
+             views * px * c.samples * c.wavelengths * rates.asetRay *
+                 meanOverMaterials(t, s.sweep ? &*s.sweep : nullptr, viewRayFactor)});
     }
     if (s.render) {
         const RenderSettings& r = *s.render;

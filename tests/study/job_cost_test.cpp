@@ -253,6 +253,19 @@ TEST(JobCost, TheLargestPartIsNamedWithItsSizeAndField) {
     }
 }
 
+// A sweep over materials costs each point by its own material's split: diamond and topaz points average
+// 1x and 32x (the job's own material, diamond, would have priced them all at 1x).
+TEST(JobCost, ASweepOverMaterialsCostsEachPointByItsSplit) {
+    StudySettings s;
+    s.trace.viewer.enabled = false;
+    s.trace.photons = 10'000;
+    s.sweep = SweepRequest{};
+    s.sweep->axes = {parseSweepAxis("material=diamond,topaz")};
+    const double mixed = partSeconds(estimateJobCost(s, unitRates(), 1), "sweep");
+    s.sweep->axes = {parseSweepAxis("material=diamond,diamond")};
+    EXPECT_NEAR(mixed / partSeconds(estimateJobCost(s, unitRates(), 1), "sweep"), (1 + 32) / 2.0, 1e-9);
+}
+
 TEST(JobCost, ASweepCostsItsPointsAndItsSearchItsFinerRounds) {
     const CostRates rates = unitRates();
     StudySettings s;
