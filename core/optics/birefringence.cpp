@@ -785,11 +785,13 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
     for (Complex& r : q)
         if (std::fabs(r.imag()) <= 1e-9 * scale) r = r.real();
     // A double root (a wave normal on an optic axis) comes out as two roots about sqrt(rounding) apart on
-    // either side of it: their mean is the root to rounding.
+    // either side of it, along the real axis or across it (a pair with imaginary parts of that size, which
+    // would pass for evanescent waves): their mean's real part is the root to rounding.
     for (int j = 0; j < 4; ++j)
         for (int l = j + 1; l < 4; ++l)
-            if (q[j].imag() == 0 && q[l].imag() == 0 && std::norm(q[j] - q[l]) <= 1e-14 * scale * scale)
-                q[j] = q[l] = 0.5 * (q[j] + q[l]);
+            if (std::norm(q[j] - q[l]) <= 1e-14 * scale * scale && std::fabs(q[j].imag()) <= 1e-7 * scale &&
+                std::fabs(q[l].imag()) <= 1e-7 * scale)
+                q[j] = q[l] = 0.5 * (q[j].real() + q[l].real());
 
     // A real root's wave normal and index on the sheet of the index surface whose index along it is nearer
     // its |k| (a line of fixed kt may cross either sheet twice, the outer one being dimpled at the optic
@@ -978,7 +980,7 @@ PlaneWave biaxialWave(const BiaxialMedium& medium, const Vec3& waveNormal, WaveM
 InterfaceWaves enterCrystal(const BiaxialMedium& crystal, const Vec3& direction, const Vec3& outwardNormal,
                             double nOutside) {
     checkMedia(crystal, nOutside);
-    const Vec3 N = -outwardNormal;
+    const Vec3 N = -normalize(outwardNormal);  // a unit N: the quartic's k.k = kt.kt + q^2 takes it so
     const double cosI = dot(direction, N);
     if (!(cosI > 0)) throw Error("birefringence: the light does not travel into the facet");
     const Vec3 kt = (direction - N * cosI) * nOutside;
@@ -996,7 +998,9 @@ InterfaceWaves enterCrystal(const BiaxialMedium& crystal, const Vec3& direction,
 InterfaceWaves leaveCrystal(const BiaxialMedium& crystal, const PlaneWave& incident,
                             const Vec3& outwardNormal, double nOutside) {
     checkMedia(crystal, nOutside);
-    const Vec3& N = outwardNormal;
+    // A unit N, as the quartic takes it (k.k = kt.kt + q^2): a float facet normal off unit length by 1e-7
+    // moved the roots near a double one by 1e-4 (the square root), even into a complex pair.
+    const Vec3 N = normalize(outwardNormal);
     if (incident.mode != WaveMode::Fast && incident.mode != WaveMode::Slow)
         throw Error("birefringence: a wave inside a biaxial crystal is Fast or Slow");
     const auto [k, kt, s] = insideIncidence(incident, N);

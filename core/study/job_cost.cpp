@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <span>
 
 #include "optics/material.h"
 #include "scene/scene.h"
@@ -40,6 +41,21 @@ std::string pixels(const RenderSettings& r) {
     return std::to_string(r.width) + "x" + std::to_string(r.height) + " pixels";
 }
 
+// How much longer a doubly refracting stone traced polarised takes, its rays split into two waves at every
+// facet: `uniaxial` or `biaxial` times a singly refracting one's time.
+double splitFactor(const TraceSettings& t, double uniaxial, double biaxial) {
+    if (t.polarization == PolarizationMode::Off) return 1;
+    switch (chosenOptic(t)) {
+        case Optic::Isotropic:
+            return 1;
+        case Optic::Uniaxial:
+            return uniaxial;
+        case Optic::Biaxial:
+            return biaxial;
+    }
+    return 1;
+}
+
 // The calibration traces polarised, the default (cost_calibration.cpp); an unpolarised one takes about as
 // long (0.91-0.97x its time quiet, docs/performance.md, "Polarised and birefringent tracing"), and a doubly
 // refracting stone solves each facet's waves one photon at a time: 2-11.5x (SCALAR to AVX-512, whose packet
@@ -49,16 +65,19 @@ std::string pixels(const RenderSettings& r) {
 // sapphire with its axis tilted 30 deg 0.26 s, topaz unpolarised 0.03 s; docs/performance.md, "Biaxial
 // crystal interface"), counted at 32.
 double polarizationFactor(const TraceSettings& t) {
-    if (t.polarization == PolarizationMode::Off) return 1;
-    switch (chosenOptic(t)) {
-        case Optic::Isotropic:
-            return 1;
-        case Optic::Uniaxial:
-            return 12;
-        case Optic::Biaxial:
-            return 32;
-    }
-    return 1;
+    return splitFactor(t, 12, 32);
+}
+
+// The viewer's and the colour view's rays split likewise, one at a time either way, so they lose no SIMD
+// lanes to the split: the colour view alone (`facetlight trace --mesh round_brilliant --photons 1000
+// --no-view
+// --threads 1 --material M --colour --colour-picture 100`, less the same without --colour, medians of 3
+// interleaved runs, 2026-12-03) took ruby 0.39 s unpolarised and 1.26 s polarised (3.2x), zoisite 0.34 s and
+// 3.33 s (9.8x); the viewer (the same without --no-view and --colour, with --view-tilts 2 --view-azimuths 1
+// --office-points 20000 --spot-photons 200000) sapphire 0.57 s and 1.77 s (3.1x), topaz 0.50 s and 4.57 s
+// (9.1x), diamond 0.87 s and 1.21 s: counted at 4 and 10.
+double viewRayFactor(const TraceSettings& t) {
+    return splitFactor(t, 4, 10);
 }
 
 // A trace of `photons` photons (with the fire trace when enabled): every job's, and each sweep point's.
@@ -67,7 +86,7 @@ double traceSeconds(const TraceSettings& t, uint64_t photons, const CostRates& r
 }
 
 double viewerSeconds(const TraceSettings& t, const CostRates& rates) {
-    return t.viewer.enabled ? double(viewerUnits(t.viewer)) * rates.viewerUnit * polarizationFactor(t) : 0;
+    return t.viewer.enabled ? double(viewerUnits(t.viewer)) * rates.viewerUnit * viewRayFactor(t) : 0;
 }
 
 std::string viewerField(const ViewerSettings& v) {
@@ -99,13 +118,32 @@ double colourViews(const StudySettings& s) {
     return n.points + (s.sweep->maximize.empty() ? 0 : s.sweep->refineRounds * n.refined);
 }
 
+// f(trace) of a sweep's point, averaged over its material axis's choices (a point's cost depends on how its
+// material splits the light), or f(t) without one.
+template <class F>
+double meanOverMaterials(const TraceSettings& t, const SweepRequest* sweep, F f) {
+    const auto axes = sweep ? std::span<const SweepAxis>(sweep->axes) : std::span<const SweepAxis>();
+    const auto material =
+        std::find_if(axes.begin(), axes.end(), [](const SweepAxis& a) { return a.name == "material"; });
+    if (material == axes.end()) return f(t);
+    double sum = 0;
+    for (const std::string& name : material->choices) {
+        TraceSettings point = t;
+        point.material = name;
+        sum += f(point);
+    }
+    return sum / double(material->choices.size());
+}
+
 // A sweep's grid, and with `maximize` its search's finer rounds (sweep/optimizer.h's maximize()).
 void addSweepParts(const TraceSettings& t, const SweepRequest& sweep, const CostRates& rates,
                    std::vector<CostPart>& parts) {
     const TraceSettings usual;
     const OptimizeSettings search;
     const auto [points, refined] = sweepGridSize(sweep);
-    const double point = traceSeconds(t, t.photons, rates) + viewerSeconds(t, rates);
+    const double point = meanOverMaterials(t, &sweep, [&](const TraceSettings& p) {
+        return traceSeconds(p, p.photons, rates) + viewerSeconds(p, rates);
+    });
     // The reference stone the viewer figures are scored against is traced once.
     parts.push_back(
         {"sweep",
@@ -120,8 +158,10 @@ void addSweepParts(const TraceSettings& t, const SweepRequest& sweep, const Cost
         growth *= double(search.photonGrowth);
         // The viewer's samples grow with the photons; each round scores against its own reference.
         const TraceSettings r = searchRoundTrace(t, photons);
-        seconds +=
-            refined * (traceSeconds(r, photons, rates) + viewerSeconds(r, rates)) + viewerSeconds(r, rates);
+        seconds += meanOverMaterials(r, &sweep, [&](const TraceSettings& p) {
+            return refined * (traceSeconds(p, photons, rates) + viewerSeconds(p, rates)) +
+                   viewerSeconds(p, rates);
+        });
     }
     const double usualGrowth = std::pow(double(search.photonGrowth), SweepRequest{}.refineRounds);
     parts.push_back({"search",
@@ -177,8 +217,8 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                          3 * px * rates.asetRay});
     }
     if (s.colour) {
-        // Each pixel `samples` paths, each a view ray at every one of `wavelengths`, at the ASET view's rate;
-        // in a sweep, at every point.
+        // Each pixel `samples` paths, each a view ray at every one of `wavelengths`, at the ASET view's rate
+        // (times the split's); in a sweep, at every point.
         const ColourSettings& c = *s.colour;
         const ColourSettings usual;
         const double views = colourViews(s);
@@ -190,7 +230,8 @@ JobCost estimateJobCost(const StudySettings& s, const CostRates& rates, int work
                         {"colour.wavelengths", double(c.wavelengths), double(usual.wavelengths)}}),
              (views > 1 ? count(views) + " views x " : "") + count(px) + " pixels x " +
                  std::to_string(c.samples) + " paths x " + std::to_string(c.wavelengths) + " wavelengths",
-             views * px * c.samples * c.wavelengths * rates.asetRay});
+             views * px * c.samples * c.wavelengths * rates.asetRay *
+                 meanOverMaterials(t, s.sweep ? &*s.sweep : nullptr, viewRayFactor)});
     }
     if (s.render) {
         const RenderSettings& r = *s.render;

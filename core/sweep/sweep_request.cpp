@@ -205,8 +205,10 @@ void checkColourPlan(const SweepPlan& plan) {
     }
 }
 
-// An optic axis along the table's normal (tilt 0 or 180 deg) has no azimuth: turning it changes no figure, to
-// the bit, so an azimuth axis needs the axis tilted, or a tilt axis beside it.
+// An optic axis along the table's normal (tilt 0 or 180 deg) has no azimuth: turning it changes no figure, so
+// an azimuth axis needs the axis tilted, or a tilt axis beside it. A biaxial stone's Z turned over (tilt 180)
+// is the exception: its X lies at 180 + 2 azimuth - rotation deg there (OpticAxisSettings::principalAxes),
+// so the azimuth turns it.
 void checkAzimuthPlan(const SweepPlan& plan) {
     const auto named = [&](const char* name) {
         return std::find_if(plan.axes.begin(), plan.axes.end(),
@@ -214,8 +216,9 @@ void checkAzimuthPlan(const SweepPlan& plan) {
     };
     const auto azimuth = named("optic_axis_azimuth");
     const double tilt = plan.trace.opticAxis.tiltDeg;
+    const bool turnsX = tilt == 180 && chosenOptic(plan.trace) == Optic::Biaxial;
     if (azimuth == plan.axes.end() || named("optic_axis_tilt") != plan.axes.end() ||
-        (tilt != 0 && tilt != 180))
+        (tilt != 0 && tilt != 180) || turnsX)
         return;
     const std::string at = itemPath("sweep.axes", size_t(azimuth - plan.axes.begin()));
     throw Error(at, at + ": the optic axis lies along the table's normal (optic_axis tilt " +

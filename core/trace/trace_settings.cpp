@@ -100,7 +100,10 @@ const Schema<TraceSettings>& traceSettingsSchema() {
             if (s.absorption && !s.absorption->extraordinaryPerMm.empty() &&
                 chosenOptic(s) != Optic::Uniaxial) {
                 const std::string field = fieldPath(path, "absorption.extraordinary_per_mm");
-                throw Error(field, field + " needs a uniaxial material (got " + chosenMaterialName(s) + ")");
+                // The spectrum may have come from an extraordinary_transmitted_colour: say both.
+                throw Error(field,
+                            field + " (or extraordinary_transmitted_colour) needs a uniaxial material (got " +
+                                chosenMaterialName(s) + ")");
             }
             // A table of rays along X, Y and Z needs a biaxial material.
             if (s.absorption && s.absorption->trichroic() && chosenOptic(s) != Optic::Biaxial) {

@@ -135,6 +135,17 @@ TEST(JobCost, PolarisedAndDoublyRefractingTracesCostTheirMeasuredFactors) {
     EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / polarised, 32, 1e-9);
     s.trace.polarization = PolarizationMode::Off;  // beta alone
     EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "trace") / polarised, 1, 1e-9);
+
+    // The viewer's rays go one at a time and split at 4x (uniaxial) and 10x (biaxial), not at the packet
+    // trace's 12x and 32x (measured: job_cost.cpp).
+    s.trace.polarization = PolarizationMode::On;
+    s.trace.material = "diamond";
+    ASSERT_TRUE(s.trace.viewer.enabled);
+    const double viewer = partSeconds(estimateJobCost(s, unitRates(), 1), "viewer");
+    s.trace.material = "sapphire";
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "viewer") / viewer, 4, 1e-9);
+    s.trace.material = "topaz";
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "viewer") / viewer, 10, 1e-9);
 }
 
 TEST(JobCost, APolariscopeCostsItsPositionsPolarised) {
@@ -175,6 +186,17 @@ TEST(JobCost, TheColourViewCostsItsRaysAPixel) {
     s.sweep->axes = {parseSweepAxis("size_mm=3:12:1")};
     const JobCost sweep = estimateJobCost(s, unitRates(), 1);
     EXPECT_NEAR(partSeconds(sweep, "colour"), 10 * 1000.0 * 1000.0 * 8 * 20 * 1e-6 * kCostSafetyFactor, 1e-9);
+
+    // Traced polarised, a doubly refracting stone's view rays split at every facet: a uniaxial stone's at 4x,
+    // a biaxial one's at 10x, as the viewer's (measured: job_cost.cpp); unpolarised, as a clear stone's.
+    s.sweep.reset();
+    const double plain = partSeconds(estimateJobCost(s, unitRates(), 1), "colour");
+    s.trace.material = "blue_sapphire";
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "colour") / plain, 4, 1e-9);
+    s.trace.material = "zoisite";
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "colour") / plain, 10, 1e-9);
+    s.trace.polarization = PolarizationMode::Off;
+    EXPECT_NEAR(partSeconds(estimateJobCost(s, unitRates(), 1), "colour") / plain, 1, 1e-9);
 }
 
 // The detail of a refused job names its largest part, its size and the field that makes it large.
@@ -229,6 +251,19 @@ TEST(JobCost, TheLargestPartIsNamedWithItsSizeAndField) {
         EXPECT_EQ(top.field, c.field) << c.size;
         EXPECT_EQ(top.size, c.size);
     }
+}
+
+// A sweep over materials costs each point by its own material's split: diamond and topaz points average
+// 1x and 32x (the job's own material, diamond, would have priced them all at 1x).
+TEST(JobCost, ASweepOverMaterialsCostsEachPointByItsSplit) {
+    StudySettings s;
+    s.trace.viewer.enabled = false;
+    s.trace.photons = 10'000;
+    s.sweep = SweepRequest{};
+    s.sweep->axes = {parseSweepAxis("material=diamond,topaz")};
+    const double mixed = partSeconds(estimateJobCost(s, unitRates(), 1), "sweep");
+    s.sweep->axes = {parseSweepAxis("material=diamond,diamond")};
+    EXPECT_NEAR(mixed / partSeconds(estimateJobCost(s, unitRates(), 1), "sweep"), (1 + 32) / 2.0, 1e-9);
 }
 
 TEST(JobCost, ASweepCostsItsPointsAndItsSearchItsFinerRounds) {

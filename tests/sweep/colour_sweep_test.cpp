@@ -325,6 +325,14 @@ TEST(ColourSweep, TheOpticAxisIsSweptOnlyWhereItMeansSomething) {
     EXPECT_EQ(azimuthField({"pavilion=40,41", "optic_axis_azimuth=0,45"}), "sweep.axes[1]");
     trace.opticAxis.tiltDeg = 30;
     EXPECT_EQ(azimuthField({"optic_axis_azimuth=0,45"}), "");
+    // A biaxial stone's Z turned over: there the azimuth turns its X (180 + 2 azimuth - rotation deg).
+    trace.material = "topaz";
+    trace.opticAxis.tiltDeg = 180;
+    EXPECT_EQ(azimuthField({"optic_axis_azimuth=0,45"}), "");
+    trace.opticAxis.tiltDeg = 0;
+    EXPECT_EQ(azimuthField({"optic_axis_azimuth=0,45"}), "sweep.axes[0]");
+    trace.material = "sapphire";
+    trace.opticAxis.tiltDeg = 30;
     // An n axis leaves no optic axis to turn; a job's own material is not swept away by a material or n axis.
     EXPECT_NE(fieldOf([&] {
                   planSweep("round_brilliant",
