@@ -57,15 +57,15 @@ double splitFactor(const TraceSettings& t, double uniaxial, double biaxial) {
 }
 
 // The calibration traces polarised, the default (cost_calibration.cpp); an unpolarised one takes about as
-// long (0.91-0.97x its time quiet, docs/performance.md, "Polarised and birefringent tracing"), and a doubly
-// refracting stone solves each facet's waves one photon at a time: 2-11.5x (SCALAR to AVX-512, whose packet
-// walk gains most), counted at 12 (bench_trace's PolarizedVsPlain, 2026-12-03). A biaxial stone finds its
-// waves from a quartic's roots at every facet: 2.65x a uniaxial one's time (`facetlight trace --mesh
-// round_brilliant --photons 200000 --threads 1 --no-view`, medians of 3 interleaved runs: topaz 0.69 s,
-// sapphire with its axis tilted 30 deg 0.26 s, topaz unpolarised 0.03 s; docs/performance.md, "Biaxial
-// crystal interface"), counted at 32.
+// long (0.91-0.97x its time quiet, docs/performance.md, "Polarised and birefringent tracing"). A doubly
+// refracting stone splits the light at every facet: a uniaxial one 2.0-5.1x (SCALAR to AVX-512, whose
+// unpolarised packet walk gains most; bench_trace's PolarizedVsPlain after the crystal interface in lanes,
+// 2026-12-03 17:20), counted at 5. A biaxial one finds its waves from a quartic's roots, lane by lane: 24x
+// (`facetlight trace --mesh round_brilliant --photons 2000000 --threads 1 --no-view`, user time, 3 runs each,
+// 2026-12-03 17:33, AVX-512: topaz 6.30-6.35 s, unpolarised 0.25-0.26 s; sapphire with its axis tilted 30 deg
+// 1.20-1.24 s, unpolarised 0.25-0.29 s), counted at 25.
 double polarizationFactor(const TraceSettings& t) {
-    return splitFactor(t, 12, 32);
+    return splitFactor(t, 5, 25);
 }
 
 // The viewer's and the colour view's rays split likewise, one at a time either way, so they lose no SIMD
