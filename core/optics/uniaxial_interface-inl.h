@@ -62,17 +62,20 @@ HWY_INLINE uint64_t enterUniaxialLanes(const Vec3& axis, double nOutside, const 
 
 // A crystal wave incident[j] of crystal {nO[j], nE[j], axis} meeting a facet of unit outward normal[j] from
 // inside, the isotropic medium outside of index nOutside, for j < count (nO, nE and normal readable as
-// above): out[j] = leaveCrystal(...) for each j whose bit is set in the result (the crystal's reflected waves
-// propagating; the outside ones too, or neither); the others are left to leaveCrystal.
+// above): for each j whose bit is set in the result (the crystal's reflected waves propagating; the outside
+// ones too, or neither), leaveCrystal(...)'s waves as uniaxial::LeavingLane{numbers + j, stride, bit j of
+// `evanescent`} reads them (UniaxialLeaving's numbers, number i at numbers[i * stride + j]; stride at least
+// count rounded up to a whole vector of doubles); the others are left to leaveCrystal. Only what a lane's
+// choice reads is read back, lane by lane, not the whole InterfaceWaves.
 HWY_INLINE uint64_t leaveUniaxialLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
                                        const PlaneWave* const incident[], const double* const normal[3],
-                                       size_t count, InterfaceWaves* out) {
+                                       size_t count, double* numbers, size_t stride, uint64_t& evanescent) {
+    evanescent = 0;
     if (!uniaxial::mediumChecks(axis, nOutside)) return 0;
     const DoubleTag d;
     const size_t lanes = hn::Lanes(d);
     using Leaving = uniaxial::UniaxialLeaving<Doubles>;
     constexpr size_t kLanes = HWY_LANES(double);
-    alignas(64) double numbers[Leaving::kNumbers][kLanes];
     // The incident waves' numbers: wave normal, ray, field, index, ordinary (1) or not (0).
     alignas(64) double wave[11][kLanes];
     uint64_t left = 0;
@@ -98,28 +101,28 @@ HWY_INLINE uint64_t leaveUniaxialLanes(const Vec3& axis, double nOutside, const 
         for (int i = 1; i < Leaving::kStartConditions; ++i) met = hn::And(met, start.out.met[i]);
         auto bitsOf = [&](hn::Mask<DoubleTag> m) {
             uint64_t bits = 0;
-            hn::StoreMaskBits(d, hn::And(met, m), reinterpret_cast<uint8_t*>(&bits));
+            hn::StoreMaskBits(d, m, reinterpret_cast<uint8_t*>(&bits));
             return bits & ((uint64_t(1) << here) - 1);
         };
         const Doubles zero(0.0);
-        // Each kind of outside wave where a lane has it: its waves in lanes, then into each lane's out[].
-        for (const bool evanescent : {false, true}) {
-            const uint64_t kind = bitsOf(evanescent ? start.outside2 < zero : zero < start.outside2);
-            if (!kind) continue;
-            Leaving e =
-                evanescent ? uniaxial::leaveIntoEvanescent(start) : uniaxial::leaveIntoPropagating(start);
-            const uint64_t bits = kind & bitsOf(e.met[Leaving::kConditions - 1]);
-            int i = 0;
-            e.forEachNumber([&](Doubles& v) { v.store(numbers[i++]); });
-            for (uint64_t b = bits; b; b &= b - 1) {
-                const int k = __builtin_ctzll(b);
-                uniaxial::UniaxialLeaving<double> one;
-                int j = 0;
-                one.forEachNumber([&](double& v) { v = numbers[j++][k]; });
-                uniaxial::putInterfaceWaves(one, *incident[first + k], evanescent, out[first + k]);
-            }
-            left |= bits << first;
+        // Each kind of outside wave where a lane has it: its waves in lanes, stored over that kind's lanes.
+        uint64_t stored = 0;  // this vector's lanes stored so far
+        for (const bool kind : {false, true}) {
+            const auto ofKind = hn::And(met, kind ? start.outside2 < zero : zero < start.outside2);
+            if (!bitsOf(ofKind)) continue;
+            Leaving e = kind ? uniaxial::leaveIntoEvanescent(start) : uniaxial::leaveIntoPropagating(start);
+            const auto mine = hn::And(ofKind, e.met[Leaving::kConditions - 1]);
+            const uint64_t bits = bitsOf(mine);
+            if (!bits) continue;
+            double* p = numbers + first;
+            e.forEachNumber([&](Doubles& v) {
+                (stored ? select(mine, v, Doubles::load(p)) : v).store(p);
+                p += stride;
+            });
+            stored |= bits;
+            if (kind) evanescent |= bits << first;
         }
+        left |= stored << first;
     }
     return left;
 }

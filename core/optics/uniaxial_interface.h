@@ -277,7 +277,8 @@ struct UniaxialLeaving {
     using Mask = decltype(T{} < T{});
     static constexpr int kConditions = 7;
     static constexpr int kStartConditions = 6;        // startLeaving()'s; the last, leaveInto...()'s
-    static constexpr int kNumbers = 4 * (3 * 3 + 5);  // forEachNumber's
+    static constexpr int kPerWave = 3 * 3 + 5;        // forEachNumber's for each wave
+    static constexpr int kNumbers = 4 * kPerWave;
     Mask met[kConditions];
     LeavingWave<T> reflected[2], transmitted[2];
 
@@ -511,6 +512,31 @@ inline void putInterfaceWaves(const UniaxialLeaving<double>& e, const PlaneWave&
     put(out.transmitted[0], WaveMode::S, e.transmitted[0], !evanescent);
     put(out.transmitted[1], WaveMode::P, e.transmitted[1], !evanescent);
 }
+
+// One lane's leaving among several kept by number (UniaxialLeaving<double>::forEachNumber's order, number i
+// at numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseLeavingWave()), read only
+// where read, the values putInterfaceWaves() would put into InterfaceWaves.
+struct LeavingLane {
+    const double* numbers;
+    size_t stride;
+    bool evanescent;
+
+    // Number i of wave w: reflected ordinary and extraordinary, then transmitted s and p.
+    double number(int w, int i) const {
+        return numbers[size_t(UniaxialLeaving<double>::kPerWave * w + i) * stride];
+    }
+    Vec3 vec(int w, int i) const { return {number(w, i), number(w, i + 1), number(w, i + 2)}; }
+    double reflectedShare(int j) const { return number(j, 13); }
+    double transmittedShare(int j) const { return number(2 + j, 13); }
+    PlaneWave reflectedWave(int j) const {
+        return {j ? WaveMode::Extraordinary : WaveMode::Ordinary, vec(j, 0), vec(j, 3), vec(j, 6),
+                number(j, 9)};
+    }
+    Complex transmittedAmplitude(int j) const { return Complex(number(2 + j, 11), number(2 + j, 12)); }
+    // The s wave's ray and field (unset when evanescent).
+    Vec3 transmittedRay() const { return evanescent ? Vec3{} : vec(2, 3); }
+    Vec3 transmittedField() const { return evanescent ? Vec3{} : vec(2, 6); }
+};
 
 #undef FACETLIGHT_AI
 #undef FACETLIGHT_AL

@@ -412,8 +412,8 @@ struct alignas(64) CrystalPacket {
     PhotonWalker::Photon ph[kMaxLanes];
     uint32_t id[kMaxLanes]{};
     LaneBits live = 0;
-    // The crystal's waves that the lanes found for its photons (startCrystalPacket()'s entries,
-    // stepCrystalPacket()'s leavings), kept from one call to the next.
+    // The crystal's waves that the lanes found where its photons entered (startCrystalPacket()'s), kept for
+    // enterAt() from one call to the next.
     InterfaceWaves waves[kMaxLanes];
 
     void put(int k, const PhotonWalker::Photon& photon, uint32_t photonId) {
@@ -505,9 +505,11 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
     t.store(ts);
     hn::StoreU(facet, IndexTag(), facets);
     // A uniaxial stone's leavings, lanes of doubles at a time (optics/uniaxial_interface-inl.h), for the
-    // lanes whose photon goes on as one crystal wave: lane k's waves are lanes.waves[slot[k]] where bit k of
-    // `left` is set; meet() finds the others' one at a time.
+    // lanes whose photon goes on as one crystal wave: lane k's waves are uniaxial::LeavingLane{leavings +
+    // slot[k], kMaxLanes, ...} where bit k of `left` is set; meet() finds the others' one at a time.
+    alignas(64) double leavings[uniaxial::UniaxialLeaving<double>::kNumbers * kMaxLanes];
     int slot[kMaxLanes];
+    uint64_t evanescent = 0;
     LaneBits left = 0;
     if (!s.trace.biaxial()) {
         alignas(64) double nO[kMaxLanes], nE[kMaxLanes], normal[3][kMaxLanes];
@@ -523,8 +525,8 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
             slot[k] = count, lane[count++] = k;
         });
         const double* const normals[3] = {normal[0], normal[1], normal[2]};
-        const uint64_t met =
-            leaveUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, incident, normals, size_t(count), lanes.waves);
+        const uint64_t met = leaveUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, incident, normals,
+                                                size_t(count), leavings, kMaxLanes, evanescent);
         forEachLane(met, [&](int j) { left |= LaneBits(1) << lane[j]; });
     }
     forEachLane(lanes.live, [&](int k) {
@@ -534,8 +536,10 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
         if (!(ts[k] < kInf)) {
             v.lost(ph.bounces);
         } else {
+            const uniaxial::LeavingLane leaving{leavings + slot[k], kMaxLanes,
+                                                bool(evanescent >> slot[k] & 1)};
             stays = PhotonWalker::meet(s.trace, SurfaceHit{ts[k], uint32_t(facets[k])}, v, ph,
-                                       left >> k & 1 ? &lanes.waves[slot[k]] : nullptr);
+                                       left >> k & 1 ? &leaving : nullptr);
         }
         if (!stays) {
             lanes.live &= ~(LaneBits(1) << k);

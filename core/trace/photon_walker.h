@@ -13,6 +13,7 @@
 #include "optics/absorption.h"
 #include "optics/birefringence.h"
 #include "optics/fresnel.h"
+#include "optics/uniaxial_interface.h"
 #include "trace/fire_trace.h"
 #include "trace/photon_tracer.h"
 #include "trace/trace_base.h"
@@ -163,7 +164,7 @@ class PhotonWalker {
     // with the crystal's waves there (`leaving`, leaveCrystal()'s) where its lanes found them.
     template <class Visitor>
     static bool meet(const TraceBase& s, const SurfaceHit& hit, Visitor& visit, Photon& ph,
-                     const InterfaceWaves* leaving = nullptr) {
+                     const uniaxial::LeavingLane* leaving = nullptr) {
         if (s.absorbs()) {
             if constexpr (requires { visit.attenuated(0.0f); }) {
                 // A weighted view ray (viewer/colour_view.cpp) keeps going and adds up alpha L instead.
@@ -345,7 +346,7 @@ class PhotonWalker {
     // `leaving`, where given, is the interface's waves, already found.
     template <class Visitor>
     static bool stepCrystalWave(const TraceBase& s, const SurfaceHit& hit, Visitor& visit, Photon& ph,
-                                const InterfaceWaves* leaving = nullptr) {
+                                const uniaxial::LeavingLane* leaving = nullptr) {
         const Vec3 normal = toVec3(s.scene().normal(hit.facet));
         if (!(dot(ph.wave.ray, normal) > 1e-9)) {  // grazing, where float rounding put the exit
             visit.lost(ph.bounces);
@@ -355,25 +356,35 @@ class PhotonWalker {
         const InterfaceWaves w = s.biaxial()
                                      ? leaveCrystal(s.biaxialCrystal(ph.nA, ph.n, ph.nE), ph.wave, normal)
                                      : leaveCrystal(s.crystal(ph.n, ph.nE), ph.wave, normal);
-        return chooseLeavingWave(s, w, hit, visit, ph);
+        return chooseLeavingWave(s, WavesLeaving{w}, hit, visit, ph);
     }
-    // stepCrystalWave() once the interface's waves w are known.
-    template <class Visitor>
-    static bool chooseLeavingWave(const TraceBase& s, const InterfaceWaves& w, const SurfaceHit& hit,
-                                  Visitor& visit, Photon& ph) {
+    // What chooseLeavingWave() reads of leaveCrystal()'s waves (uniaxial::LeavingLane: of the lanes').
+    struct WavesLeaving {
+        const InterfaceWaves& w;
+        double reflectedShare(int j) const { return w.reflected[j].share[0]; }
+        double transmittedShare(int j) const { return w.transmitted[j].share[0]; }
+        const PlaneWave& reflectedWave(int j) const { return w.reflected[j].wave; }
+        Complex transmittedAmplitude(int j) const { return w.transmitted[j].amplitude[0]; }
+        const Vec3& transmittedRay() const { return w.transmitted[0].wave.ray; }
+        const Vec3& transmittedField() const { return w.transmitted[0].wave.field; }
+    };
+    // stepCrystalWave() once the interface's waves w are known (WavesLeaving or uniaxial::LeavingLane).
+    template <class Visitor, class Waves>
+    static bool chooseLeavingWave(const TraceBase& s, const Waves& w, const SurfaceHit& hit, Visitor& visit,
+                                  Photon& ph) {
         const Vec3f p = ph.p + ph.d * hit.t;
-        const double out = w.transmitted[0].share[0] + w.transmitted[1].share[0];
-        const double ordinary = w.reflected[0].share[0];
-        const double u = ph.rng.uniform() * (out + ordinary + w.reflected[1].share[0]);
+        const double out = w.transmittedShare(0) + w.transmittedShare(1);
+        const double ordinary = w.reflectedShare(0);
+        const double u = ph.rng.uniform() * (out + ordinary + w.reflectedShare(1));
         if (u < out) {
-            const Vec3f dir(w.transmitted[0].wave.ray);
-            ph.pol = {stokesOf(w.transmitted[0].amplitude[0], w.transmitted[1].amplitude[0]),
-                      Vec3f(w.transmitted[0].wave.field)};
+            const Vec3f dir(w.transmittedRay());
+            ph.pol = {stokesOf(w.transmittedAmplitude(0), w.transmittedAmplitude(1)),
+                      Vec3f(w.transmittedField())};
             if constexpr (requires { visit.exitPolarization(ph.pol, dir); }) visit.exitPolarization(ph.pol, dir);
             visit.exited(hit.facet, p, dir, ph.bounces);
             return false;
         }
-        ph.wave = w.reflected[u < out + ordinary ? 0 : 1].wave;
+        ph.wave = w.reflectedWave(u < out + ordinary ? 0 : 1);
         ph.p = p;
         ph.d = Vec3f(ph.wave.ray);
         if (s.nearOpticAxis(ph.wave.waveNormal)) {  // the wave, linear along its field, goes on as one state

@@ -36,7 +36,33 @@ uint64_t LeaveLanes(const Vec3& axis, double nOutside, const double* nO, const d
                     const PlaneWave* const incident[], const double* const normal[3], size_t count,
                     InterfaceWaves* out) {
 #if HWY_TARGET != HWY_SCALAR
-    return leaveUniaxialLanes(axis, nOutside, nO, nE, incident, normal, count, out);
+    // Every number into out[j] as leaveCrystal() puts them, then what a photon's choice reads through
+    // uniaxial::LeavingLane over them: the comparison with leaveCrystal() checks both.
+    using Leaving = uniaxial::UniaxialLeaving<double>;
+    constexpr size_t kStride = 16;
+    alignas(64) double numbers[Leaving::kNumbers * kStride];
+    uint64_t evanescent = 0;
+    const uint64_t left =
+        leaveUniaxialLanes(axis, nOutside, nO, nE, incident, normal, count, numbers, kStride, evanescent);
+    for (uint64_t b = left; b; b &= b - 1) {
+        const int j = __builtin_ctzll(b);
+        const bool outsideEvanescent = evanescent >> j & 1;
+        Leaving one;
+        int i = 0;
+        one.forEachNumber([&](double& v) { v = numbers[i++ * kStride + j]; });
+        InterfaceWaves& w = out[j];
+        uniaxial::putInterfaceWaves(one, *incident[j], outsideEvanescent, w);
+        const uniaxial::LeavingLane lane{numbers + j, kStride, outsideEvanescent};
+        for (int k = 0; k < 2; ++k) {
+            w.reflected[k].share[0] = lane.reflectedShare(k);
+            w.reflected[k].wave = lane.reflectedWave(k);
+            w.transmitted[k].share[0] = lane.transmittedShare(k);
+            w.transmitted[k].amplitude[0] = lane.transmittedAmplitude(k);
+        }
+        w.transmitted[0].wave.ray = lane.transmittedRay();
+        w.transmitted[0].wave.field = lane.transmittedField();
+    }
+    return left;
 #else
     (void)axis, (void)nOutside, (void)nO, (void)nE, (void)incident, (void)normal, (void)count, (void)out;
     return 0;
