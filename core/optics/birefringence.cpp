@@ -494,10 +494,8 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
     });
 }
 
-double shareOf(const OutgoingWave& wave, const Coherency& j) {
-    const Complex ts = wave.amplitude[0], tp = wave.amplitude[1];
-    return wave.fluxRatio *
-           (std::norm(ts) * j.ss + std::norm(tp) * j.pp + 2 * (ts * std::conj(tp) * j.sp).real());
+double shareOf(double fluxRatio, Complex ts, Complex tp, const Coherency& j) {
+    return fluxRatio * (std::norm(ts) * j.ss + std::norm(tp) * j.pp + 2 * (ts * std::conj(tp) * j.sp).real());
 }
 
 // ---- Biaxial crystals (docs/optics.md, "Biaxial crystals") ----

@@ -146,9 +146,12 @@ InterfaceWaves enterCrystal(const BiaxialMedium& crystal, const Vec3& direction,
 InterfaceWaves leaveCrystal(const BiaxialMedium& crystal, const PlaneWave& incident,
                             const Vec3& outwardNormal, double nOutside = 1);
 
-// The energy share of `wave` for an incident state of coherency J over the incident basis:
-// fluxRatio * sum_mn t_m J_mn conj(t_n), t the wave's amplitudes.
-double shareOf(const OutgoingWave& wave, const Coherency& incident);
+// The energy share of a wave of flux ratio fluxRatio and amplitudes (ts, tp) for an incident state of
+// coherency J over the incident basis: fluxRatio * sum_mn t_m J_mn conj(t_n).
+double shareOf(double fluxRatio, Complex ts, Complex tp, const Coherency& incident);
+inline double shareOf(const OutgoingWave& wave, const Coherency& incident) {
+    return shareOf(wave.fluxRatio, wave.amplitude[0], wave.amplitude[1], incident);
+}
 
 // A photon's state (optics/polarization.h) along d as the coherency matrix over the basis whose s is `s`
 // (across d, p = d x s): J_ss = (S0 + S1) / 2, J_pp = (S0 - S1) / 2, J_sp = (S2 - i S3) / 2, S0 = 1.

@@ -22,16 +22,17 @@ namespace HWY_NAMESPACE {
 
 // Light from the isotropic medium of index nOutside entering crystals {nO[j], nE[j], axis} along unit
 // direction[j] through facets of unit outward normal[j], for j < count (each array readable up to count
-// rounded up to a whole vector of doubles): out[j] = enterCrystal(...) for each j whose bit is set in the
-// result (every wave propagating, no degenerate direction); the others are left to enterCrystal.
+// rounded up to a whole vector of doubles): for each j whose bit is set in the result (every wave
+// propagating, no degenerate direction), enterCrystal(...)'s waves as uniaxial::EntryLane{numbers + j,
+// stride} reads them (UniaxialEntry's numbers, number i at numbers[i * stride + j]; stride as count is
+// readable); the others are left to enterCrystal.
 HWY_INLINE uint64_t enterUniaxialLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
                                        const double* const direction[3], const double* const normal[3],
-                                       size_t count, InterfaceWaves* out) {
+                                       size_t count, double* numbers, size_t stride) {
     if (!uniaxial::mediumChecks(axis, nOutside)) return 0;
     const DoubleTag d;
     const size_t lanes = hn::Lanes(d);
     using Entry = uniaxial::UniaxialEntry<Doubles>;
-    alignas(64) double numbers[Entry::kNumbers][HWY_LANES(double)];
     uint64_t entered = 0;
     for (size_t first = 0; first < count; first += lanes) {
         auto load = [&](const double* const v[3]) {
@@ -46,15 +47,11 @@ HWY_INLINE uint64_t enterUniaxialLanes(const Vec3& axis, double nOutside, const 
         hn::StoreMaskBits(d, met, reinterpret_cast<uint8_t*>(&bits));
         bits &= count - first >= 64 ? ~uint64_t(0) : (uint64_t(1) << (count - first)) - 1;
         if (!bits) continue;
-        int i = 0;
-        e.forEachNumber([&](Doubles& v) { v.store(numbers[i++]); });
-        for (uint64_t b = bits; b; b &= b - 1) {
-            const int k = __builtin_ctzll(b);
-            uniaxial::UniaxialEntry<double> one;
-            int j = 0;
-            one.forEachNumber([&](double& v) { v = numbers[j++][k]; });
-            uniaxial::putInterfaceWaves(one, out[first + k]);
-        }
+        double* p = numbers + first;
+        e.forEachNumber([&](Doubles& v) {
+            v.store(p);
+            p += stride;
+        });
         entered |= bits << first;
     }
     return entered;

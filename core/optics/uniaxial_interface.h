@@ -100,7 +100,9 @@ template <class T>
 struct UniaxialEntry {
     using Mask = decltype(T{} < T{});
     static constexpr int kConditions = 7;
-    static constexpr int kNumbers = 3 * 3 + 1 + 4 * (3 * 3 + 6);  // forEachNumber's
+    static constexpr int kIncident = 3 * 3 + 1;  // forEachNumber's: the incident waves', then each wave's
+    static constexpr int kPerWave = 3 * 3 + 6;
+    static constexpr int kNumbers = kIncident + 4 * kPerWave;
     Mask met[kConditions];
     V3<T> incidentNormal, incidentS, incidentP;
     T incidentIndex;
@@ -512,6 +514,29 @@ inline void putInterfaceWaves(const UniaxialLeaving<double>& e, const PlaneWave&
     put(out.transmitted[0], WaveMode::S, e.transmitted[0], !evanescent);
     put(out.transmitted[1], WaveMode::P, e.transmitted[1], !evanescent);
 }
+
+// One lane's entry among several kept by number (UniaxialEntry<double>::forEachNumber's order, number i at
+// numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseCrystalWave()), read only
+// where read, the values putInterfaceWaves() would put into InterfaceWaves.
+struct EntryLane {
+    const double* numbers;
+    size_t stride;
+
+    double number(int i) const { return numbers[size_t(i) * stride]; }
+    Vec3 vec(int i) const { return {number(i), number(i + 1), number(i + 2)}; }
+    // Number i of wave w: reflected s and p, then transmitted ordinary and extraordinary.
+    int at(int w, int i) const {
+        return UniaxialEntry<double>::kIncident + UniaxialEntry<double>::kPerWave * w + i;
+    }
+    Vec3 incidentS() const { return vec(3); }
+    double fluxRatio(int w) const { return number(at(w, 12)); }
+    Complex amplitude(int w, int i) const { return Complex(number(at(w, 10 + i)), 0.0); }
+    PlaneWave transmittedWave(int j) const {
+        return {j ? WaveMode::Extraordinary : WaveMode::Ordinary, vec(at(2 + j, 0)), vec(at(2 + j, 3)),
+                vec(at(2 + j, 6)), number(at(2 + j, 9))};
+    }
+    Vec3 ordinaryNormal() const { return vec(at(2, 0)); }
+};
 
 // One lane's leaving among several kept by number (UniaxialLeaving<double>::forEachNumber's order, number i
 // at numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseLeavingWave()), read only

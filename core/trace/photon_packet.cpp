@@ -402,19 +402,16 @@ void stepPacket(const Packets& s, Packet& lanes, Visitor& visit) {
     lanes.live = reflects & ~trapped;
 }
 
-// A birefringent stone's photons, one per lane: the exit search a packet at a time, the rest of each step
-// (PhotonWalker::meet(): the crystal interface, in scalar double arithmetic) lane by lane, each lane's photon
-// kept whole. A collimated beam's photons are started as a packet up to their entry search (startBeam()),
-// then enter lane by lane (PhotonWalker::enterAt()); other light's one photon at a time.
+// A birefringent stone's photons, one per lane: the exit search a packet at a time, a uniaxial stone's
+// crystal interfaces in lanes of doubles, the rest of each step (PhotonWalker::meet()) lane by lane, each
+// lane's photon kept whole. A collimated beam's photons are started as a packet up to their entry search
+// (startBeam()), then enter lane by lane (PhotonWalker::enterAt()); other light's one photon at a time.
 struct alignas(64) CrystalPacket {
     float px[kMaxLanes]{}, py[kMaxLanes]{}, pz[kMaxLanes]{};  // the photons' p and d, for the exit search
     float dx[kMaxLanes]{}, dy[kMaxLanes]{}, dz[kMaxLanes]{};
     PhotonWalker::Photon ph[kMaxLanes];
     uint32_t id[kMaxLanes]{};
     LaneBits live = 0;
-    // The crystal's waves that the lanes found where its photons entered (startCrystalPacket()'s), kept for
-    // enterAt() from one call to the next.
-    InterfaceWaves waves[kMaxLanes];
 
     void put(int k, const PhotonWalker::Photon& photon, uint32_t photonId) {
         ph[k] = photon;
@@ -448,10 +445,11 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
     n.store(index);
     const Vec3f d(s.light.direction());
     // A uniaxial stone's entries, lanes of doubles at a time (optics/uniaxial_interface-inl.h), for the lanes
-    // that meet it: lane k's waves are entries[slot[k]] where bit k of `entered` is set; enterAt() finds the
-    // others' (uniaxial::UniaxialEntry's conditions unmet) one at a time.
+    // that meet it: lane k's waves are uniaxial::EntryLane{entries + slot[k], kMaxLanes} where bit k of
+    // `entered` is set; enterAt() finds the others' (uniaxial::UniaxialEntry's conditions unmet) one at a
+    // time.
     alignas(64) float extraordinary[kMaxLanes];
-    InterfaceWaves* entries = started.waves;
+    alignas(64) double entries[uniaxial::UniaxialEntry<double>::kNumbers * kMaxLanes];
     int slot[kMaxLanes];
     LaneBits entered = 0;
     const bool laneEntries = s.trace.polarized() && !s.trace.biaxial() && s.trace.fixedEntries().empty();
@@ -468,8 +466,8 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
         });
         const double* const dirs[3] = {dir[0], dir[1], dir[2]};
         const double* const normals[3] = {normal[0], normal[1], normal[2]};
-        const uint64_t met =
-            enterUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, dirs, normals, size_t(count), entries);
+        const uint64_t met = enterUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, dirs, normals, size_t(count),
+                                                entries, kMaxLanes);
         forEachLane(met, [&](int j) { entered |= LaneBits(1) << lane[j]; });
     }
     forEachLane(b.photons, [&](int k) {
@@ -486,8 +484,9 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
         ph.nE = laneEntries ? extraordinary[k] : s.trace.principalIndex(2, b.wavelength[k]);
         if (s.trace.biaxial()) ph.nA = s.trace.principalIndex(0, b.wavelength[k]);
         ph.setAbsorption(s.trace, b.wavelength[k]);
+        const uniaxial::EntryLane entry{entries + slot[k], kMaxLanes};
         if (PhotonWalker::enterAt(s.trace, uint32_t(b.hit.facet[k]), b.hit.p(k), d, v, ph,
-                                  entered >> k & 1 ? &entries[slot[k]] : nullptr))
+                                  entered >> k & 1 ? &entry : nullptr))
             started.put(next++, ph, id);
     });
 }

@@ -116,7 +116,7 @@ class PhotonWalker {
     // entry search, with the crystal's waves there (`entry`, enterCrystal()'s) where its lanes found them.
     template <class Visitor>
     static bool enterAt(const TraceBase& s, uint32_t facet, const Vec3f& p, Vec3f d, Visitor& visit,
-                        Photon& ph, const InterfaceWaves* entry = nullptr) {
+                        Photon& ph, const uniaxial::EntryLane* entry = nullptr) {
         if (!s.fixedEntries().empty()) {
             const TraceBase::FixedEntry& e = s.fixedEntries()[facet];
             if (ph.rng.uniform() < e.reflectance) {
@@ -298,7 +298,7 @@ class PhotonWalker {
     template <class Visitor>
     static bool enterCrystalWave(const TraceBase& s, const Vec3f& normal, uint32_t facet, const Vec3f& p,
                                  Vec3f& d, Visitor& visit, Photon& ph,
-                                 const InterfaceWaves* entry = nullptr) {
+                                 const uniaxial::EntryLane* entry = nullptr) {
         if (!(dot(d, normal) < 0)) {  // grazing, where float rounding put the entry: all is reflected
             visit.reflectedAtEntry(facet, p, d);
             return false;
@@ -307,23 +307,35 @@ class PhotonWalker {
         const InterfaceWaves w =
             s.biaxial() ? enterCrystal(s.biaxialCrystal(ph.nA, ph.n, ph.nE), toVec3(d), toVec3(normal))
                         : enterCrystal(s.crystal(ph.n, ph.nE), toVec3(d), toVec3(normal));
-        return chooseCrystalWave(s, w, normal, facet, p, d, visit, ph);
+        return chooseCrystalWave(s, WavesEntry{w}, normal, facet, p, d, visit, ph);
     }
-    // enterCrystalWave() once the interface's waves w are known.
-    template <class Visitor>
-    static bool chooseCrystalWave(const TraceBase& s, const InterfaceWaves& w, const Vec3f& normal,
-                                  uint32_t facet, const Vec3f& p, Vec3f& d, Visitor& visit, Photon& ph) {
-        ph.coherent = s.nearOpticAxis(w.transmitted[0].wave.waveNormal);
+    // What chooseCrystalWave() reads of enterCrystal()'s waves (uniaxial::EntryLane: of the lanes'); wave w
+    // is reflected s and p, then transmitted 0 and 1.
+    struct WavesEntry {
+        const InterfaceWaves& w;
+        const OutgoingWave& wave(int i) const { return i < 2 ? w.reflected[i] : w.transmitted[i - 2]; }
+        const Vec3& incidentS() const { return w.incident[0].field; }
+        double fluxRatio(int i) const { return wave(i).fluxRatio; }
+        Complex amplitude(int i, int k) const { return wave(i).amplitude[k]; }
+        const PlaneWave& transmittedWave(int j) const { return w.transmitted[j].wave; }
+        const Vec3& ordinaryNormal() const { return w.transmitted[0].wave.waveNormal; }
+    };
+    // enterCrystalWave() once the interface's waves w are known (WavesEntry or uniaxial::EntryLane).
+    template <class Visitor, class Waves>
+    static bool chooseCrystalWave(const TraceBase& s, const Waves& w, const Vec3f& normal, uint32_t facet,
+                                  const Vec3f& p, Vec3f& d, Visitor& visit, Photon& ph) {
+        ph.coherent = s.nearOpticAxis(w.ordinaryNormal());
         if (ph.coherent) return enterPolarized(normal, 1.0f / ph.n, facet, p, d, visit, ph);
-        const Coherency j = coherencyOf(ph.pol, d, Vec3f(w.incident[0].field));
-        const double reflected = shareOf(w.reflected[0], j) + shareOf(w.reflected[1], j);
-        const double ordinary = shareOf(w.transmitted[0], j);
-        const double u = ph.rng.uniform() * (reflected + ordinary + shareOf(w.transmitted[1], j));
+        const Coherency j = coherencyOf(ph.pol, d, Vec3f(w.incidentS()));
+        auto share = [&](int i) { return shareOf(w.fluxRatio(i), w.amplitude(i, 0), w.amplitude(i, 1), j); };
+        const double reflected = share(0) + share(1);
+        const double ordinary = share(2);
+        const double u = ph.rng.uniform() * (reflected + ordinary + share(3));
         if (u < reflected) {
             visit.reflectedAtEntry(facet, p, reflectOff(d, normal, std::clamp(-dot(d, normal), 0.0f, 1.0f)));
             return false;
         }
-        ph.wave = w.transmitted[u < reflected + ordinary ? 0 : 1].wave;
+        ph.wave = w.transmittedWave(u < reflected + ordinary ? 0 : 1);
         d = Vec3f(ph.wave.ray);
         return true;
     }

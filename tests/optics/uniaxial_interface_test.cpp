@@ -24,7 +24,31 @@ uint64_t EnterLanes(const Vec3& axis, double nOutside, const double* nO, const d
                     const double* const direction[3], const double* const normal[3], size_t count,
                     InterfaceWaves* out) {
 #if HWY_TARGET != HWY_SCALAR
-    return enterUniaxialLanes(axis, nOutside, nO, nE, direction, normal, count, out);
+    // Every number into out[j] as enterCrystal() puts them, then what a photon's choice reads through
+    // uniaxial::EntryLane over them: the comparison with enterCrystal() checks both.
+    using Entry = uniaxial::UniaxialEntry<double>;
+    constexpr size_t kStride = 16;
+    alignas(64) double numbers[Entry::kNumbers * kStride];
+    const uint64_t entered =
+        enterUniaxialLanes(axis, nOutside, nO, nE, direction, normal, count, numbers, kStride);
+    for (uint64_t b = entered; b; b &= b - 1) {
+        const int j = __builtin_ctzll(b);
+        Entry one;
+        int i = 0;
+        one.forEachNumber([&](double& v) { v = numbers[i++ * kStride + j]; });
+        InterfaceWaves& w = out[j];
+        uniaxial::putInterfaceWaves(one, w);
+        const uniaxial::EntryLane lane{numbers + j, kStride};
+        w.incident[0].field = lane.incidentS();
+        for (int k = 0; k < 4; ++k) {
+            OutgoingWave& o = k < 2 ? w.reflected[k] : w.transmitted[k - 2];
+            o.fluxRatio = lane.fluxRatio(k);
+            o.amplitude[0] = lane.amplitude(k, 0), o.amplitude[1] = lane.amplitude(k, 1);
+        }
+        for (int k = 0; k < 2; ++k) w.transmitted[k].wave = lane.transmittedWave(k);
+        w.transmitted[0].wave.waveNormal = lane.ordinaryNormal();
+    }
+    return entered;
 #else
     (void)axis, (void)nOutside, (void)nO, (void)nE, (void)direction, (void)normal, (void)count, (void)out;
     return 0;
