@@ -767,7 +767,7 @@ Vec3 fieldOf(const Principal& p, const Vec3& kHat, bool slow) {
 // its four roots are two on each side: a real root by the sign of its Poynting flux along N, E x (k x E), a
 // complex one (evanescent) by the side it decays on. Only the two kept are refined and given fields.
 void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s, int side,
-                  Wave<Complex> out[2]) {
+                  Wave<Complex> out[2], double qIncident = NAN) {
     const Principal pr = principalOf(m);
     const Vec3 u = toPrincipal(m, kt), n = toPrincipal(m, N);
     auto form = [&](const double* d, const Vec3& a, const Vec3& b) {
@@ -779,7 +779,7 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
     const double c[5] = {u2 * a0 - g0 + pr.det, 2 * (u2 * a1 - g1), a0 + u2 * a2 - g2, 2 * a1, a2};
     Complex q[4];
     const double scale = m.gamma + std::sqrt(u2);
-    const bool separated = quarticRoots(c, scale, q);
+    bool separated = quarticRoots(c, scale, q);
     for (Complex& r : q)
         if (std::fabs(r.imag()) <= 1e-9 * scale) r = r.real();
     // A double root (a wave normal on an optic axis) comes out as two roots about sqrt(rounding) apart on
@@ -790,6 +790,21 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
             if (std::norm(q[j] - q[l]) <= 1e-14 * scale * scale && std::fabs(q[j].imag()) <= 1e-7 * scale &&
                 std::fabs(q[l].imag()) <= 1e-7 * scale)
                 q[j] = q[l] = 0.5 * (q[j].real() + q[l].real());
+    // Leaving, the incident wave is a real root at qIncident, and next to an optic axis its twin on the other
+    // sheet lies a few tenths of a millionth from it: rounding may turn the two into a complex pair around
+    // them. They are the incident wave and its twin, not evanescent waves, and not among the reflected waves
+    // sought: both are put at qIncident, on the incident side.
+    if (!std::isnan(qIncident))
+        for (int j = 0; j < 4; ++j)
+            for (int l = j + 1; l < 4; ++l) {
+                const double near = std::fmax(1e-6 * scale, 2 * std::fabs(q[j].imag()));
+                if (q[j].imag() != 0 && std::fabs(q[j].imag()) <= 1e-5 * scale &&
+                    std::fabs(q[j].real() - qIncident) <= near &&
+                    std::fabs(q[l].real() - qIncident) <= near) {
+                    q[j] = q[l] = qIncident;
+                    separated = false;
+                }
+            }
 
     // A real root's wave normal and index on the sheet of the index surface whose index along it is nearer
     // its |k| (a line of fixed kt may cross either sheet twice, the outer one being dimpled at the optic
@@ -1003,7 +1018,7 @@ InterfaceWaves leaveCrystal(const BiaxialMedium& crystal, const PlaneWave& incid
         throw Error("birefringence: a wave inside a biaxial crystal is Fast or Slow");
     const auto [k, kt, s] = insideIncidence(incident, N);
     Wave<Complex> waves[2];
-    biaxialWaves(crystal, kt, N, s, -1, waves);
+    biaxialWaves(crystal, kt, N, s, -1, waves, dot(k, N));
     const bool crystalReal = waves[0].propagating && waves[1].propagating;
     const Wave<double> in[1] = {{incident.mode, k, incident.field, true, dot(incident.ray, N), dot(k, N)}};
     return withTypes(crystalReal, nOutside * nOutside - dot(kt, kt) > 0, [&](auto c, auto i) {
