@@ -24,8 +24,8 @@ namespace HWY_NAMESPACE {
 // direction[j] through facets of unit outward normal[j], for j < count (each array readable up to count
 // rounded up to a whole vector of doubles): for each j whose bit is set in the result (every wave
 // propagating, no degenerate direction), enterCrystal(...)'s waves as uniaxial::EntryLane{numbers + j,
-// stride} reads them (UniaxialEntry's numbers, number i at numbers[i * stride + j]; stride as count is
-// readable); the others are left to enterCrystal.
+// stride} reads them (UniaxialEntry's numbers, number i at numbers[i * stride + j]; stride at least count
+// rounded up to a whole vector of doubles); the others are left to enterCrystal.
 HWY_INLINE uint64_t enterUniaxialLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
                                        const double* const direction[3], const double* const normal[3],
                                        size_t count, double* numbers, size_t stride) {
