@@ -85,6 +85,56 @@ FACETLIGHT_AI V3<T> epsilonTimes(T nO, T nE, const V3<T>& c, const V3<T>& v) {
     return v * (nO * nO) + c * (dot(c, v) * (nE * nE - nO * nO));
 }
 
+// The crystal's two waves of tangential kt on one side of a facet (`side` +1 along N, -1 against it), with
+// what they are found from: birefringence.cpp's sDirection, extraordinaryRoots, ordinaryInterfaceWave and
+// extraordinaryInterfaceWave (the same names there).
+template <class T>
+struct CrystalWavePair {
+    V3<T> s, epsN, epsKt;
+    T a, b, discriminant, kt2, q2, qO, root, qE, rayNormalE;
+    V3<T> kO, fieldO, kE, fieldE;
+};
+template <class T>
+FACETLIGHT_AI CrystalWavePair<T> crystalWavePair(T nO, T nE, const V3<T>& c, const V3<T>& kt, const V3<T>& N,
+                                                 double side) {
+    using std::sqrt;
+    // Below this |k x c| / |k| a wave normal counts as along the axis (birefringence.cpp's kAlongAxis).
+    constexpr double kAlongAxis = 1e-9;
+    const T alongAxis2(kAlongAxis * kAlongAxis), sign(side);
+    CrystalWavePair<T> w;
+    // sDirection: any perpendicular to N at normal incidence.
+    const V3<T> sCross = cross(kt, N);
+    const T sLength = length(sCross);
+    w.s = select(T(1e-12) < sLength, sCross / sLength, perpendicularTo(N));
+    // ordinaryField's fallback along the axis: the part of s across it.
+    const V3<T> acrossAxis = w.s - c * dot(c, w.s);
+    // extraordinaryRoots
+    w.epsN = epsilonTimes(nO, nE, c, N), w.epsKt = epsilonTimes(nO, nE, c, kt);
+    w.a = dot(N, w.epsN), w.b = dot(kt, w.epsN);
+    const T cq = dot(kt, w.epsKt) - nO * nO * nE * nE;
+    w.discriminant = w.b * w.b - w.a * cq;
+    w.kt2 = dot(kt, kt);
+    // ordinaryInterfaceWave
+    w.q2 = nO * nO - w.kt2;
+    w.qO = sign * sqrt(w.q2);
+    w.kO = kt + N * w.qO;
+    const V3<T> eO = cross(w.kO, c);
+    w.fieldO = select(alongAxis2 * dot(w.kO, w.kO) < dot(eO, eO), eO, acrossAxis);
+    // extraordinaryInterfaceWave
+    w.root = sqrt(w.discriminant);
+    w.qE = (-w.b + sign * w.root) / w.a;
+    w.kE = kt + N * w.qE;
+    w.rayNormalE = (sign * w.root) / length(w.epsKt + w.epsN * w.qE);
+    const V3<T> dE = c * dot(w.kE, w.kE) - w.kE * dot(w.kE, c);
+    const T io = T(1.0) / (nO * nO), ie = T(1.0) / (nE * nE);
+    // extraordinaryField: E = eps^-1 D, or along the axis k x E_o.
+    const V3<T> eOE = cross(w.kE, c);
+    const V3<T> fieldOE = select(alongAxis2 * dot(w.kE, w.kE) < dot(eOE, eOE), eOE, acrossAxis);
+    w.fieldE = select(alongAxis2 * dot(w.kE, w.kE) * dot(w.kE, w.kE) < dot(dE, dE),
+                      dE * io + c * (dot(c, dE) * (ie - io)), cross(w.kE, fieldOE));
+    return w;
+}
+
 // One propagating wave as PlaneWave and OutgoingWave hold it (ray = waveNormal but for the extraordinary
 // wave; amplitudes real).
 template <class T>
@@ -133,9 +183,7 @@ template <class T>
 FACETLIGHT_AI UniaxialEntry<T> enterUniaxial(T nO, T nE, const Vec3& axis, const V3<T>& direction,
                                              const V3<T>& outwardNormal, double nOutside) {
     using std::sqrt;
-    // Below this |k x c| / |k| a wave normal counts as along the axis (birefringence.cpp's kAlongAxis).
-    constexpr double kAlongAxis = 1e-9;
-    const T zero(0.0), n(nOutside), alongAxis2(kAlongAxis * kAlongAxis);
+    const T zero(0.0), n(nOutside);
     UniaxialEntry<T> e;
     const V3<T> c = lift<T>(axis);
     auto epsilonTimes = [&](const V3<T>& v) FACETLIGHT_AL { return uniaxial::epsilonTimes(nO, nE, c, v); };
@@ -143,46 +191,18 @@ FACETLIGHT_AI UniaxialEntry<T> enterUniaxial(T nO, T nE, const Vec3& axis, const
     const V3<T> N = -outwardNormal;
     const T cosI = dot(direction, N);
     const V3<T> kt = (direction - N * cosI) * n;
-    // sDirection: any perpendicular to N at normal incidence.
-    const V3<T> sCross = cross(kt, N);
-    const T sLength = length(sCross);
-    const V3<T> s = select(T(1e-12) < sLength, sCross / sLength, perpendicularTo(N));
-    // ordinaryField's fallback along the axis: the part of s across it.
-    const V3<T> acrossAxis = s - c * dot(c, s);
-    // extraordinaryRoots
-    const V3<T> epsN = epsilonTimes(N), epsKt = epsilonTimes(kt);
-    const T a = dot(N, epsN), b = dot(kt, epsN);
-    const T cq = dot(kt, epsKt) - nO * nO * nE * nE;
-    const T discriminant = b * b - a * cq;
-    const T kt2 = dot(kt, kt);
-    // ordinaryInterfaceWave, side +1
-    const T q2 = nO * nO - kt2;
-    const T qO = sqrt(q2);
-    const V3<T> kO = kt + N * qO;
-    const V3<T> eO = cross(kO, c);
-    const V3<T> fieldO = select(alongAxis2 * dot(kO, kO) < dot(eO, eO), eO, acrossAxis);
-    // extraordinaryInterfaceWave, side +1
-    const T root = sqrt(discriminant);
-    const T qE = (-b + root) / a;
-    const V3<T> kE = kt + N * qE;
-    const T rayNormalE = root / length(epsKt + epsN * qE);
-    const V3<T> dE = c * dot(kE, kE) - kE * dot(kE, c);
-    const T io = T(1.0) / (nO * nO), ie = T(1.0) / (nE * nE);
-    // extraordinaryField: E = eps^-1 D, or along the axis k x E_o.
-    const V3<T> eOE = cross(kE, c);
-    const V3<T> fieldOE = select(alongAxis2 * dot(kE, kE) < dot(eOE, eOE), eOE, acrossAxis);
-    const V3<T> fieldE = select(alongAxis2 * dot(kE, kE) * dot(kE, kE) < dot(dE, dE),
-                                dE * io + c * (dot(c, dE) * (ie - io)), cross(kE, fieldOE));
+    const CrystalWavePair<T> w = crystalWavePair(nO, nE, c, kt, N, 1.0);
+    const V3<T>& s = w.s;
     // isotropicWave: incident (+1) and reflected (-1) s and p
-    const T outside2 = n * n - kt2;
+    const T outside2 = n * n - w.kt2;
     const T qI = sqrt(outside2), qR = -qI;
     const V3<T> kI = kt + N * qI, kR = kt + N * qR;
     const T inverseN(1 / nOutside);
     const V3<T> fieldIP = cross(kI, s) * inverseN, fieldRP = cross(kR, s) * inverseN;
 
     e.met[0] = zero < cosI;
-    e.met[1] = zero < q2;
-    e.met[2] = zero < discriminant;
+    e.met[1] = zero < w.q2;
+    e.met[2] = zero < w.discriminant;
     e.met[3] = zero < outside2;
     e.met[4] = zero < nO;
     e.met[5] = zero < nE;
@@ -194,8 +214,8 @@ FACETLIGHT_AI UniaxialEntry<T> enterUniaxial(T nO, T nE, const Vec3& axis, const
         out[0] = dot(field, s), out[1] = dot(field, t2), out[2] = dot(h, s), out[3] = dot(h, t2);
     };
     T cO[4], cE[4];
-    tangential(kO, fieldO, cO);
-    tangential(kE, fieldE, cE);
+    tangential(w.kO, w.fieldO, cO);
+    tangential(w.kE, w.fieldE, cE);
     const T q = qR, g = q / (n * n);
     const T m00 = cO[3] - q * cO[0], m01 = cE[3] - q * cE[0];
     const T m10 = cO[1] + g * cO[2], m11 = cE[1] + g * cE[2];
@@ -237,8 +257,8 @@ FACETLIGHT_AI UniaxialEntry<T> enterUniaxial(T nO, T nE, const Vec3& axis, const
             w.share[i] = w.fluxRatio * (w.amplitude[i] * w.amplitude[i] + zero * zero);
         }
     };
-    fill(e.transmitted[0], kO, fieldO, x[2], false, false, qO / nO);
-    fill(e.transmitted[1], kE, fieldE, x[3], false, true, rayNormalE);
+    fill(e.transmitted[0], w.kO, w.fieldO, x[2], false, false, w.qO / nO);
+    fill(e.transmitted[1], w.kE, w.fieldE, x[3], false, true, w.rayNormalE);
     fill(e.reflected[0], kR, s, x[0], true, false, qR / n);
     fill(e.reflected[1], kR, fieldRP, x[1], true, false, qR / n);
     return e;
@@ -312,8 +332,7 @@ FACETLIGHT_AI LeavingStart<T> startLeaving(T nO, T nE, const Vec3& axis, const V
                                            const V3<T>& ray, const V3<T>& field, T index, Mask ordinary,
                                            const V3<T>& outwardNormal, double nOutside) {
     using std::sqrt;
-    constexpr double kAlongAxis = 1e-9;  // birefringence.cpp's
-    const T zero(0.0), one(1.0), alongAxis2(kAlongAxis * kAlongAxis);
+    const T zero(0.0), one(1.0);
     LeavingStart<T> st;
     UniaxialLeaving<T>& e = st.out;
     st.n = T(nOutside), st.inverseN = T(1 / nOutside);
@@ -323,44 +342,19 @@ FACETLIGHT_AI LeavingStart<T> startLeaving(T nO, T nE, const Vec3& axis, const V
     // insideIncidence
     const V3<T> k = waveNormal * index;
     const V3<T>& kt = st.kt = k - N * dot(k, N);
-    const V3<T> sCross = cross(kt, N);
-    const T sLength = length(sCross);
-    const V3<T>& s = st.s = select(T(1e-12) < sLength, sCross / sLength, perpendicularTo(N));
-    const V3<T> acrossAxis = s - c * dot(c, s);
-    // extraordinaryRoots
-    const V3<T> epsN = epsilonTimes(N), epsKt = epsilonTimes(kt);
-    const T a = dot(N, epsN), b = dot(kt, epsN);
-    const T cq = dot(kt, epsKt) - nO * nO * nE * nE;
-    const T discriminant = b * b - a * cq;
-    const T kt2 = dot(kt, kt);
-    // ordinaryInterfaceWave, side -1
-    const T q2 = nO * nO - kt2;
-    const T qO = -sqrt(q2);
-    const V3<T> kO = kt + N * qO;
-    const V3<T> eO = cross(kO, c);
-    const V3<T> fieldO = select(alongAxis2 * dot(kO, kO) < dot(eO, eO), eO, acrossAxis);
-    const T rayNormalO = qO / nO;
-    // extraordinaryInterfaceWave, side -1
-    const T root = sqrt(discriminant);
-    const T qE = (-b + -root) / a;
-    const V3<T> kE = kt + N * qE;
-    const T rayNormalE = -root / length(epsKt + epsN * qE);
-    const V3<T> dE = c * dot(kE, kE) - kE * dot(kE, c);
-    const T io = one / (nO * nO), ie = one / (nE * nE);
-    const V3<T> eOE = cross(kE, c);
-    const V3<T> fieldOE = select(alongAxis2 * dot(kE, kE) < dot(eOE, eOE), eOE, acrossAxis);
-    const V3<T> fieldE = select(alongAxis2 * dot(kE, kE) * dot(kE, kE) < dot(dE, dE),
-                                dE * io + c * (dot(c, dE) * (ie - io)), cross(kE, fieldOE));
+    const CrystalWavePair<T> w = crystalWavePair(nO, nE, c, kt, N, -1.0);
+    const V3<T>& s = st.s = w.s;
+    const T rayNormalO = w.qO / nO;
     // leaveWith: the incident wave's ray normal component from its reflected twin's root
-    const T twin = select(ordinary, -rayNormalO, root / length(epsKt + epsN * ((-b + root) / a)));
+    const T twin = select(ordinary, -rayNormalO, w.root / length(w.epsKt + w.epsN * ((-w.b + w.root) / w.a)));
     const T rayNormal = select(zero < twin, twin, dot(ray, N));
 
     e.met[0] = zero < dot(ray, N);
-    e.met[1] = zero < q2;
-    e.met[2] = zero < discriminant;
+    e.met[1] = zero < w.q2;
+    e.met[2] = zero < w.discriminant;
     e.met[3] = zero < nO;
     e.met[4] = zero < nE;
-    st.outside2 = st.n * st.n - kt2;
+    st.outside2 = st.n * st.n - w.kt2;
     e.met[5] = zero < st.outside2 * st.outside2;  // the outside waves propagate or are evanescent
 
     // matchFields: the crystal's waves reflected (columns negated), the isotropic ones transmitted.
@@ -369,8 +363,8 @@ FACETLIGHT_AI LeavingStart<T> startLeaving(T nO, T nE, const Vec3& axis, const V
         const V3<T> h = cross(kw, fw);
         out[0] = dot(fw, s), out[1] = dot(fw, t2), out[2] = dot(h, s), out[3] = dot(h, t2);
     };
-    tangential(kO, fieldO, st.cO);
-    tangential(kE, fieldE, st.cE);
+    tangential(w.kO, w.fieldO, st.cO);
+    tangential(w.kE, w.fieldE, st.cE);
     for (int i = 0; i < 4; ++i) st.cO[i] = -st.cO[i], st.cE[i] = -st.cE[i];
     tangential(k, field, st.b);
     const T across = select(ordinary, one, length(waveNormal - field * dot(waveNormal, field)));
@@ -390,8 +384,8 @@ FACETLIGHT_AI LeavingStart<T> startLeaving(T nO, T nE, const Vec3& axis, const V
         }
         w.fluxRatio = -(w.index * acrossW * rayNormalW) / st.incidentFlux;
     };
-    plane(e.reflected[0], kO, fieldO, false, rayNormalO, st.fieldScale[0]);
-    plane(e.reflected[1], kE, fieldE, true, rayNormalE, st.fieldScale[1]);
+    plane(e.reflected[0], w.kO, w.fieldO, false, rayNormalO, st.fieldScale[0]);
+    plane(e.reflected[1], w.kE, w.fieldE, true, w.rayNormalE, st.fieldScale[1]);
     return st;
 }
 
