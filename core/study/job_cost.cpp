@@ -58,9 +58,9 @@ double splitFactor(const TraceSettings& t, double uniaxial, double biaxial) {
 
 // The calibration traces polarised, the default (cost_calibration.cpp); an unpolarised one takes about as
 // long (0.91-0.97x its time quiet, docs/performance.md, "Polarised and birefringent tracing"). A doubly
-// refracting stone splits the light at every facet: a uniaxial one 2.0-5.1x (SCALAR to AVX-512, whose
-// unpolarised packet walk gains most; bench_trace's PolarizedVsPlain after the crystal interface in lanes,
-// 2026-12-03 17:20), counted at 5. A biaxial one finds its waves from a quartic's roots, lane by lane: 24x
+// refracting stone splits the light at every facet: a uniaxial one 2.0-4.4x (SCALAR to AVX-512, whose
+// unpolarised packet walk gains most; bench_trace's PolarizedVsPlain with the crystal interface in lanes,
+// 2026-12-03 17:56; 5.1x at 17:20), counted at 5. A biaxial one finds its waves from a quartic's roots, lane by lane: 24x
 // (`facetlight trace --mesh round_brilliant --photons 2000000 --threads 1 --no-view`, user time, 3 runs each,
 // 2026-12-03 17:33, AVX-512: topaz 6.30-6.35 s, unpolarised 0.25-0.26 s; sapphire with its axis tilted 30 deg
 // 1.20-1.24 s, unpolarised 0.25-0.29 s), counted at 25.
