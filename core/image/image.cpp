@@ -141,7 +141,7 @@ double textHeight(double scale) {
 std::pair<std::string, std::string> breakToFit(std::string_view text, double scale, double width) {
     if (textWidth(text, scale) <= width) return {std::string(text), ""};
     for (size_t at = text.size(); at-- > 1;) {
-        if (text[at] != ' ' || (text[at - 1] != ',' && text[at - 1] != ';')) continue;
+        if (text[at] != ' ' || (text[at - 1] != ',' && text[at - 1] != ';' && text[at - 1] != ':')) continue;
         if (textWidth(text.substr(0, at), scale) <= width)
             return {std::string(text.substr(0, at)), std::string(text.substr(at + 1))};
     }

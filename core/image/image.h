@@ -50,12 +50,12 @@ void drawText(Image& image, double x, double y, std::string_view text, double sc
               Align align = Align::Left);
 double textWidth(std::string_view text, double scale);
 double textHeight(double scale);  // of one line
-// `text` as one line no wider than `width` at `scale` or, where it is wider, two: broken after its last ", "
-// or "; " that lets the first line fit (a picture's subtitle at a legible size rather than shrunk). The
+// `text` as one line no wider than `width` at `scale` or, where it is wider, two: broken after its last ", ",
+// "; " or ": " that lets the first line fit (a picture's subtitle at a legible size rather than shrunk). The
 // second is empty when one line fits or no break helps.
 std::pair<std::string, std::string> breakToFit(std::string_view text, double scale, double width);
 // `text` in as many lines as it takes, each broken as breakToFit() breaks it or, with `atSpaces` where no
-// ", " or "; " lets the line fit, at its last space that does (a word wider than `width` stays whole).
+// separator lets the line fit, at its last space that does (a word wider than `width` stays whole).
 std::vector<std::string> wrapToFit(std::string_view text, double scale, double width, bool atSpaces = true);
 
 }  // namespace facetlight

@@ -13,8 +13,7 @@ std::string polariscopeVerdict(const Polariscope& p) {
     if (p.reaction == PolariscopeReaction::StaysDark)
         return "stays dark as it turns: singly refracting, or seen along an optic axis";
     if (p.reaction == PolariscopeReaction::StaysLight)
-        return "stays light as it turns: the facets' reflections turn the polarisation, so single and double "
-               "refraction look alike";
+        return "stays light as it turns: the facets' reflections hide single or double refraction";
     std::string angles;
     for (size_t k = 0; k < p.darkAnglesDeg.size(); ++k)
         angles += (k == 0 ? "" : k + 1 == p.darkAnglesDeg.size() ? " and " : ", ") +

@@ -63,11 +63,12 @@ Image shareChart(const std::vector<SharePoint>& points, const ShareChartLabels& 
     const std::string& title = labels.title;
     drawText(image, kWidth / 2.0, 10, title, textWidth(title, 2.5) > kWidth - 10 ? 1.5 : 2.5, ink,
              Align::Center);
-    const std::string& subtitle = labels.subtitle;
-    const auto [first, second] = breakToFit(subtitle, 2, kWidth - 10);
-    const double scale = std::max(textWidth(first, 2), textWidth(second, 2)) > kWidth - 10 ? 1.5 : 2;
-    drawText(image, kWidth / 2.0, 40, first, scale, ink, Align::Center);
-    if (!second.empty()) drawText(image, kWidth / 2.0, 57, second, scale, ink, Align::Center);
+    // The subtitle in up to two lines at the legible size, or else smaller.
+    double scale = 2;
+    std::vector<std::string> lines = wrapToFit(labels.subtitle, scale, kWidth - 10);
+    if (lines.size() > 2) lines = wrapToFit(labels.subtitle, scale = 1.5, kWidth - 10);
+    for (size_t k = 0; k < std::min<size_t>(lines.size(), 2); ++k)
+        drawText(image, kWidth / 2.0, 40 + 17 * double(k), lines[k], scale, ink, Align::Center);
     drawText(image, kLeft + plotW / 2, kHeight - 24, labels.across, 2, ink, Align::Center);
     drawText(image, 8, kTop - 26, labels.up, 2, ink);
     return image;

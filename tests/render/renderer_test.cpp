@@ -332,15 +332,19 @@ TEST(Pictures, BreakToFitBreaksAtTheLastSeparatorThatFits) {
                        std::string("lit = bright or low light; scintillation 7.20 +- 0.18 % per frame")));
     EXPECT_EQ(breakToFit(text, 2, 2000).second, "");
     EXPECT_EQ(breakToFit("no separator here at all", 2, 50).first, "no separator here at all");
+    // A verdict breaks after its colon rather than inside its list.
+    EXPECT_EQ(breakToFit("dark at 0, 90, 180 and 270 deg of a turn: doubly refracting", 2, 630),
+              std::make_pair(std::string("dark at 0, 90, 180 and 270 deg of a turn:"),
+                             std::string("doubly refracting")));
 }
 
-// Every line wrapToFit gives fits the width, broken after ", " or "; " where one lets it fit and else at a
-// space; the lines joined by spaces are the text again. Without spaces as breaks, a part too wide stays
+// Every line wrapToFit gives fits the width, broken after ", ", "; " or ": " where one lets it fit and else
+// at a space; the lines joined by spaces are the text again. Without spaces as breaks, a part too wide stays
 // whole.
 TEST(Pictures, WrapToFitBreaksEveryLineToTheWidth) {
     const std::string text =
         "through the table: median 0.088 mm (quartiles 0.081-0.097), 1.35 % of the girdle, "
-        "12.1 arcmin through a 10x loupe; through the whole crown: median 0.057 mm "
+        "12.1 arcmin through a 10x loupe; through the whole crown the median is 0.057 mm "
         "(quartiles 0.030-0.081), seen 45 deg from the optic axis";
     const std::vector<std::string> lines = wrapToFit(text, 2, 710);
     ASSERT_GE(lines.size(), 4u);
@@ -353,9 +357,9 @@ TEST(Pictures, WrapToFitBreaksEveryLineToTheWidth) {
     EXPECT_EQ(lines[0], "through the table: median 0.088 mm (quartiles 0.081-0.097),");
     EXPECT_EQ(lines[3], "0.030-0.081), seen 45 deg from the optic axis") << "broken at a space";
     const std::vector<std::string> parts = wrapToFit(text, 2, 710, false);
-    EXPECT_EQ(
-        parts.back(),
-        "through the whole crown: median 0.057 mm (quartiles 0.030-0.081), seen 45 deg from the optic axis");
+    EXPECT_EQ(parts.back(),
+              "through the whole crown the median is 0.057 mm (quartiles 0.030-0.081), seen 45 deg "
+              "from the optic axis");
     EXPECT_EQ(wrapToFit("", 2, 100).size(), 0u);
 }
 

@@ -231,7 +231,7 @@ export function scintillationText(tilt) {
 export function polariscopeText(p) {
   if (p.reaction === 'stays_dark') return 'Polariscope: stays dark as it turns (singly refracting, or seen along an optic axis)';
   if (p.reaction === 'stays_light') {
-    return 'Polariscope: stays light as it turns (the facets\' reflections turn the polarisation, so single and double refraction look alike)';
+    return 'Polariscope: stays light as it turns (the facets\' reflections turn the polarisation and hide single or double refraction)';
   }
   return `Polariscope: dark at ${p.dark_angles_deg.map((a) => `${a}°`).join(', ')} of a turn: doubly refracting`;
 }
