@@ -152,14 +152,22 @@ Polariscope polariscope(const Stone& stone, const TraceSettings& settings, const
         }
         return true;
     };
-    for (size_t k = 0; k < n; ++k) {
-        const PolariscopeReading& r = out.readings[k];
-        if (leastNearby(k) && r.share() < 0.5 * brightest->share() &&
-            brightest->share() - r.share() > 5 * std::hypot(brightest->shareStderr(), r.shareStderr())) {
-            out.darkAnglesDeg.push_back(r.angleDeg);
-            out.reaction = PolariscopeReaction::Blinks;
-        }
-    }
+    auto clearlyUnder = [&](const PolariscopeReading& r, double share) {
+        return r.share() < share &&
+               brightest->share() - r.share() > 5 * std::hypot(brightest->shareStderr(), r.shareStderr());
+    };
+    // It blinks when its darkest reading is under half the brightest; then each dark position is nearer the
+    // darkest than the brightest (half the brightest for each split a zircon brilliant's pair, 19.9 against
+    // 18.5 % with 39.4 % between, into one dark position every half turn).
+    const auto darkest = std::min_element(out.readings.begin(), out.readings.end(),
+                                          [](const auto& a, const auto& b) { return a.share() < b.share(); });
+    if (darkest != out.readings.end() && clearlyUnder(*darkest, 0.5 * brightest->share()))
+        for (size_t k = 0; k < n; ++k)
+            if (leastNearby(k) &&
+                clearlyUnder(out.readings[k], 0.5 * (darkest->share() + brightest->share()))) {
+                out.darkAnglesDeg.push_back(out.readings[k].angleDeg);
+                out.reaction = PolariscopeReaction::Blinks;
+            }
     if (!out.blinks() && brightest != out.readings.end() && brightest->share() >= kStaysDarkShare)
         out.reaction = PolariscopeReaction::StaysLight;
     for (size_t k = 0, dark = out.darkAnglesDeg.size(); k < dark; ++k)
