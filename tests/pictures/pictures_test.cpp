@@ -27,8 +27,6 @@ TiltSeries switchedOf(uint64_t switched, uint64_t pixelPairs) {
     return series;
 }
 
-// The scintillation is written to its standard error's digits: a small error is not rounded to "0.0", a
-// larger one keeps its second digit when it starts with 1, and a share with no error is written alone.
 // The pictures name the material traced, not the job's "auto": the default's diamond, or a job's own.
 TEST(PictureTitles, NameTheMaterialTraced) {
     TraceSettings settings;
@@ -40,6 +38,8 @@ TEST(PictureTitles, NameTheMaterialTraced) {
     EXPECT_NE(doublingTitle(test::roundBrilliant(), settings).find(", my spinel, "), std::string::npos);
 }
 
+// The scintillation is written to its standard error's digits: a small error is not rounded to "0.0", a
+// larger one keeps its second digit when it starts with 1, and a share with no error is written alone.
 TEST(TiltChart, SubtitleWritesTheErrorToItsDigits) {
     // 7.4 % of a million pixel pairs: +- 0.026 %.
     EXPECT_EQ(tiltChartSubtitle(switchedOf(74'000, 1'000'000)),
