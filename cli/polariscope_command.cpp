@@ -58,8 +58,9 @@ void run(const PolariscopeOptions& o) {
         writeFile(out / "polariscope.png",
                   encodePng(polariscopeChart(p, "Polariscope: " + stone.name + ", " +
                                                     chooseMaterial(settings, stone).material.name())));
-        const std::vector<Image> frames = polariscopeFrames(p);
-        writeFile(out / "polariscope.webp", encodeAnimatedWebp(frames, kPolariscopeFrameMs));
+        if (instrument.pictureSize > 0)
+            writeFile(out / "polariscope.webp",
+                      encodeAnimatedWebp(polariscopeFrames(p), kPolariscopeFrameMs));
     }
 }
 
@@ -76,8 +77,10 @@ void addPolariscopeCommand(CLI::App& app) {
     o->polariscope.add(cmd, polariscopeSettingsSchema().fields(),
                        polariscopeSettingsSchema().write(PolariscopeSettings{}), "polariscope");
     cmd->add_option("--json", o->jsonPath, "Also write the readings as JSON to this file");
-    cmd->add_option("--out", o->outDir,
-                    "Write polariscope.json, the chart polariscope.png and the turning view polariscope.webp here");
+    cmd->add_option(
+        "--out", o->outDir,
+        "Write polariscope.json, the chart polariscope.png and the turning view polariscope.webp (not with "
+        "--polariscope-picture 0) here");
     cmd->callback([o] { run(*o); });
 }
 

@@ -152,9 +152,15 @@ std::vector<std::string> wrapToFit(std::string_view text, double scale, double w
     std::vector<std::string> lines;
     for (std::string rest(text); !rest.empty();) {
         auto [first, second] = breakToFit(rest, scale, width);
-        // No separator that fits: the last space that does.
+        // No separator that fits: the last space that does or, without spaces as breaks, the first separator
+        // (the part too wide alone on its line, not the parts after it).
         for (size_t at = first.size(); atSpaces && textWidth(first, scale) > width && at-- > 1;)
             if (first[at] == ' ' && textWidth(std::string_view(first).substr(0, at), scale) <= width) {
+                second = first.substr(at + 1) + (second.empty() ? "" : " " + second);
+                first.resize(at);
+            }
+        for (size_t at = 1; !atSpaces && textWidth(first, scale) > width && at + 1 < first.size(); ++at)
+            if (first[at] == ' ' && (first[at - 1] == ',' || first[at - 1] == ';' || first[at - 1] == ':')) {
                 second = first.substr(at + 1) + (second.empty() ? "" : " " + second);
                 first.resize(at);
             }

@@ -54,8 +54,9 @@ double textHeight(double scale);  // of one line
 // "; " or ": " that lets the first line fit (a picture's subtitle at a legible size rather than shrunk). The
 // second is empty when one line fits or no break helps.
 std::pair<std::string, std::string> breakToFit(std::string_view text, double scale, double width);
-// `text` in as many lines as it takes, each broken as breakToFit() breaks it or, with `atSpaces` where no
-// separator lets the line fit, at its last space that does (a word wider than `width` stays whole).
+// `text` in as many lines as it takes, each broken as breakToFit() breaks it or, where no separator lets the
+// line fit, with `atSpaces` at its last space that does (a word wider than `width` stays whole), without it
+// after its first separator (a part wider than `width` alone on its line).
 std::vector<std::string> wrapToFit(std::string_view text, double scale, double width, bool atSpaces = true);
 
 }  // namespace facetlight

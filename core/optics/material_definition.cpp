@@ -17,6 +17,10 @@ constexpr double kMaxDispersionBG = 0.56, kMaxDensity = 25;
 // Cauchy's n falls by this many times the B-G dispersion from 589.3 to 780 nm, the reddest traced:
 // (1/0.5893^2 - 1/0.78^2) / (1/0.4308^2 - 1/0.6867^2) (derived from optics/material.cpp's cauchy()).
 constexpr double kRedDropPerBG = 0.3782;
+// The least gamma - alpha a biaxial material may have: the crystal interface merges roots closer than about
+// 1e-7 of the index (birefringence.cpp), and a material within 1e-7 gave both waves one field and failed its
+// trace ('the interface equations are singular'). No gem is within 1e-3 (docs/optics.md's table).
+constexpr double kLeastBiaxialSpread = 1e-5;
 
 const Schema<MaterialDefinition>& definitionSchema() {
     static const Schema<MaterialDefinition> schema(
@@ -65,6 +69,12 @@ const Schema<MaterialDefinition>& definitionSchema() {
                     throw Error(fieldPath(path, "beta"), fieldPath(path, "beta") +
                                                              " must lie strictly between alpha and gamma "
                                                              "(alpha < beta < gamma)");
+                if (*d.gamma - *d.alpha < kLeastBiaxialSpread)
+                    throw Error(
+                        fieldPath(path, "gamma"),
+                        fieldPath(path, "gamma") +
+                            " must exceed alpha by 1e-5 or more: so nearly singly refracting a material "
+                            "cannot be traced as two waves (give n)");
             }
             // Every index must stay above 1 at 780 nm, where the dispersion lowers it most.
             const double least = d.n ? *d.n : d.nO ? std::min(*d.nO, *d.nE) : *d.alpha;

@@ -60,9 +60,10 @@ Image shareChart(const std::vector<SharePoint>& points, const ShareChartLabels& 
         fillPolygon(image, dot, line);
     }
 
+    // The title on its line as large as fits, up to 2.5 (1.5 ran a long stone name off both edges).
     const std::string& title = labels.title;
-    drawText(image, kWidth / 2.0, 10, title, textWidth(title, 2.5) > kWidth - 10 ? 1.5 : 2.5, ink,
-             Align::Center);
+    drawText(image, kWidth / 2.0, 10, title,
+             std::min(2.5, (kWidth - 10) / std::max(1.0, textWidth(title, 1))), ink, Align::Center);
     // The subtitle in up to two lines at the legible size, or else smaller.
     double scale = 2;
     std::vector<std::string> lines = wrapToFit(labels.subtitle, scale, kWidth - 10);

@@ -54,9 +54,10 @@ inline constexpr NameTable<PolariscopeReaction, 3> kPolariscopeReactionNames{
 
 struct Polariscope {
     std::vector<PolariscopeReading> readings;
-    // The turntable angles where the stone goes dark (local minima under half the brightest reading),
-    // over a whole turn; it blinks when it does so clearly (the brightest reading 5 standard errors above
-    // them). Otherwise it stays dark when every reading passes under kStaysDarkShare, and light when not.
+    // The turntable angles where the stone goes dark, over a whole turn: it blinks when its darkest reading
+    // is under half the brightest, and then goes dark at each reading that is the least within 45 deg either
+    // way and nearer the darkest than the brightest (each 5 standard errors under the brightest). Otherwise
+    // it stays dark when every reading passes under kStaysDarkShare, and light when not.
     std::vector<double> darkAnglesDeg;
     PolariscopeReaction reaction = PolariscopeReaction::StaysDark;
     bool blinks() const { return reaction == PolariscopeReaction::Blinks; }

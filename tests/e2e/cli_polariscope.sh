@@ -22,6 +22,12 @@ assert j["settings"]["material"] == "sapphire" and j["settings"]["optic_axis"]["
 r = {x["angle_deg"]: x["share"] for x in j["readings"]}
 assert r[45.0] > 5 * r[0.0] and r[45.0] > 5 * r[90.0], r
 PY
+# --polariscope-picture 0: no turning view, the readings and the chart still written (it failed 'an animation
+# needs a frame').
+"$exe" polariscope --mesh round_brilliant --material sapphire --angles 4 --polariscope-photons 100 \
+    --polariscope-picture 0 --out "$work/nopicture" > /dev/null
+[[ -f "$work/nopicture/polariscope.png" && ! -e "$work/nopicture/polariscope.webp" ]] ||
+    { echo "--polariscope-picture 0: expected polariscope.png and no polariscope.webp"; ls "$work/nopicture"; exit 1; }
 "$exe" polariscope --mesh round_brilliant --material cubic_zirconia --angles 12 --polariscope-photons 3000 > "$work/cz.txt"
 grep -q "stays light as it turns" "$work/cz.txt" || { echo "cubic zirconia's brilliant did not stay light"; cat "$work/cz.txt"; exit 1; }
 refused() {  # refused EXPECTED-MESSAGE FLAGS...

@@ -75,6 +75,12 @@ TEST(MaterialDefinition, BadDefinitionsNameTheField) {
     EXPECT_EQ(refusedField(json{{"n_o", 1.6}, {"n_e", 1.6}}), "custom_material.n_e");
     EXPECT_EQ(refusedField(json{{"alpha", 1.6}, {"gamma", 1.7}}), "custom_material.beta");
     EXPECT_EQ(refusedField(json{{"alpha", 1.6}, {"beta", 1.75}, {"gamma", 1.7}}), "custom_material.beta");
+    // Within 1e-7 its trace failed: both waves had one field.
+    EXPECT_EQ(refusedField(json{{"alpha", 1.5}, {"beta", 1.500000001}, {"gamma", 1.500000002}}),
+              "custom_material.gamma");
+    EXPECT_EQ(refusedField(json{{"alpha", 1.5}, {"beta", 1.5000049}, {"gamma", 1.5000099}}),
+              "custom_material.gamma");
+    EXPECT_EQ(refusedField(json{{"alpha", 1.5}, {"beta", 1.50001}, {"gamma", 1.50002}}), "");
     EXPECT_EQ(refusedField(json{{"n", 1.0}}), "custom_material.n");
     EXPECT_EQ(refusedField(json{{"n", "1.5"}}), "custom_material.n");
     EXPECT_EQ(refusedField(json{{"n", 1.5}, {"dispersion", -0.01}}), "custom_material.dispersion");

@@ -8,6 +8,7 @@
 #include "pictures/colour_picture.h"
 #include "pictures/doubling_picture.h"
 #include "pictures/heatmap.h"
+#include "pictures/share_chart.h"
 #include "pictures/tilt_chart.h"
 #include "support/fixtures.h"
 #include "support/picture_checks.h"
@@ -26,8 +27,6 @@ TiltSeries switchedOf(uint64_t switched, uint64_t pixelPairs) {
     return series;
 }
 
-// The scintillation is written to its standard error's digits: a small error is not rounded to "0.0", a
-// larger one keeps its second digit when it starts with 1, and a share with no error is written alone.
 // The pictures name the material traced, not the job's "auto": the default's diamond, or a job's own.
 TEST(PictureTitles, NameTheMaterialTraced) {
     TraceSettings settings;
@@ -39,6 +38,8 @@ TEST(PictureTitles, NameTheMaterialTraced) {
     EXPECT_NE(doublingTitle(test::roundBrilliant(), settings).find(", my spinel, "), std::string::npos);
 }
 
+// The scintillation is written to its standard error's digits: a small error is not rounded to "0.0", a
+// larger one keeps its second digit when it starts with 1, and a share with no error is written alone.
 TEST(TiltChart, SubtitleWritesTheErrorToItsDigits) {
     // 7.4 % of a million pixel pairs: +- 0.026 %.
     EXPECT_EQ(tiltChartSubtitle(switchedOf(74'000, 1'000'000)),
@@ -63,6 +64,20 @@ TEST(TiltChart, SubtitleWritesTheErrorToItsDigits) {
 // ends at 1 %, so that every other facet is filled by its own share on it (on a scale to the table's 47.5 %,
 // all of them would be the same dark purple); the table, beyond the scale, is filled in the top colour and
 // hatched. The fire view draws the same way.
+// A long stone name keeps the chart's title inside the picture (at 1.5 it ran off both edges).
+TEST(ShareChart, ALongTitleStaysInside) {
+    const Image chart = shareChart(
+        {{0, 0.1, 0.01}, {45, 0.5, 0.01}, {90, 0.1, 0.01}},
+        {"Polariscope: a stone with a name much too long for one line at the "
+         "title's size, round brilliant, sapphire",
+         "dark at 0, 90, 180 and 270 deg of a turn: doubly refracting", "stone turned (deg)", "share (%)"});
+    int inkAtTheEdges = 0;
+    for (int y = 0; y < 40; ++y)
+        for (int x : {0, 1, 2, 3, chart.width() - 4, chart.width() - 3, chart.width() - 2, chart.width() - 1})
+            inkAtTheEdges += colourDistance(chart.at(x, y), {1, 1, 1}) > 0.01;
+    EXPECT_EQ(inkAtTheEdges, 0);
+}
+
 TEST(Heatmap, ScaleShowsTheFacetsOtherThanTheTable) {
     const Stone& stone = test::roundBrilliant();
     const HeatmapLayout layout = heatmapLayout(stone);
