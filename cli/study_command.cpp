@@ -39,8 +39,8 @@ void runStudyCommand(const StudyOptions& options) {
     JobRequest spec;
     // The service's launcher writes the file from the job's typed request (its canonical JSON, toJson): this
     // process cannot share it, so reading it back here is the one parse it needs.
+    nlohmann::json job = readJob(options.job);  // its errors name the file
     try {
-        nlohmann::json job = readJob(options.job);
         // Job files of earlier versions hold the trace settings under "trace", as scripts/same-results
         // writes them for both builds.
         if (job.is_object() && job.contains("trace") && job["trace"].is_object()) {
@@ -88,7 +88,8 @@ void addStudyCommand(CLI::App& app) {
         "study", "Run a job file's study into a folder (how the service runs jobs through a launcher)");
     cmd->add_option(
            "--job", options->job,
-           "JSON, as POST /api/jobs takes it: {\"mesh\", \"name\", \"photons\", ..., \"render\": {...}}")
+           "A file of the job's JSON, as POST /api/jobs takes it: {\"mesh\", \"name\", \"photons\", ..., "
+           "\"render\": {...}}")
         ->required();
     cmd->add_option("--out", options->out,
                     "Folder for stats.json, stats.csv and the PNGs, created if missing (rank 0 writes)")

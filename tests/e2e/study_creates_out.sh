@@ -13,4 +13,11 @@ if "$exe" study --job "$work/job.json" --out "$work/file/below" 2> "$work/err.tx
     echo "a folder under a file was accepted"; exit 1
 fi
 grep -q "cannot create the output folder" "$work/err.txt" || { cat "$work/err.txt"; exit 1; }
+# A job given inline instead of as a file: one message naming the missing file, not the job twice over.
+inline='{"mesh": "round_brilliant"}'
+if "$exe" study --job "$inline" --out "$work/inline" 2> "$work/err.txt"; then
+    echo "an inline job was taken for a file"; exit 1
+fi
+[ "$(grep -o 'round_brilliant' "$work/err.txt" | wc -l)" -eq 1 ] || { cat "$work/err.txt"; exit 1; }
+grep -q "cannot open" "$work/err.txt" || { cat "$work/err.txt"; exit 1; }
 echo "study --out: folder created"
