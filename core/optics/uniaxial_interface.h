@@ -160,8 +160,8 @@ struct UniaxialEntry {
     EntryWave<T> reflected[2], transmitted[2];
 
     // f(x) for each number a photon's choice reads (EntryLane), in a fixed order: the lanes store only these,
-    // so the compiler drops what only the others need (the reflected waves' plane waves, the incident p
-    // field; a fifth of the entry's divisions).
+    // so the compiler drops what only the others need (the reflected waves' wave normal and fields, the
+    // incident wave normal and p field: 12 vector divisions of the entry's).
     template <class F>
     FACETLIGHT_AI void forEachNumber(F&& f) {
         f(incidentS.x), f(incidentS.y), f(incidentS.z);
