@@ -66,6 +66,11 @@ class Material {
     Optic optic() const { return optic_; }
     // n_o, n_o, n_e (uniaxial); alpha, beta, gamma (biaxial, alpha < beta < gamma); n, n, n (isotropic).
     std::array<double, 3> principalIndices(double wavelengthNm) const;
+    // principalIndices()[axis] alone (a birefringent trace's per-photon index: one dispersion formula, not
+    // three).
+    double principalIndex(int axis, double wavelengthNm) const {
+        return axes_[size_t(axis)].at(wavelengthNm);
+    }
     // At 589.3 nm, as gemmologists quote them: the largest less the smallest principal index (0 for
     // isotropic), and the optic sign: +1 when n_e > n_o, or for biaxial when gamma is the acute bisectrix
     // (twoVzDegrees() < 90); -1 otherwise; 0 for isotropic and for a biaxial crystal at 2V = 90 deg exactly.

@@ -63,7 +63,7 @@ HWY_INLINE uint64_t enterUniaxialLanes(const Vec3& axis, double nOutside, const 
 // ones too, or neither), leaveCrystal(...)'s waves as uniaxial::LeavingLane{numbers + j, stride, bit j of
 // `evanescent`} reads them (UniaxialLeaving's numbers, number i at numbers[i * stride + j]; stride at least
 // count rounded up to a whole vector of doubles); the others are left to leaveCrystal. Only what a lane's
-// choice reads is read back, lane by lane, not the whole InterfaceWaves.
+// choice reads is stored, and read back lane by lane.
 HWY_INLINE uint64_t leaveUniaxialLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
                                        const PlaneWave* const incident[], const double* const normal[3],
                                        size_t count, double* numbers, size_t stride, uint64_t& evanescent) {

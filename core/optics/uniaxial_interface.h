@@ -150,23 +150,26 @@ template <class T>
 struct UniaxialEntry {
     using Mask = decltype(T{} < T{});
     static constexpr int kConditions = 7;
-    static constexpr int kIncident = 3 * 3 + 1;  // forEachNumber's: the incident waves', then each wave's
-    static constexpr int kPerWave = 3 * 3 + 6;
-    static constexpr int kNumbers = kIncident + 4 * kPerWave;
+    // forEachNumber's: the incident s field, each wave's flux ratio and two amplitudes, then the transmitted
+    // waves' plane waves.
+    static constexpr int kFluxes = 3, kTransmitted = kFluxes + 4 * 3, kPerWave = 3 * 3 + 1;
+    static constexpr int kNumbers = kTransmitted + 2 * kPerWave;
     Mask met[kConditions];
     V3<T> incidentNormal, incidentS, incidentP;
     T incidentIndex;
     EntryWave<T> reflected[2], transmitted[2];
 
-    // f(x) for each number, in a fixed order (to move the lanes' results into scalar ones).
+    // f(x) for each number a photon's choice reads (EntryLane), in a fixed order: the lanes store only these,
+    // so the compiler drops what only the others need (the reflected waves' wave normal and fields, the
+    // incident wave normal and p field: 12 vector divisions of the entry's).
     template <class F>
     FACETLIGHT_AI void forEachNumber(F&& f) {
-        for (V3<T>* v : {&incidentNormal, &incidentS, &incidentP}) f(v->x), f(v->y), f(v->z);
-        f(incidentIndex);
-        for (EntryWave<T>* w : {&reflected[0], &reflected[1], &transmitted[0], &transmitted[1]}) {
+        f(incidentS.x), f(incidentS.y), f(incidentS.z);
+        for (EntryWave<T>* w : {&reflected[0], &reflected[1], &transmitted[0], &transmitted[1]})
+            f(w->fluxRatio), f(w->amplitude[0]), f(w->amplitude[1]);
+        for (EntryWave<T>* w : {&transmitted[0], &transmitted[1]}) {
             for (V3<T>* v : {&w->waveNormal, &w->ray, &w->field}) f(v->x), f(v->y), f(v->z);
-            f(w->index), f(w->amplitude[0]), f(w->amplitude[1]), f(w->fluxRatio), f(w->share[0]),
-                f(w->share[1]);
+            f(w->index);
         }
     }
 };
@@ -298,18 +301,25 @@ template <class T>
 struct UniaxialLeaving {
     using Mask = decltype(T{} < T{});
     static constexpr int kConditions = 7;
-    static constexpr int kStartConditions = 6;        // startLeaving()'s; the last, leaveInto...()'s
-    static constexpr int kPerWave = 3 * 3 + 5;        // forEachNumber's for each wave
-    static constexpr int kNumbers = 4 * kPerWave;
+    static constexpr int kStartConditions = 6;  // startLeaving()'s; the last, leaveInto...()'s
+    // forEachNumber's: the four shares, the reflected waves' plane waves, the transmitted amplitudes, then
+    // the s wave's ray and field.
+    static constexpr int kReflected = 4, kPerWave = 3 * 3 + 1, kAmplitudes = kReflected + 2 * kPerWave;
+    static constexpr int kOut = kAmplitudes + 2 * 2, kNumbers = kOut + 2 * 3;
     Mask met[kConditions];
     LeavingWave<T> reflected[2], transmitted[2];
 
+    // f(x) for each number a photon's choice reads (LeavingLane), in a fixed order, as UniaxialEntry's.
     template <class F>
     FACETLIGHT_AI void forEachNumber(F&& f) {
-        for (LeavingWave<T>* w : {&reflected[0], &reflected[1], &transmitted[0], &transmitted[1]}) {
+        for (LeavingWave<T>* w : {&reflected[0], &reflected[1], &transmitted[0], &transmitted[1]})
+            f(w->share);
+        for (LeavingWave<T>* w : {&reflected[0], &reflected[1]}) {
             for (V3<T>* v : {&w->waveNormal, &w->ray, &w->field}) f(v->x), f(v->y), f(v->z);
-            f(w->index), f(w->fluxRatio), f(w->amplitude[0]), f(w->amplitude[1]), f(w->share);
+            f(w->index);
         }
+        for (LeavingWave<T>* w : {&transmitted[0], &transmitted[1]}) f(w->amplitude[0]), f(w->amplitude[1]);
+        for (V3<T>* v : {&transmitted[0].ray, &transmitted[0].field}) f(v->x), f(v->y), f(v->z);
     }
 };
 
@@ -510,51 +520,51 @@ inline void putInterfaceWaves(const UniaxialLeaving<double>& e, const PlaneWave&
 }
 
 // One lane's entry among several kept by number (UniaxialEntry<double>::forEachNumber's order, number i at
-// numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseCrystalWave()), read only
-// where read, the values putInterfaceWaves() would put into InterfaceWaves.
+// numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseCrystalWave()), the values
+// putInterfaceWaves() would put into InterfaceWaves.
 struct EntryLane {
+    using Entry = UniaxialEntry<double>;
     const double* numbers;
     size_t stride;
 
     double number(int i) const { return numbers[size_t(i) * stride]; }
     Vec3 vec(int i) const { return {number(i), number(i + 1), number(i + 2)}; }
-    // Number i of wave w: reflected s and p, then transmitted ordinary and extraordinary.
-    int at(int w, int i) const {
-        return UniaxialEntry<double>::kIncident + UniaxialEntry<double>::kPerWave * w + i;
-    }
-    Vec3 incidentS() const { return vec(3); }
-    double fluxRatio(int w) const { return number(at(w, 12)); }
-    Complex amplitude(int w, int i) const { return Complex(number(at(w, 10 + i)), 0.0); }
+    Vec3 incidentS() const { return vec(0); }
+    // Wave w: reflected s and p, then transmitted ordinary and extraordinary.
+    double fluxRatio(int w) const { return number(Entry::kFluxes + 3 * w); }
+    Complex amplitude(int w, int i) const { return Complex(number(Entry::kFluxes + 3 * w + 1 + i), 0.0); }
     PlaneWave transmittedWave(int j) const {
-        return {j ? WaveMode::Extraordinary : WaveMode::Ordinary, vec(at(2 + j, 0)), vec(at(2 + j, 3)),
-                vec(at(2 + j, 6)), number(at(2 + j, 9))};
+        const int at = Entry::kTransmitted + Entry::kPerWave * j;
+        return {j ? WaveMode::Extraordinary : WaveMode::Ordinary, vec(at), vec(at + 3), vec(at + 6),
+                number(at + 9)};
     }
-    Vec3 ordinaryNormal() const { return vec(at(2, 0)); }
+    Vec3 ordinaryNormal() const { return vec(Entry::kTransmitted); }
 };
 
 // One lane's leaving among several kept by number (UniaxialLeaving<double>::forEachNumber's order, number i
-// at numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseLeavingWave()), read only
-// where read, the values putInterfaceWaves() would put into InterfaceWaves.
+// at numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseLeavingWave()), the values
+// putInterfaceWaves() would put into InterfaceWaves.
 struct LeavingLane {
+    using Leaving = UniaxialLeaving<double>;
     const double* numbers;
     size_t stride;
     bool evanescent;
 
-    // Number i of wave w: reflected ordinary and extraordinary, then transmitted s and p.
-    double number(int w, int i) const {
-        return numbers[size_t(UniaxialLeaving<double>::kPerWave * w + i) * stride];
-    }
-    Vec3 vec(int w, int i) const { return {number(w, i), number(w, i + 1), number(w, i + 2)}; }
-    double reflectedShare(int j) const { return number(j, 13); }
-    double transmittedShare(int j) const { return number(2 + j, 13); }
+    double number(int i) const { return numbers[size_t(i) * stride]; }
+    Vec3 vec(int i) const { return {number(i), number(i + 1), number(i + 2)}; }
+    double reflectedShare(int j) const { return number(j); }
+    double transmittedShare(int j) const { return number(2 + j); }
     PlaneWave reflectedWave(int j) const {
-        return {j ? WaveMode::Extraordinary : WaveMode::Ordinary, vec(j, 0), vec(j, 3), vec(j, 6),
-                number(j, 9)};
+        const int at = Leaving::kReflected + Leaving::kPerWave * j;
+        return {j ? WaveMode::Extraordinary : WaveMode::Ordinary, vec(at), vec(at + 3), vec(at + 6),
+                number(at + 9)};
     }
-    Complex transmittedAmplitude(int j) const { return Complex(number(2 + j, 11), number(2 + j, 12)); }
+    Complex transmittedAmplitude(int j) const {
+        return Complex(number(Leaving::kAmplitudes + 2 * j), number(Leaving::kAmplitudes + 2 * j + 1));
+    }
     // The s wave's ray and field (unset when evanescent).
-    Vec3 transmittedRay() const { return evanescent ? Vec3{} : vec(2, 3); }
-    Vec3 transmittedField() const { return evanescent ? Vec3{} : vec(2, 6); }
+    Vec3 transmittedRay() const { return evanescent ? Vec3{} : vec(Leaving::kOut); }
+    Vec3 transmittedField() const { return evanescent ? Vec3{} : vec(Leaving::kOut + 3); }
 };
 
 #undef FACETLIGHT_AI

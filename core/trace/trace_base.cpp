@@ -85,7 +85,7 @@ std::vector<TraceBase::FixedEntry> TraceBase::fixedEntriesAt(float n) const {
 
 float TraceBase::principalIndex(int axis, double wavelengthNm) const {
     const double nm = scene_.dispersive() ? wavelengthNm : Material::kSodiumD;
-    return float(scene_.material().principalIndices(nm)[size_t(axis)]);
+    return float(scene_.material().principalIndex(axis, nm));
 }
 
 float TraceBase::absorption(float wavelengthNm) const {

@@ -256,6 +256,17 @@ TEST(DoubleRefraction, IsotropicMaterialsHaveOneIndex) {
     EXPECT_EQ(n.principalIndices(500), (std::array<double, 3>{1.7, 1.7, 1.7}));
 }
 
+TEST(DoubleRefraction, OnePrincipalIndexIsThatOfAllThree) {
+    for (const char* name : {"sapphire", "quartz", "topaz", "peridot", "diamond"}) {
+        const Material m = Material::byName(name);
+        for (const double nm : {380.0, 589.3, 780.0}) {
+            const std::array<double, 3> n = m.principalIndices(nm);
+            for (int axis = 0; axis < 3; ++axis)
+                EXPECT_EQ(m.principalIndex(axis, nm), n[size_t(axis)]) << name;
+        }
+    }
+}
+
 TEST(DoubleRefraction, DensitiesOfTheNewMaterials) {
     // docs/optics.md, "Materials": each with its source.
     const std::pair<const char*, double> densities[] = {{"ruby", 4.00},       {"quartz", 2.65},  {"calcite", 2.71},

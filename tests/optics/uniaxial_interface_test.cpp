@@ -24,8 +24,8 @@ uint64_t EnterLanes(const Vec3& axis, double nOutside, const double* nO, const d
                     const double* const direction[3], const double* const normal[3], size_t count,
                     InterfaceWaves* out) {
 #if HWY_TARGET != HWY_SCALAR
-    // Every number into out[j] as enterCrystal() puts them, then what a photon's choice reads through
-    // uniaxial::EntryLane over them: the comparison with enterCrystal() checks both.
+    // What a photon's choice reads through uniaxial::EntryLane, into out[j] (enterCrystal()'s waves when
+    // called, each number read replaced by the lanes'): the comparison with enterCrystal() checks those.
     using Entry = uniaxial::UniaxialEntry<double>;
     constexpr size_t kStride = 16;
     alignas(64) double numbers[Entry::kNumbers * kStride];
@@ -33,11 +33,7 @@ uint64_t EnterLanes(const Vec3& axis, double nOutside, const double* nO, const d
         enterUniaxialLanes(axis, nOutside, nO, nE, direction, normal, count, numbers, kStride);
     for (uint64_t b = entered; b; b &= b - 1) {
         const int j = __builtin_ctzll(b);
-        Entry one;
-        int i = 0;
-        one.forEachNumber([&](double& v) { v = numbers[i++ * kStride + j]; });
         InterfaceWaves& w = out[j];
-        uniaxial::putInterfaceWaves(one, w);
         const uniaxial::EntryLane lane{numbers + j, kStride};
         w.incident[0].field = lane.incidentS();
         for (int k = 0; k < 4; ++k) {
@@ -60,8 +56,8 @@ uint64_t LeaveLanes(const Vec3& axis, double nOutside, const double* nO, const d
                     const PlaneWave* const incident[], const double* const normal[3], size_t count,
                     InterfaceWaves* out) {
 #if HWY_TARGET != HWY_SCALAR
-    // Every number into out[j] as leaveCrystal() puts them, then what a photon's choice reads through
-    // uniaxial::LeavingLane over them: the comparison with leaveCrystal() checks both.
+    // What a photon's choice reads through uniaxial::LeavingLane, into out[j] (leaveCrystal()'s waves when
+    // called, each number read replaced by the lanes'), as EnterLanes.
     using Leaving = uniaxial::UniaxialLeaving<double>;
     constexpr size_t kStride = 16;
     alignas(64) double numbers[Leaving::kNumbers * kStride];
@@ -71,11 +67,7 @@ uint64_t LeaveLanes(const Vec3& axis, double nOutside, const double* nO, const d
     for (uint64_t b = left; b; b &= b - 1) {
         const int j = __builtin_ctzll(b);
         const bool outsideEvanescent = evanescent >> j & 1;
-        Leaving one;
-        int i = 0;
-        one.forEachNumber([&](double& v) { v = numbers[i++ * kStride + j]; });
         InterfaceWaves& w = out[j];
-        uniaxial::putInterfaceWaves(one, *incident[j], outsideEvanescent, w);
         const uniaxial::LeavingLane lane{numbers + j, kStride, outsideEvanescent};
         for (int k = 0; k < 2; ++k) {
             w.reflected[k].share[0] = lane.reflectedShare(k);
@@ -173,7 +165,12 @@ TEST(UniaxialEntry, LanesGiveEnterCrystalsBitsOnEveryTarget) {
         size_t compared = 0, incidences = 0;
         for (int round = 0; round < 500; ++round) {
             const Batch b = randomBatch(rng);
-            std::vector<InterfaceWaves> lanes(kBatch);
+            std::vector<InterfaceWaves> ones(kBatch);
+            for (size_t j = 0; j < b.count; ++j) {
+                const Vec3 dir{b.d[0][j], b.d[1][j], b.d[2][j]}, normal{b.n[0][j], b.n[1][j], b.n[2][j]};
+                ones[j] = enterCrystal(UniaxialMedium{b.nO[j], b.nE[j], b.axis}, dir, normal);
+            }
+            std::vector<InterfaceWaves> lanes = ones;
             const double* const d[3] = {b.d[0], b.d[1], b.d[2]};
             const double* const n[3] = {b.n[0], b.n[1], b.n[2]};
             const uint64_t met =
@@ -182,10 +179,7 @@ TEST(UniaxialEntry, LanesGiveEnterCrystalsBitsOnEveryTarget) {
             for (size_t j = 0; j < b.count; ++j) {
                 ++incidences;
                 if (!(met >> j & 1)) continue;
-                const Vec3 dir{b.d[0][j], b.d[1][j], b.d[2][j]}, normal{b.n[0][j], b.n[1][j], b.n[2][j]};
-                const InterfaceWaves one =
-                    enterCrystal(UniaxialMedium{b.nO[j], b.nE[j], b.axis}, dir, normal);
-                ASSERT_TRUE(same(lanes[j], one)) << "round " << round << ", incidence " << j;
+                ASSERT_TRUE(same(lanes[j], ones[j])) << "round " << round << ", incidence " << j;
                 ++compared;
             }
         }
@@ -216,16 +210,19 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
                 for (int c = 0; c < 3; ++c) b.n[c][j] = normal[c];
                 incident[j] = &waves[j];
             }
-            std::vector<InterfaceWaves> lanes(kBatch);
+            std::vector<InterfaceWaves> ones(kBatch);
+            for (size_t j = 0; j < b.count; ++j) {
+                const Vec3 normal{b.n[0][j], b.n[1][j], b.n[2][j]};
+                ones[j] = leaveCrystal(UniaxialMedium{b.nO[j], b.nE[j], b.axis}, waves[j], normal);
+            }
+            std::vector<InterfaceWaves> lanes = ones;
             const double* const n[3] = {b.n[0], b.n[1], b.n[2]};
             const uint64_t met =
                 HWY_DYNAMIC_DISPATCH(LeaveLanes)(b.axis, 1, b.nO, b.nE, incident, n, b.count, lanes.data());
             ASSERT_EQ(met >> b.count, 0u);
             for (size_t j = 0; j < b.count; ++j) {
                 ++incidences;
-                const Vec3 normal{b.n[0][j], b.n[1][j], b.n[2][j]};
-                const InterfaceWaves one =
-                    leaveCrystal(UniaxialMedium{b.nO[j], b.nE[j], b.axis}, waves[j], normal);
+                const InterfaceWaves& one = ones[j];
                 const bool crystalReal = one.reflected[0].propagating && one.reflected[1].propagating;
                 if (!(met >> j & 1)) {
                     if (hwy::SupportedTargets() != HWY_SCALAR) {
