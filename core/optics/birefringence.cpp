@@ -666,14 +666,11 @@ bool newtonRoot(const double c[5], double scale, T& z) {
     return false;
 }
 
-// The roots of the quartic c[4] z^4 + ... + c[0] (c[4] != 0): Ferrari's, each refined by Newton's iteration
-// where they lie at least 1e-4 scale apart (then it cannot slip to a neighbour: Ferrari's error is far
-// smaller), a real one in real arithmetic and a complex one's conjugate mirrored; else by the Aberth-Ehrlich
-// iteration (Aberth, Math. Comp. 27, 339, 1973) from Ferrari's roots, which keeps close roots apart (it
-// converges from any start for simple roots: from the circle of radius `scale`, which bounds the roots,
-// should Ferrari's fail). Fixed-size, no allocation, the same steps for the same coefficients. True where the
-// roots are so far apart.
-bool quarticRoots(const double c[5], double scale, Complex z[4]) {
+// Ferrari's roots of the quartic c[4] z^4 + ... + c[0] (c[4] != 0), and whether they are finite and lie at
+// least 1e-4 scale apart: then Newton's iteration refines each one it is asked for (refinedRoot) and cannot
+// slip to a neighbour (Ferrari's error is far smaller), and only the roots kept need it. Else
+// aberthRoots refines them together.
+bool separatedRoots(const double c[5], double scale, Complex z[4]) {
     ferrariRoots(c, z);
     bool finite = true;
     double gap = INFINITY;
@@ -684,28 +681,32 @@ bool quarticRoots(const double c[5], double scale, Complex z[4]) {
             gap = d < gap ? d : gap;
         }
     }
-    if (finite && gap >= 1e-8 * scale * scale) {
-        Complex refined[4];
-        bool converged = true;
-        for (int j = 0; j < 4 && converged; j += 2) {
-            // quadraticRoots gives a complex pair as z[j] and its conjugate z[j + 1].
-            if (z[j].imag() != 0) {
-                refined[j] = z[j];
-                converged = newtonRoot(c, scale, refined[j]);
-                refined[j + 1] = std::conj(refined[j]);
-                continue;
-            }
-            for (int l = j; l < j + 2 && converged; ++l) {
-                double x = z[l].real();
-                converged = newtonRoot(c, scale, x);
-                refined[l] = x;
-            }
-        }
-        if (converged) {
-            std::copy(refined, refined + 4, z);
-            return true;
-        }
+    return finite && gap >= 1e-8 * scale * scale;
+}
+
+// Root j of separatedRoots' z refined by Newton's iteration: a real one in real arithmetic, a complex one as
+// the conjugate of its pair's first (quadraticRoots gives a complex pair as z[0], z[1] or z[2], z[3], the
+// first with Im > 0). False if it did not converge.
+bool refinedRoot(const double c[5], double scale, const Complex z[4], int j, Complex& root) {
+    if (z[j].imag() != 0) {
+        Complex first = z[j & ~1];
+        const bool converged = newtonRoot(c, scale, first);
+        root = j & 1 ? std::conj(first) : first;
+        return converged;
     }
+    double x = z[j].real();
+    const bool converged = newtonRoot(c, scale, x);
+    root = x;
+    return converged;
+}
+
+// The quartic's roots by the Aberth-Ehrlich iteration (Aberth, Math. Comp. 27, 339, 1973) from Ferrari's
+// roots z, which keeps close roots apart (it converges from any start for simple roots: from the circle of
+// radius `scale`, which bounds the roots, should Ferrari's fail). Fixed-size, no allocation, the same steps
+// for the same coefficients.
+void aberthRoots(const double c[5], double scale, Complex z[4]) {
+    bool finite = true;
+    for (int j = 0; j < 4; ++j) finite = finite && std::isfinite(z[j].real()) && std::isfinite(z[j].imag());
     if (!finite)
         for (int l = 0; l < 4; ++l) z[l] = std::polar(scale, 0.4 + l * 1.5707963267948966);
     // Done when the steps are at rounding, or small and no longer shrinking (close roots, whose rounding
@@ -732,7 +733,6 @@ bool quarticRoots(const double c[5], double scale, Complex z[4]) {
         quiet = atFloor ? quiet + 1 : 0;
         previous = largest;
     }
-    return false;
 }
 
 // E = eps^-1 D of a propagating wave along unit wave normal kHat (principal frame), D being an eigenvector of
@@ -779,33 +779,7 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
     const double c[5] = {u2 * a0 - g0 + pr.det, 2 * (u2 * a1 - g1), a0 + u2 * a2 - g2, 2 * a1, a2};
     Complex q[4];
     const double scale = m.gamma + std::sqrt(u2);
-    bool separated = quarticRoots(c, scale, q);
-    for (Complex& r : q)
-        if (std::fabs(r.imag()) <= 1e-9 * scale) r = r.real();
-    // A double root (a wave normal on an optic axis) comes out as two roots about sqrt(rounding) apart on
-    // either side of it, along the real axis or across it (a pair with imaginary parts of that size, which
-    // would pass for evanescent waves): their mean's real part is the root to rounding.
-    for (int j = 0; j < 4; ++j)
-        for (int l = j + 1; l < 4; ++l)
-            if (std::norm(q[j] - q[l]) <= 1e-14 * scale * scale && std::fabs(q[j].imag()) <= 1e-7 * scale &&
-                std::fabs(q[l].imag()) <= 1e-7 * scale)
-                q[j] = q[l] = 0.5 * (q[j].real() + q[l].real());
-    // Leaving, the incident wave is a real root at qIncident, and next to an optic axis its twin on the other
-    // sheet lies a few tenths of a millionth from it: rounding may turn the two into a complex pair around
-    // them. They are the incident wave and its twin, not evanescent waves, and not among the reflected waves
-    // sought: both are put at qIncident, on the incident side.
-    if (!std::isnan(qIncident))
-        for (int j = 0; j < 4; ++j)
-            for (int l = j + 1; l < 4; ++l) {
-                const double near = std::fmax(1e-6 * scale, 2 * std::fabs(q[j].imag()));
-                if (q[j].imag() != 0 && std::fabs(q[j].imag()) <= 1e-5 * scale &&
-                    std::fabs(q[j].real() - qIncident) <= near &&
-                    std::fabs(q[l].real() - qIncident) <= near) {
-                    q[j] = q[l] = qIncident;
-                    separated = false;
-                }
-            }
-
+    const bool separated = separatedRoots(c, scale, q);
     // A real root's wave normal and index on the sheet of the index surface whose index along it is nearer
     // its |k| (a line of fixed kt may cross either sheet twice, the outer one being dimpled at the optic
     // axes); its field from the eigenproblem for its wave normal (principal frame).
@@ -848,17 +822,30 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
         w[j].k = lift<Complex>(kt) + lift<Complex>(N) * w[j].q;
         return step;
     };
-    for (int j = 0; j < 4; ++j) {
-        w[j].q = q[j];
-        w[j].k = lift<Complex>(kt) + lift<Complex>(N) * q[j];
-        w[j].propagating = q[j].imag() == 0;
-    }
+    // Root j at r: its wave vector, and whether it propagates.
+    auto place = [&](int j, Complex r) {
+        q[j] = w[j].q = r;
+        w[j].k = lift<Complex>(kt) + lift<Complex>(N) * r;
+        w[j].propagating = r.imag() == 0;
+    };
+    for (int j = 0; j < 4; ++j) place(j, q[j]);
     int kept[2];
-    if (separated) {
+    auto keepSeparated = [&]() {
         // Roots far apart, each simple: a line crosses a closed sheet entering it then leaving, so of the
         // real roots in order, the sheets nested (the inner one the fast sheet), the last two leave along
         // +N and the first two along -N; a line that misses the inner sheet and crosses the outer one four
         // times through its dimples leaves at the second and fourth. Two real roots: entering, then leaving.
+        // Ferrari's roots order and classify them as well as the refined ones would; only the kept ones (and
+        // the middle one that tells the sheets apart) are refined, each as a root of the whole quartic, and
+        // should one not converge the roots are refined together (aberthRoots) and the close roots' way
+        // taken.
+        const Complex ferrari[4] = {q[0], q[1], q[2], q[3]};
+        auto refine = [&](int j) {
+            Complex r;
+            const bool converged = refinedRoot(c, scale, ferrari, j, r);
+            place(j, r);
+            return converged;
+        };
         int real[4], count = 0, decaying = -1;
         for (int j = 0; j < 4; ++j) {
             if (w[j].propagating)
@@ -872,10 +859,15 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
         if (count == 2) kept[1] = side > 0 ? real[1] : real[0];
         if (count == 4) {
             const int middle = side > 0 ? real[2] : real[1];
+            if (!refine(middle)) return false;
             locate(middle, true);
             const bool nested = !slowSheet[middle];
             kept[0] = side > 0 ? real[nested ? 2 : 1] : real[0];
             kept[1] = side > 0 ? real[3] : real[nested ? 1 : 2];
+        }
+        for (int j : kept) {
+            const bool middle = count == 4 && j == (side > 0 ? real[2] : real[1]);
+            if (!middle && !refine(j)) return false;
         }
         for (int j : kept) {
             if (!w[j].propagating) continue;
@@ -892,7 +884,40 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
             }
             setField(w[j], at[j], slowSheet[j]);
         }
-    } else {
+        return true;
+    };
+    if (!(separated && keepSeparated())) {
+        if (separated) {  // a kept root did not converge: start afresh from Ferrari's roots
+            ferrariRoots(c, q);
+            std::fill(slowSheet, slowSheet + 4, false);
+            std::fill(nearAxis, nearAxis + 4, false);
+        }
+        aberthRoots(c, scale, q);
+        for (Complex& r : q)
+            if (std::fabs(r.imag()) <= 1e-9 * scale) r = r.real();
+        // A double root (a wave normal on an optic axis) comes out as two roots about sqrt(rounding) apart on
+        // either side of it, along the real axis or across it (a pair with imaginary parts of that size,
+        // which would pass for evanescent waves): their mean's real part is the root to rounding.
+        for (int j = 0; j < 4; ++j)
+            for (int l = j + 1; l < 4; ++l)
+                if (std::norm(q[j] - q[l]) <= 1e-14 * scale * scale &&
+                    std::fabs(q[j].imag()) <= 1e-7 * scale && std::fabs(q[l].imag()) <= 1e-7 * scale)
+                    q[j] = q[l] = 0.5 * (q[j].real() + q[l].real());
+        // Leaving, the incident wave is a real root at qIncident, and next to an optic axis its twin on the
+        // other sheet lies a few tenths of a millionth from it: rounding may turn the two into a complex pair
+        // around them. They are the incident wave and its twin, not evanescent waves, and not among the
+        // reflected waves sought: both are put at qIncident, on the incident side.
+        if (!std::isnan(qIncident))
+            for (int j = 0; j < 4; ++j)
+                for (int l = j + 1; l < 4; ++l) {
+                    const double near = std::fmax(1e-6 * scale, 2 * std::fabs(q[j].imag()));
+                    if (q[j].imag() != 0 && std::fabs(q[j].imag()) <= 1e-5 * scale &&
+                        std::fabs(q[j].real() - qIncident) <= near &&
+                        std::fabs(q[l].real() - qIncident) <= near) {
+                        q[j] = q[l] = qIncident;
+                    }
+                }
+        for (int j = 0; j < 4; ++j) place(j, q[j]);
         // Roots close together: each real root's side from its field's Poynting flux.
         double score[4];
         for (int j = 0; j < 4; ++j) {
