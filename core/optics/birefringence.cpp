@@ -952,7 +952,8 @@ bool nestedWaves(const Setting& b, const double c[5], double scale, const Comple
 }
 
 // The biaxial crystal's two waves of tangential kt whose energy leaves the facet along side * N, Fast then
-// Slow, with fields (unnormalised) and for a propagating one its ray's normal component. The quartic
+// Slow, with fields (unit where the wave propagates, else unnormalised) and for a propagating one its ray's
+// normal component and, in known[], its PlaneWave and flux. The quartic
 // det(k k^T - (k.k) I + eps) = 0 for k = kt + q N, with eps and G = tr(eps) eps - eps^2 in the principal
 // frame, is F(k) = (k.k)(k.eps.k) - k.G.k + det eps = 0 (Fresnel's equation of wave normals multiplied out);
 // its four roots are two on each side: a real root by the sign of its Poynting flux along N, E x (k x E), a
