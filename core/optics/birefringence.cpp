@@ -238,6 +238,28 @@ T divide(T z, T w) {
     }
 }
 
+// A propagating wave whose PlaneWave and normalFlux are known before matchFields, which then need not work
+// them out again: a biaxial crystal's as biaxialWaves found it (unit field, wave normal and ray from the
+// eigenproblem; flux |k - E (E.k)| times its ray's normal component), and an s or p wave outside.
+struct KnownWave {
+    PlaneWave wave;
+    double flux;
+};
+
+// The s or p wave w outside (isotropicWave, index n), where it propagates: its field is unit as made (s, and
+// k x s / n with k across s and |k| = n).
+template <class I>
+KnownWave isotropicKnown(const Wave<I>& w, double n) {
+    KnownWave o{};
+    o.wave.mode = w.mode;
+    o.wave.index = n;
+    o.wave.waveNormal = realPart(w.k) * (1 / n);
+    o.wave.ray = o.wave.waveNormal;
+    o.wave.field = realPart(w.field);
+    o.flux = n * w.rayNormal;
+    return o;
+}
+
 // Matches tangential E and H across the interface for `count` incident waves: incident + reflected =
 // transmitted, the unknowns being the two reflected and the two transmitted amplitudes (n the isotropic
 // medium's index). Fills the outgoing waves' amplitudes, flux ratios and shares.
@@ -246,11 +268,13 @@ T divide(T z, T w) {
 // are s: (1, 0, 0, q) and p: (0, q / n, -n, 0) (E = k x s / n, H = k x E = -n s as k.k = n^2), so s appears
 // only in rows 0 and 3 and p only in rows 1 and 2. Eliminating them leaves a 2x2 system for the crystal's
 // two waves (Yariv & Yeh ch. 4; Lekner 1991 reduces it the same way), solved by Cramer's rule. The crystal's
-// waves are reflected or transmitted as crystalReflects says, the isotropic waves iso[] (s, p) the others.
+// waves are reflected or transmitted as crystalReflects says, the isotropic waves iso[] (s, p) the others;
+// where known is given, the propagating ones among them are known[0], [1] (the crystal's) and known[2], [3]
+// (iso[]), and the incident flux is incidentFlux.
 template <class C, class I, class In, class M>
 void matchFields(const M& crystal, bool crystalReflects, const Wave<In> incident[2], int count,
                  const Wave<C> crystalWaves[2], const Wave<I> iso[2], const Vec3& N, const Vec3& s, double n,
-                 InterfaceWaves& out) {
+                 InterfaceWaves& out, const KnownWave* known, double knownIncidentFlux) {
     using T = std::conditional_t<std::is_same_v<C, double> && std::is_same_v<I, double>, double, Complex>;
     const Vec3 t2 = cross(N, s);
     // incident = sum of u_j A_j: A_j = +transmitted_j, -reflected_j.
@@ -282,11 +306,16 @@ void matchFields(const M& crystal, bool crystalReflects, const Wave<In> incident
 
     // Every incident basis wave has a unit real field and the same wave vector, so one incident flux serves
     // (out.incident[0] is set).
-    const double incidentFlux = normalFlux(out.incident[0], incident[0].rayNormal);
-    auto fill = [&](OutgoingWave& o, const auto& w, const M* medium, int row, double sign) {
+    const double incidentFlux = known ? knownIncidentFlux : normalFlux(out.incident[0], incident[0].rayNormal);
+    auto fill = [&](OutgoingWave& o, const auto& w, const M* medium, int row, double sign,
+                    const KnownWave* plane) {
         o.propagating = w.propagating;
         double fieldScale;
-        if (w.propagating) {
+        if (w.propagating && plane) {
+            fieldScale = 1;
+            o.wave = plane->wave;
+            o.fluxRatio = sign * plane->flux / incidentFlux;
+        } else if (w.propagating) {
             const Vec3 field = realPart(w.field);
             fieldScale = length(field);
             o.wave = toPlaneWave(medium, w, field / fieldScale);
@@ -302,8 +331,9 @@ void matchFields(const M& crystal, bool crystalReflects, const Wave<In> incident
     };
     for (int j = 0; j < 2; ++j) {
         fill(crystalReflects ? out.reflected[j] : out.transmitted[j], crystalWaves[j], &crystal,
-             crystalRow + j, crystalSign);
-        fill(crystalReflects ? out.transmitted[j] : out.reflected[j], iso[j], nullptr, isoRow + j, isoSign);
+             crystalRow + j, crystalSign, known ? known + j : nullptr);
+        fill(crystalReflects ? out.transmitted[j] : out.reflected[j], iso[j], nullptr, isoRow + j, isoSign,
+             known ? known + 2 + j : nullptr);
     }
 }
 
@@ -365,15 +395,28 @@ namespace {
 // reflected outside, and the fields matched.
 template <class I, class C, class M>
 InterfaceWaves fromOutside(const M& crystal, const Wave<C> transmitted[2], const Vec3& kt, const Vec3& N,
-                           const Vec3& s, double nOutside) {
+                           const Vec3& s, double nOutside, const KnownWave* known = nullptr) {
     const Wave<I> incident[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
                                  isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
     const Wave<I> reflected[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, -1),
                                   isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, -1)};
     InterfaceWaves out;
     out.incidentCount = 2;
-    for (int i = 0; i < 2; ++i) out.incident[i] = toPlaneWave<M>(nullptr, incident[i]);
-    matchFields(crystal, false, incident, 2, transmitted, reflected, N, s, nOutside, out);
+    if (!known) {
+        for (int i = 0; i < 2; ++i) out.incident[i] = toPlaneWave<M>(nullptr, incident[i]);
+        matchFields(crystal, false, incident, 2, transmitted, reflected, N, s, nOutside, out, nullptr, 0);
+        return out;
+    }
+    // Outside waves known as well (a biaxial crystal's interface).
+    const KnownWave all[4] = {known[0], known[1], isotropicKnown(reflected[0], nOutside),
+                              isotropicKnown(reflected[1], nOutside)};
+    double incidentFlux = 0;
+    for (int i = 0; i < 2; ++i) {
+        const KnownWave in = isotropicKnown(incident[i], nOutside);
+        out.incident[i] = in.wave;
+        incidentFlux = in.flux;
+    }
+    matchFields(crystal, false, incident, 2, transmitted, reflected, N, s, nOutside, out, all, incidentFlux);
     return out;
 }
 
@@ -382,13 +425,21 @@ InterfaceWaves fromOutside(const M& crystal, const Wave<C> transmitted[2], const
 template <class I, class C, class M>
 InterfaceWaves fromInside(const M& crystal, const PlaneWave& incident, const Wave<double> in[1],
                           const Wave<C> reflected[2], const Vec3& kt, const Vec3& N, const Vec3& s,
-                          double nOutside) {
+                          double nOutside, const KnownWave* known = nullptr) {
     const Wave<I> transmitted[2] = {isotropicWave<I>(WaveMode::S, nOutside, kt, N, s, 1),
                                     isotropicWave<I>(WaveMode::P, nOutside, kt, N, s, 1)};
     InterfaceWaves out;
     out.incidentCount = 1;
     out.incident[0] = incident;
-    matchFields(crystal, true, in, 1, reflected, transmitted, N, s, nOutside, out);
+    if (!known) {
+        matchFields(crystal, true, in, 1, reflected, transmitted, N, s, nOutside, out, nullptr, 0);
+        return out;
+    }
+    // Outside waves known as well (a biaxial crystal's interface); the incident wave's flux as normalFlux.
+    const KnownWave all[4] = {known[0], known[1], isotropicKnown(transmitted[0], nOutside),
+                              isotropicKnown(transmitted[1], nOutside)};
+    matchFields(crystal, true, in, 1, reflected, transmitted, N, s, nOutside, out, all,
+                normalFlux(incident, in[0].rayNormal));
     return out;
 }
 
@@ -598,14 +649,14 @@ void degeneratePair(const CMat3& m, const CVec3& reference, CVec3& e1, CVec3& e2
 // The largest real root of the monic cubic m^3 + b m^2 + c m + d (Numerical Recipes, 3rd ed., sec. 5.6:
 // the trigonometric form for three real roots, Cardano's with the cancellation-free sign choice for one).
 double largestCubicRoot(double b, double c, double d) {
-    const double Q = (b * b - 3 * c) / 9, R = (2 * b * b * b - 9 * b * c + 27 * d) / 54;
+    const double Q = (b * b - 3 * c) * (1.0 / 9), R = (2 * b * b * b - 9 * b * c + 27 * d) * (1.0 / 54);
     const double Q3 = Q * Q * Q;
     if (R * R < Q3) {
         const double theta = std::acos(std::clamp(R / std::sqrt(Q3), -1.0, 1.0));
-        return -2 * std::sqrt(Q) * std::cos((theta + 6.283185307179586) / 3) - b / 3;
+        return -2 * std::sqrt(Q) * std::cos((theta + 6.283185307179586) * (1.0 / 3)) - b * (1.0 / 3);
     }
     const double A = -std::copysign(std::cbrt(std::fabs(R) + std::sqrt(R * R - Q3)), R);
-    return A + (A != 0 ? Q / A : 0) - b / 3;
+    return A + (A != 0 ? Q / A : 0) - b * (1.0 / 3);
 }
 
 // The roots of y^2 + b y + c, the real ones without cancellation.
@@ -628,12 +679,13 @@ void quadraticRoots(double b, double c, Complex y[2]) {
 // cancels less is taken from its square, the other from r (Abramowitz & Stegun 3.8.3; the two-quadratic form
 // as in Strobach, J. Comput. Appl. Math. 234, 3007, 2010). Its rounding is then removed by the iteration.
 void ferrariRoots(const double c[5], Complex z[4]) {
-    const double A = c[3] / c[4], B = c[2] / c[4], C = c[1] / c[4], D = c[0] / c[4];
+    const double inverse = 1 / c[4];
+    const double A = c[3] * inverse, B = c[2] * inverse, C = c[1] * inverse, D = c[0] * inverse;
     const double A2 = A * A;
     const double p = B - 0.375 * A2, r = C - 0.5 * A * B + 0.125 * A2 * A,
                  s = D - 0.25 * A * C + 0.0625 * A2 * B - 0.01171875 * A2 * A2;
     const double m = largestCubicRoot(-0.5 * p, -s, 0.5 * p * s - 0.125 * r * r);
-    const double alpha2 = std::fmax(0.0, 2 * m - p), beta2 = std::fmax(0.0, m * m - s);
+    const double alpha2 = 2 * m - p > 0 ? 2 * m - p : 0, beta2 = m * m - s > 0 ? m * m - s : 0;
     double alpha = 0, beta = 0;
     if (alpha2 * (m * m + std::fabs(s)) >= beta2 * (2 * std::fabs(m) + std::fabs(p))) {
         alpha = std::sqrt(alpha2);
@@ -666,14 +718,11 @@ bool newtonRoot(const double c[5], double scale, T& z) {
     return false;
 }
 
-// The roots of the quartic c[4] z^4 + ... + c[0] (c[4] != 0): Ferrari's, each refined by Newton's iteration
-// where they lie at least 1e-4 scale apart (then it cannot slip to a neighbour: Ferrari's error is far
-// smaller), a real one in real arithmetic and a complex one's conjugate mirrored; else by the Aberth-Ehrlich
-// iteration (Aberth, Math. Comp. 27, 339, 1973) from Ferrari's roots, which keeps close roots apart (it
-// converges from any start for simple roots: from the circle of radius `scale`, which bounds the roots,
-// should Ferrari's fail). Fixed-size, no allocation, the same steps for the same coefficients. True where the
-// roots are so far apart.
-bool quarticRoots(const double c[5], double scale, Complex z[4]) {
+// Ferrari's roots of the quartic c[4] z^4 + ... + c[0] (c[4] != 0), and whether they are finite and lie at
+// least 1e-4 scale apart: then Newton's iteration refines each one it is asked for (refinedRoot) and cannot
+// slip to a neighbour (Ferrari's error is far smaller), and only the roots kept need it. Else
+// aberthRoots refines them together.
+bool separatedRoots(const double c[5], double scale, Complex z[4]) {
     ferrariRoots(c, z);
     bool finite = true;
     double gap = INFINITY;
@@ -684,28 +733,32 @@ bool quarticRoots(const double c[5], double scale, Complex z[4]) {
             gap = d < gap ? d : gap;
         }
     }
-    if (finite && gap >= 1e-8 * scale * scale) {
-        Complex refined[4];
-        bool converged = true;
-        for (int j = 0; j < 4 && converged; j += 2) {
-            // quadraticRoots gives a complex pair as z[j] and its conjugate z[j + 1].
-            if (z[j].imag() != 0) {
-                refined[j] = z[j];
-                converged = newtonRoot(c, scale, refined[j]);
-                refined[j + 1] = std::conj(refined[j]);
-                continue;
-            }
-            for (int l = j; l < j + 2 && converged; ++l) {
-                double x = z[l].real();
-                converged = newtonRoot(c, scale, x);
-                refined[l] = x;
-            }
-        }
-        if (converged) {
-            std::copy(refined, refined + 4, z);
-            return true;
-        }
+    return finite && gap >= 1e-8 * scale * scale;
+}
+
+// Root j of separatedRoots' z refined by Newton's iteration: a real one in real arithmetic, a complex one as
+// the conjugate of its pair's first (quadraticRoots gives a complex pair as z[0], z[1] or z[2], z[3], the
+// first with Im > 0). False if it did not converge.
+bool refinedRoot(const double c[5], double scale, const Complex z[4], int j, Complex& root) {
+    if (z[j].imag() != 0) {
+        Complex first = z[j & ~1];
+        const bool converged = newtonRoot(c, scale, first);
+        root = j & 1 ? std::conj(first) : first;
+        return converged;
     }
+    double x = z[j].real();
+    const bool converged = newtonRoot(c, scale, x);
+    root = x;
+    return converged;
+}
+
+// The quartic's roots by the Aberth-Ehrlich iteration (Aberth, Math. Comp. 27, 339, 1973) from Ferrari's
+// roots z, which keeps close roots apart (it converges from any start for simple roots: from the circle of
+// radius `scale`, which bounds the roots, should Ferrari's fail). Fixed-size, no allocation, the same steps
+// for the same coefficients.
+void aberthRoots(const double c[5], double scale, Complex z[4]) {
+    bool finite = true;
+    for (int j = 0; j < 4; ++j) finite = finite && std::isfinite(z[j].real()) && std::isfinite(z[j].imag());
     if (!finite)
         for (int l = 0; l < 4; ++l) z[l] = std::polar(scale, 0.4 + l * 1.5707963267948966);
     // Done when the steps are at rounding, or small and no longer shrinking (close roots, whose rounding
@@ -732,7 +785,6 @@ bool quarticRoots(const double c[5], double scale, Complex z[4]) {
         quiet = atFloor ? quiet + 1 : 0;
         previous = largest;
     }
-    return false;
 }
 
 // E = eps^-1 D of a propagating wave along unit wave normal kHat (principal frame), D being an eigenvector of
@@ -740,8 +792,10 @@ bool quarticRoots(const double c[5], double scale, Complex z[4]) {
 // (Born & Wolf sec. 15.2.2: the index ellipsoid's section). A 2x2 symmetric eigenproblem stays well
 // conditioned where the two indices nearly agree (a weakly birefringent crystal, a wave normal near an optic
 // axis), unlike the null vector of the wave matrix; on an optic axis it still gives an orthogonal pair. The
-// eigenvector's angle theta = atan2(2 b, a - c) / 2 for the form [[a, b], [b, c]], its cosine and sine by the
-// half-angle formulas, each from the one that does not cancel.
+// eigenvector's angle theta = atan2(2 b, a - c) / 2 for the form [[a, b], [b, c]]: by the half-angle formulas
+// (cos theta, sin theta) lies along (h + x, y) and along sign(y) (y, h - x), x = a - c, y = 2 b,
+// h = sqrt(x^2 + y^2), each taken where it does not cancel. E comes unnormalised (of any length, not zero):
+// its callers normalise it, so no square root and division here do it for the angle.
 Vec3 fieldOf(const Principal& p, const Vec3& kHat, bool slow) {
     const Vec3 e1 = perpendicularTo(kHat), e2 = cross(kHat, e1);
     auto form = [&](const Vec3& a, const Vec3& b) {
@@ -750,28 +804,167 @@ Vec3 fieldOf(const Principal& p, const Vec3& kHat, bool slow) {
     const double x = form(e1, e1) - form(e2, e2), y = 2 * form(e1, e2), h = std::sqrt(x * x + y * y);
     double c = 1, sn = 0;  // theta = 0 on an optic axis (h = 0), as atan2(0, 0) gives
     if (h > 0 && x >= 0) {
-        c = std::sqrt(0.5 + 0.5 * x / h);
-        sn = 0.5 * y / (h * c);
+        c = h + x;
+        sn = y;
     } else if (h > 0) {
-        sn = std::copysign(std::sqrt(0.5 - 0.5 * x / h), y);
-        c = 0.5 * y / (h * sn);
+        c = std::fabs(y);
+        sn = std::copysign(h - x, y);
     }
     const Vec3 d = slow ? e2 * c - e1 * sn : e1 * c + e2 * sn;
     return {d.x * p.u[0], d.y * p.u[1], d.z * p.u[2]};
 }
 
+// The interface in the crystal's principal frame: the medium, its principal values, kt (u) and N (n).
+struct Setting {
+    const BiaxialMedium& m;
+    Principal pr;
+    Vec3 u, n;
+};
+
+// A real root q of the quartic on its sheet of the index surface (principal frame): k = u + q n, |k|, k / |k|
+// and the index along it on the sheet whose index is nearer |k| (a line of fixed kt may cross either sheet
+// twice, the outer one being dimpled at the optic axes); once given a field (setField), its ray, the ray's
+// normal component and the wave in the stone's frame.
+struct SheetPoint {
+    double q = 0;
+    Vec3 kHat, ray;
+    double nk = 0, index = 0, rayNormal = 0;
+    bool slowSheet = false, nearAxis = false;
+    KnownWave known{};
+};
+
+void locate(const Setting& b, SheetPoint& p, bool classify) {
+    const Vec3 k = b.u + b.n * p.q;
+    p.nk = length(k);
+    p.kHat = k * (1 / p.nk);
+    const std::array<double, 2> indices = indicesAlong(b.pr, p.kHat);
+    if (classify) {
+        p.slowSheet = std::fabs(p.nk - indices[1]) < std::fabs(p.nk - indices[0]);
+        p.nearAxis = indices[1] - indices[0] <= 1e-6 * p.nk;
+    }
+    p.index = indices[p.slowSheet ? 1 : 0];
+}
+
+// The field of the Fast or Slow wave along p's wave normal (the eigenproblem), its ray and the wave.
+void setField(const Setting& b, SheetPoint& p, bool slow) {
+    const Vec3 k = b.u + b.n * p.q;
+    p.nk = length(k);
+    p.kHat = k * (1 / p.nk);
+    // The flux E x (k x E) of the unit E along f, k - f (f.k) / f.f, not waiting for E.
+    const Vec3 f = fieldOf(b.pr, p.kHat, slow);
+    const double ff = dot(f, f);
+    const Vec3 e = f * (1 / std::sqrt(ff));
+    const Vec3 flux = k - f * (dot(f, k) / ff);
+    const double fluxLength = length(flux);
+    p.ray = flux * (1 / fluxLength);
+    p.rayNormal = dot(p.ray, b.n);
+    p.known.wave.field = fromPrincipal(b.m, e);
+    p.known.wave.waveNormal = fromPrincipal(b.m, p.kHat);
+    p.known.wave.ray = fromPrincipal(b.m, p.ray);
+    p.known.wave.index = p.nk;
+    p.known.flux = fluxLength * p.rayNormal;
+}
+
+// Newton's step along N onto p's sheet, |k| = n(k / |k|): that function's gradient is the ray t over
+// t.k/|k|, t along the ray or the gradient of F. Its sheets part where two roots of the quartic nearly meet
+// (a weak birefringence, an axis close by), which the quartic's own rounding does not resolve.
+double sheetStep(const Setting& b, SheetPoint& p, const Vec3& t) {
+    const double step = (p.nk - p.index) * dot(t, p.kHat) / dot(t, b.n);
+    p.q -= step;
+    return step;
+}
+
+// From a located root of the quartic, the step onto its sheet along F's gradient: at its rounding, or a
+// second where the first was larger.
+void polishOntoSheet(const Setting& b, SheetPoint& p) {
+    const Principal& pr = b.pr;
+    for (int polish = 0; polish < 2; ++polish) {
+        const Vec3 k = b.u + b.n * p.q;
+        const double kk = dot(k, k),
+                     kEpsK = pr.eps[0] * k.x * k.x + pr.eps[1] * k.y * k.y + pr.eps[2] * k.z * k.z;
+        const Vec3 gradient =
+            Vec3{k.x * (kEpsK + kk * pr.eps[0] - pr.g[0]), k.y * (kEpsK + kk * pr.eps[1] - pr.g[1]),
+                 k.z * (kEpsK + kk * pr.eps[2] - pr.g[2])};
+        if (std::fabs(sheetStep(b, p, gradient)) <= 1e-13 * p.nk || polish == 1) break;
+        locate(b, p, false);
+    }
+}
+
+// The wave of a propagating root, its field set.
+Wave<Complex> crystalWave(const SheetPoint& p, const Vec3& kt, const Vec3& N) {
+    return {WaveMode::Fast,
+            lift<Complex>(kt) + lift<Complex>(N) * Complex(p.q),
+            lift<Complex>(p.known.wave.field),
+            true,
+            p.rayNormal,
+            p.q};
+}
+
+// The crystal's two waves from the kept roots fast and slow (Fast first: the smaller k.k, an evanescent
+// wave's q^2 having a negative real part); two next to an optic axis on the same sheet are the degenerate
+// pair, one field each.
+void putWaves(const Setting& b, Wave<Complex> w[], SheetPoint at[], int fast, int slow, const Vec3& kt,
+              const Vec3& N, Wave<Complex> out[2], KnownWave known[2]) {
+    if ((w[slow].q * w[slow].q).real() < (w[fast].q * w[fast].q).real()) std::swap(fast, slow);
+    if (at[fast].nearAxis && at[slow].nearAxis && at[fast].slowSheet == at[slow].slowSheet) {
+        setField(b, at[fast], false);
+        setField(b, at[slow], true);
+        w[fast] = crystalWave(at[fast], kt, N);
+        w[slow] = crystalWave(at[slow], kt, N);
+    }
+    out[0] = w[fast];
+    out[1] = w[slow];
+    out[0].mode = WaveMode::Fast;
+    out[1].mode = WaveMode::Slow;
+    known[0] = at[fast].known;
+    known[1] = at[slow].known;
+    known[0].wave.mode = WaveMode::Fast;
+    known[1].wave.mode = WaveMode::Slow;
+}
+
+// The common case of biaxialWaves: four real roots far apart, a line through nested sheets. Of the roots in
+// order, the line enters the outer sheet, the inner (fast) one, leaves the inner and then the outer, so the
+// outermost root of `side` is kept (on the outer sheet) and with it the middle one if it lies on the inner
+// sheet (else the line misses the inner sheet, crossing the outer one's dimples: biaxialWaves' general way).
+// The two are refined, located and given fields side by side, their arithmetic independent. False where
+// this does not apply.
+bool nestedWaves(const Setting& b, const double c[5], double scale, const Complex z[4], int side,
+                 const Vec3& kt, const Vec3& N, Wave<Complex> out[2], KnownWave known[2]) {
+    double r[4];
+    for (int j = 0; j < 4; ++j) {
+        if (z[j].imag() != 0) return false;
+        r[j] = z[j].real();
+    }
+    std::sort(r, r + 4);
+    SheetPoint at[2];  // the middle root, the outermost
+    at[0].q = side > 0 ? r[2] : r[1];
+    at[1].q = side > 0 ? r[3] : r[0];
+    const bool converged[2] = {newtonRoot(c, scale, at[0].q), newtonRoot(c, scale, at[1].q)};
+    if (!(converged[0] && converged[1])) return false;
+    for (SheetPoint& p : at) locate(b, p, true);
+    if (at[0].slowSheet) return false;
+    for (SheetPoint& p : at) polishOntoSheet(b, p);
+    for (SheetPoint& p : at) setField(b, p, p.slowSheet);
+    Wave<Complex> w[2] = {crystalWave(at[0], kt, N), crystalWave(at[1], kt, N)};
+    // Kept in the roots' order along N, the first the one biaxialWaves' general way would take as Fast.
+    putWaves(b, w, at, side > 0 ? 0 : 1, side > 0 ? 1 : 0, kt, N, out, known);
+    return true;
+}
+
 // The biaxial crystal's two waves of tangential kt whose energy leaves the facet along side * N, Fast then
-// Slow, with fields (unnormalised) and for a propagating one its ray's normal component. The quartic
+// Slow, with fields (unit where the wave propagates, else unnormalised) and for a propagating one its ray's
+// normal component and, in known[], its PlaneWave and flux. The quartic
 // det(k k^T - (k.k) I + eps) = 0 for k = kt + q N, with eps and G = tr(eps) eps - eps^2 in the principal
 // frame, is F(k) = (k.k)(k.eps.k) - k.G.k + det eps = 0 (Fresnel's equation of wave normals multiplied out);
 // its four roots are two on each side: a real root by the sign of its Poynting flux along N, E x (k x E), a
 // complex one (evanescent) by the side it decays on. Only the two kept are refined and given fields.
 void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const Vec3& s, int side,
-                  Wave<Complex> out[2], double qIncident = NAN) {
-    const Principal pr = principalOf(m);
-    const Vec3 u = toPrincipal(m, kt), n = toPrincipal(m, N);
-    auto form = [&](const double* d, const Vec3& a, const Vec3& b) {
-        return d[0] * a.x * b.x + d[1] * a.y * b.y + d[2] * a.z * b.z;
+                  Wave<Complex> out[2], KnownWave known[2], double qIncident = NAN) {
+    const Setting b{m, principalOf(m), toPrincipal(m, kt), toPrincipal(m, N)};
+    const Principal& pr = b.pr;
+    const Vec3 &u = b.u, &n = b.n;
+    auto form = [&](const double* d, const Vec3& a, const Vec3& v) {
+        return d[0] * a.x * v.x + d[1] * a.y * v.y + d[2] * a.z * v.z;
     };
     const double u2 = dot(kt, kt);
     const double a0 = form(pr.eps, u, u), a1 = form(pr.eps, u, n), a2 = form(pr.eps, n, n);
@@ -779,86 +972,45 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
     const double c[5] = {u2 * a0 - g0 + pr.det, 2 * (u2 * a1 - g1), a0 + u2 * a2 - g2, 2 * a1, a2};
     Complex q[4];
     const double scale = m.gamma + std::sqrt(u2);
-    bool separated = quarticRoots(c, scale, q);
-    for (Complex& r : q)
-        if (std::fabs(r.imag()) <= 1e-9 * scale) r = r.real();
-    // A double root (a wave normal on an optic axis) comes out as two roots about sqrt(rounding) apart on
-    // either side of it, along the real axis or across it (a pair with imaginary parts of that size, which
-    // would pass for evanescent waves): their mean's real part is the root to rounding.
-    for (int j = 0; j < 4; ++j)
-        for (int l = j + 1; l < 4; ++l)
-            if (std::norm(q[j] - q[l]) <= 1e-14 * scale * scale && std::fabs(q[j].imag()) <= 1e-7 * scale &&
-                std::fabs(q[l].imag()) <= 1e-7 * scale)
-                q[j] = q[l] = 0.5 * (q[j].real() + q[l].real());
-    // Leaving, the incident wave is a real root at qIncident, and next to an optic axis its twin on the other
-    // sheet lies a few tenths of a millionth from it: rounding may turn the two into a complex pair around
-    // them. They are the incident wave and its twin, not evanescent waves, and not among the reflected waves
-    // sought: both are put at qIncident, on the incident side.
-    if (!std::isnan(qIncident))
-        for (int j = 0; j < 4; ++j)
-            for (int l = j + 1; l < 4; ++l) {
-                const double near = std::fmax(1e-6 * scale, 2 * std::fabs(q[j].imag()));
-                if (q[j].imag() != 0 && std::fabs(q[j].imag()) <= 1e-5 * scale &&
-                    std::fabs(q[j].real() - qIncident) <= near &&
-                    std::fabs(q[l].real() - qIncident) <= near) {
-                    q[j] = q[l] = qIncident;
-                    separated = false;
-                }
-            }
+    const bool separated = separatedRoots(c, scale, q);
+    if (separated && nestedWaves(b, c, scale, q, side, kt, N, out, known)) return;
 
-    // A real root's wave normal and index on the sheet of the index surface whose index along it is nearer
-    // its |k| (a line of fixed kt may cross either sheet twice, the outer one being dimpled at the optic
-    // axes); its field from the eigenproblem for its wave normal (principal frame).
-    struct Point {
-        Vec3 kHat, ray;
-        double nk, index;
-    };
     Wave<Complex> w[4];
-    Point at[4];
-    bool slowSheet[4] = {}, nearAxis[4] = {};
-    auto locate = [&](int j, bool classify) {
-        const Vec3 k = u + n * w[j].q.real();
-        at[j].nk = length(k);
-        at[j].kHat = k / at[j].nk;
-        const std::array<double, 2> indices = indicesAlong(pr, at[j].kHat);
-        if (classify) {
-            slowSheet[j] = std::fabs(at[j].nk - indices[1]) < std::fabs(at[j].nk - indices[0]);
-            nearAxis[j] = indices[1] - indices[0] <= 1e-6 * at[j].nk;
-        }
-        at[j].index = indices[slowSheet[j] ? 1 : 0];
+    SheetPoint at[4];
+    // Root j at r: its wave vector, and whether it propagates.
+    auto place = [&](int j, Complex r) {
+        q[j] = w[j].q = r;
+        w[j].k = lift<Complex>(kt) + lift<Complex>(N) * r;
+        w[j].propagating = r.imag() == 0;
+        at[j].q = r.real();
     };
-    auto setField = [&](Wave<Complex>& wave, Point& p, bool slow) {
-        const Vec3 k = u + n * wave.q.real();
-        p.nk = length(k);
-        p.kHat = k / p.nk;
-        const Vec3 e = normalize(fieldOf(pr, p.kHat, slow));
-        wave.field = lift<Complex>(fromPrincipal(m, e));
-        const Vec3 flux = k - e * dot(e, k);
-        const double inverseLength = 1 / length(flux);
-        p.ray = flux * inverseLength;
-        wave.rayNormal = dot(p.ray, n);
+    // A propagating root's wave once its field is set.
+    auto putField = [&](int j) {
+        w[j].field = lift<Complex>(at[j].known.wave.field);
+        w[j].rayNormal = at[j].rayNormal;
     };
-    // Newton's step along N onto root j's sheet, |k| = n(k / |k|): that function's gradient is the ray t
-    // over t.k/|k|, t along the ray or the gradient of F. Its sheets part where two roots of the quartic
-    // nearly meet (a weak birefringence, an axis close by), which the quartic's own rounding does not
-    // resolve.
-    auto newtonStep = [&](int j, const Vec3& t) {
-        const double step = (at[j].nk - at[j].index) * dot(t, at[j].kHat) / dot(t, n);
-        w[j].q -= step;
+    auto putStep = [&](int j) {
+        w[j].q = at[j].q;
         w[j].k = lift<Complex>(kt) + lift<Complex>(N) * w[j].q;
-        return step;
     };
-    for (int j = 0; j < 4; ++j) {
-        w[j].q = q[j];
-        w[j].k = lift<Complex>(kt) + lift<Complex>(N) * q[j];
-        w[j].propagating = q[j].imag() == 0;
-    }
+    for (int j = 0; j < 4; ++j) place(j, q[j]);
     int kept[2];
-    if (separated) {
+    auto keepSeparated = [&]() {
         // Roots far apart, each simple: a line crosses a closed sheet entering it then leaving, so of the
         // real roots in order, the sheets nested (the inner one the fast sheet), the last two leave along
         // +N and the first two along -N; a line that misses the inner sheet and crosses the outer one four
         // times through its dimples leaves at the second and fourth. Two real roots: entering, then leaving.
+        // Ferrari's roots order and classify them as well as the refined ones would; only the kept ones (and
+        // the middle one that tells the sheets apart) are refined, each as a root of the whole quartic, and
+        // should one not converge the roots are refined together (aberthRoots) and the close roots' way
+        // taken.
+        const Complex ferrari[4] = {q[0], q[1], q[2], q[3]};
+        auto refine = [&](int j) {
+            Complex r;
+            const bool converged = refinedRoot(c, scale, ferrari, j, r);
+            place(j, r);
+            return converged;
+        };
         int real[4], count = 0, decaying = -1;
         for (int j = 0; j < 4; ++j) {
             if (w[j].propagating)
@@ -872,34 +1024,65 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
         if (count == 2) kept[1] = side > 0 ? real[1] : real[0];
         if (count == 4) {
             const int middle = side > 0 ? real[2] : real[1];
-            locate(middle, true);
-            const bool nested = !slowSheet[middle];
+            if (!refine(middle)) return false;
+            locate(b, at[middle], true);
+            const bool nested = !at[middle].slowSheet;
             kept[0] = side > 0 ? real[nested ? 2 : 1] : real[0];
             kept[1] = side > 0 ? real[3] : real[nested ? 1 : 2];
         }
         for (int j : kept) {
-            if (!w[j].propagating) continue;
-            if (count < 4 || j != (side > 0 ? real[2] : real[1])) locate(j, true);
-            // From a root of the quartic the step is at its rounding; a second where the first was larger.
-            for (int polish = 0; polish < 2; ++polish) {
-                const Vec3 k = u + n * w[j].q.real();
-                const double kk = dot(k, k), kEpsK = form(pr.eps, k, k);
-                const Vec3 gradient =
-                    Vec3{k.x * (kEpsK + kk * pr.eps[0] - pr.g[0]), k.y * (kEpsK + kk * pr.eps[1] - pr.g[1]),
-                         k.z * (kEpsK + kk * pr.eps[2] - pr.g[2])};
-                if (std::fabs(newtonStep(j, gradient)) <= 1e-13 * at[j].nk || polish == 1) break;
-                locate(j, false);
-            }
-            setField(w[j], at[j], slowSheet[j]);
+            const bool middle = count == 4 && j == (side > 0 ? real[2] : real[1]);
+            if (!middle && !refine(j)) return false;
         }
-    } else {
+        for (int j : kept) {
+            if (!w[j].propagating) continue;
+            if (count < 4 || j != (side > 0 ? real[2] : real[1])) locate(b, at[j], true);
+            polishOntoSheet(b, at[j]);
+            putStep(j);
+            setField(b, at[j], at[j].slowSheet);
+            putField(j);
+        }
+        return true;
+    };
+    if (!(separated && keepSeparated())) {
+        if (separated) {  // a kept root did not converge: start afresh from Ferrari's roots
+            ferrariRoots(c, q);
+            for (SheetPoint& p : at) p = SheetPoint{};
+        }
+        aberthRoots(c, scale, q);
+        for (Complex& r : q)
+            if (std::fabs(r.imag()) <= 1e-9 * scale) r = r.real();
+        // A double root (a wave normal on an optic axis) comes out as two roots about sqrt(rounding) apart on
+        // either side of it, along the real axis or across it (a pair with imaginary parts of that size,
+        // which would pass for evanescent waves): their mean's real part is the root to rounding.
+        for (int j = 0; j < 4; ++j)
+            for (int l = j + 1; l < 4; ++l)
+                if (std::norm(q[j] - q[l]) <= 1e-14 * scale * scale &&
+                    std::fabs(q[j].imag()) <= 1e-7 * scale && std::fabs(q[l].imag()) <= 1e-7 * scale)
+                    q[j] = q[l] = 0.5 * (q[j].real() + q[l].real());
+        // Leaving, the incident wave is a real root at qIncident, and next to an optic axis its twin on the
+        // other sheet lies a few tenths of a millionth from it: rounding may turn the two into a complex pair
+        // around them. They are the incident wave and its twin, not evanescent waves, and not among the
+        // reflected waves sought: both are put at qIncident, on the incident side.
+        if (!std::isnan(qIncident))
+            for (int j = 0; j < 4; ++j)
+                for (int l = j + 1; l < 4; ++l) {
+                    const double near = std::fmax(1e-6 * scale, 2 * std::fabs(q[j].imag()));
+                    if (q[j].imag() != 0 && std::fabs(q[j].imag()) <= 1e-5 * scale &&
+                        std::fabs(q[j].real() - qIncident) <= near &&
+                        std::fabs(q[l].real() - qIncident) <= near) {
+                        q[j] = q[l] = qIncident;
+                    }
+                }
+        for (int j = 0; j < 4; ++j) place(j, q[j]);
         // Roots close together: each real root's side from its field's Poynting flux.
         double score[4];
         for (int j = 0; j < 4; ++j) {
             score[j] = q[j].imag() > 0 ? 2 : -2;
             if (!w[j].propagating) continue;
-            locate(j, true);
-            setField(w[j], at[j], slowSheet[j]);
+            locate(b, at[j], true);
+            setField(b, at[j], at[j].slowSheet);
+            putField(j);
             score[j] = w[j].rayNormal;
         }
         // The two roots of `side`: the largest scores side * score.
@@ -910,36 +1093,25 @@ void biaxialWaves(const BiaxialMedium& m, const Vec3& kt, const Vec3& N, const V
         for (int j : kept) {
             if (!w[j].propagating) continue;
             for (int polish = 0; polish < 2 && std::fabs(w[j].rayNormal) > 1e-6; ++polish) {
-                if (polish == 1) locate(j, false);
-                if (newtonStep(j, at[j].ray) == 0) break;  // the same root, field and ray again
-                setField(w[j], at[j], slowSheet[j]);
+                if (polish == 1) locate(b, at[j], false);
+                const double step = sheetStep(b, at[j], at[j].ray);
+                putStep(j);
+                if (step == 0) break;  // the same root, field and ray again
+                setField(b, at[j], at[j].slowSheet);
+                putField(j);
             }
         }
     }
     for (int j : kept) {
-        if (w[j].propagating) {
-            q[j] = w[j].q;
-        } else {
-            const CMat3 mat = waveMatrix(pr, toPrincipal(m, w[j].k));
-            bool rank2;
-            CVec3 e = nullVector(mat, rank2), e2;
-            if (!rank2) degeneratePair(mat, toPrincipal(m, lift<Complex>(s)), e, e2);
-            w[j].field = fromPrincipal(m, e);
-            w[j].rayNormal = 0;
-        }
+        if (w[j].propagating) continue;
+        const CMat3 mat = waveMatrix(pr, toPrincipal(m, w[j].k));
+        bool rank2;
+        CVec3 e = nullVector(mat, rank2), e2;
+        if (!rank2) degeneratePair(mat, toPrincipal(m, lift<Complex>(s)), e, e2);
+        w[j].field = fromPrincipal(m, e);
+        w[j].rayNormal = 0;
     }
-    int fast = kept[0], slow = kept[1];
-    // Fast first: the smaller k.k (an evanescent wave's q^2 has a negative real part).
-    if ((q[slow] * q[slow]).real() < (q[fast] * q[fast]).real()) std::swap(fast, slow);
-    out[0] = w[fast];
-    out[1] = w[slow];
-    // Two waves next to an optic axis on the same sheet are the degenerate pair: one field each.
-    if (nearAxis[fast] && nearAxis[slow] && slowSheet[fast] == slowSheet[slow]) {
-        setField(out[0], at[fast], false);
-        setField(out[1], at[slow], true);
-    }
-    out[0].mode = WaveMode::Fast;
-    out[1].mode = WaveMode::Slow;
+    putWaves(b, w, at, kept[0], kept[1], kt, N, out, known);
 }
 
 template <class T>
@@ -999,12 +1171,13 @@ InterfaceWaves enterCrystal(const BiaxialMedium& crystal, const Vec3& direction,
     const Vec3 kt = (direction - N * cosI) * nOutside;
     const Vec3 s = sDirection(kt, N);
     Wave<Complex> waves[2];
-    biaxialWaves(crystal, kt, N, s, 1, waves);
+    KnownWave known[2];
+    biaxialWaves(crystal, kt, N, s, 1, waves, known);
     const bool crystalReal = waves[0].propagating && waves[1].propagating;
     return withTypes(crystalReal, nOutside * nOutside - dot(kt, kt) > 0, [&](auto c, auto i) {
         using C = decltype(c);
         const Wave<C> transmitted[2] = {narrowed<C>(waves[0]), narrowed<C>(waves[1])};
-        return fromOutside<decltype(i)>(crystal, transmitted, kt, N, s, nOutside);
+        return fromOutside<decltype(i)>(crystal, transmitted, kt, N, s, nOutside, known);
     });
 }
 
@@ -1018,13 +1191,14 @@ InterfaceWaves leaveCrystal(const BiaxialMedium& crystal, const PlaneWave& incid
         throw Error("birefringence: a wave inside a biaxial crystal is Fast or Slow");
     const auto [k, kt, s] = insideIncidence(incident, N);
     Wave<Complex> waves[2];
-    biaxialWaves(crystal, kt, N, s, -1, waves, dot(k, N));
+    KnownWave known[2];
+    biaxialWaves(crystal, kt, N, s, -1, waves, known, dot(k, N));
     const bool crystalReal = waves[0].propagating && waves[1].propagating;
     const Wave<double> in[1] = {{incident.mode, k, incident.field, true, dot(incident.ray, N), dot(k, N)}};
     return withTypes(crystalReal, nOutside * nOutside - dot(kt, kt) > 0, [&](auto c, auto i) {
         using C = decltype(c);
         const Wave<C> reflected[2] = {narrowed<C>(waves[0]), narrowed<C>(waves[1])};
-        return fromInside<decltype(i)>(crystal, incident, in, reflected, kt, N, s, nOutside);
+        return fromInside<decltype(i)>(crystal, incident, in, reflected, kt, N, s, nOutside, known);
     });
 }
 

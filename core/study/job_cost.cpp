@@ -60,24 +60,26 @@ double splitFactor(const TraceSettings& t, double uniaxial, double biaxial) {
 // long (0.91-0.97x its time quiet, docs/performance.md, "Polarised and birefringent tracing"). A doubly
 // refracting stone splits the light at every facet: a uniaxial one 2.0-4.4x (SCALAR to AVX-512, whose
 // unpolarised packet walk gains most; bench_trace's PolarizedVsPlain with the crystal interface in lanes,
-// 2026-12-03 17:56; 5.1x at 17:20), counted at 5. A biaxial one finds its waves from a quartic's roots, lane by lane: 24x
-// (`facetlight trace --mesh round_brilliant --photons 2000000 --threads 1 --no-view`, user time, 3 runs each,
-// 2026-12-03 17:33, AVX-512: topaz 6.30-6.35 s, unpolarised 0.25-0.26 s; sapphire with its axis tilted 30 deg
-// 1.20-1.24 s, unpolarised 0.25-0.29 s), counted at 25.
+// 2026-12-03 17:56; 5.1x at 17:20), counted at 5. A biaxial one finds its waves from a quartic's roots, lane
+// by lane: 20x (`facetlight trace --mesh round_brilliant --photons 2000000 --threads 1 --no-view --material
+// topaz`, user time, 3 runs each, 2026-12-03 19:12, AVX-512: 4.60-4.68 s, `--polarization off` 0.23-0.24 s;
+// 25x at 17:33 before the interface's common case was cut, docs/performance.md, "Biaxial crystal interface"),
+// counted at 20.
 double polarizationFactor(const TraceSettings& t) {
-    return splitFactor(t, 5, 25);
+    return splitFactor(t, 5, 20);
 }
 
 // The viewer's and the colour view's rays split likewise, one at a time either way, so they lose no SIMD
 // lanes to the split: the colour view alone (`facetlight trace --mesh round_brilliant --photons 1000
-// --no-view
-// --threads 1 --material M --colour --colour-picture 100`, less the same without --colour, medians of 3
-// interleaved runs, 2026-12-03) took ruby 0.39 s unpolarised and 1.26 s polarised (3.2x), zoisite 0.34 s and
-// 3.33 s (9.8x); the viewer (the same without --no-view and --colour, with --view-tilts 2 --view-azimuths 1
-// --office-points 20000 --spot-photons 200000) sapphire 0.57 s and 1.77 s (3.1x), topaz 0.50 s and 4.57 s
-// (9.1x), diamond 0.87 s and 1.21 s: counted at 4 and 10.
+// --no-view --threads 1 --material M --colour --colour-picture 100`, less the same without --colour, medians
+// of 3 interleaved runs, 2026-12-03) took ruby 0.39 s unpolarised and 1.26 s polarised (3.2x); the viewer
+// (the same without --no-view and --colour, with --view-tilts 2 --view-azimuths 1 --office-points 20000
+// --spot-photons 200000) sapphire 0.57 s and 1.77 s (3.1x), diamond 0.87 s and 1.21 s. A biaxial stone's,
+// since its interface's common case was cut (2026-12-03 19:13, the same commands, user time, 3 runs each):
+// zoisite's colour view 0.15-0.16 s and 1.16-1.25 s (7.9x; main's build 9.7x), topaz's viewer 0.32-0.34 s
+// and 2.18-2.20 s (6.6x; main's 8.1x): counted at 4 and 8.
 double viewRayFactor(const TraceSettings& t) {
-    return splitFactor(t, 4, 10);
+    return splitFactor(t, 4, 8);
 }
 
 // A trace of `photons` photons (with the fire trace when enabled): every job's, and each sweep point's.
