@@ -70,16 +70,18 @@ double polarizationFactor(const TraceSettings& t) {
 }
 
 // The viewer's and the colour view's rays split likewise, one at a time either way, so they lose no SIMD
-// lanes to the split: the colour view alone (`facetlight trace --mesh round_brilliant --photons 1000
-// --no-view --threads 1 --material M --colour --colour-picture 100`, less the same without --colour, medians
-// of 3 interleaved runs, 2026-12-03) took ruby 0.39 s unpolarised and 1.26 s polarised (3.2x); the viewer
-// (the same without --no-view and --colour, with --view-tilts 2 --view-azimuths 1 --office-points 20000
-// --spot-photons 200000) sapphire 0.57 s and 1.77 s (3.1x), diamond 0.87 s and 1.21 s. A biaxial stone's,
-// since its interface's common case was cut (2026-12-03 19:13, the same commands, user time, 3 runs each):
-// zoisite's colour view 0.15-0.16 s and 1.16-1.25 s (7.9x; main's build 9.7x), topaz's viewer 0.32-0.34 s
-// and 2.18-2.20 s (6.6x; main's 8.1x): counted at 4 and 8.
+// lanes to the split. The rates are polarised diamond's (the calibration's stone, whose index makes its rays
+// bounce more than a lower stone's), so the factor is a stone's time over diamond's: the viewer at its
+// default settings (`facetlight trace --mesh round_brilliant --photons 1000 --threads 1 --material M`, user
+// time, 3 runs, 2026-12-03 19:19) diamond 1.58-1.69 s, sapphire 2.55-2.67 s (1.6x), topaz 5.18-5.28 s (3.3x);
+// its office view alone (`--office-points 10000 --spot-photons 1000`) 1.8x and 3.6x, its spot lamps alone
+// (`--office-points 100 --spot-photons 300000`) 1.5x and 2.9x; the colour view (`--no-view --colour
+// --colour-picture 200`) diamond 0.88-0.90 s, ruby 1.81-1.88 s (2.1x), zoisite 4.36-4.37 s (4.9x): counted at
+// 2.5 and 5. (Against the same stone unpolarised the split costs more, 3.1-3.2x and 6.6-7.9x, but a lower
+// stone's unpolarised rays are cheaper than diamond's: 4 and 8 overstated a birefringent job's viewer about
+// 2.4 times.)
 double viewRayFactor(const TraceSettings& t) {
-    return splitFactor(t, 4, 8);
+    return splitFactor(t, 2.5, 5);
 }
 
 // A trace of `photons` photons (with the fire trace when enabled): every job's, and each sweep point's.
