@@ -105,7 +105,8 @@ const Schema<TraceSettings>& traceSettingsSchema() {
                 if (s.constantIndex || s.customMaterial ||
                     std::find(corundum.begin(), corundum.end(), s.material) == corundum.end()) {
                     std::string names;
-                    for (const std::string& n : corundum) names += (names.empty() ? "" : ", ") + n;
+                    for (size_t i = 0; i < corundum.size(); ++i)
+                        names += (i == 0 ? "" : i + 1 == corundum.size() ? " or " : ", ") + corundum[i];
                     const std::string field = fieldPath(path, "absorption.corundum_ppma");
                     throw Error(field, field + " colours corundum only: choose the material " + names +
                                            " (got " + chosenMaterialName(s) + ")");
