@@ -84,6 +84,38 @@ AbsorptionSpectrum readTransmittedColour(const json& j, const std::string& path)
     return s;
 }
 
+// {"corundum_ppma": {"cr": ..., "fe_ti": ...}}: the o and e spectra of corundum holding those chromophores
+// (docs/optics.md, "Corundum by its chromophores"). The whole table: nothing else may come with it.
+AbsorptionSpectrum readCorundum(const json& j, const std::string& path) {
+    for (const auto& [key, value] : j.items()) {
+        if (key != "corundum_ppma")
+            throw Error(path + "." + key, path + "." + key + " cannot go with " + path +
+                                              ".corundum_ppma, which makes the whole spectrum from the "
+                                              "concentrations: give one or the other");
+    }
+    const std::string at = path + ".corundum_ppma";
+    const json& c = j["corundum_ppma"];
+    if (!c.is_object() || c.empty())
+        throw Error(at, at + " must be an object of concentrations in ppma, {\"cr\": ..., \"fe_ti\": ...}");
+    CorundumChromophores ppma;
+    for (const auto& [key, value] : c.items()) {
+        const std::string field = at + "." + key;
+        double* into = key == "cr" ? &ppma.crPpma : key == "fe_ti" ? &ppma.feTiPpma : nullptr;
+        if (!into)
+            throw Error(field, "unknown field '" + field +
+                                   "' (the chromophores are cr, Cr3+, and fe_ti, Fe2+-Ti4+ pairs, in ppma)");
+        if (!value.is_number() ||
+            !(value.get<double>() >= 0 && value.get<double>() <= CorundumChromophores::kMaxPpma))
+            throw Error(field,
+                        field + " must be a number from 0 to 10000 (ppma: parts per million of all atoms)");
+        *into = value.get<double>();
+    }
+    return {.wavelengthNm = corundumWavelengthsNm(),
+            .ordinaryPerMm = corundumAbsorptionPerMm(ppma, CorundumRay::Ordinary),
+            .extraordinaryPerMm = corundumAbsorptionPerMm(ppma, CorundumRay::Extraordinary),
+            .corundum = ppma};
+}
+
 }  // namespace
 
 double AbsorptionSpectrum::ordinary(double nm) const {
@@ -115,7 +147,8 @@ bool AbsorptionSpectrum::absorbs() const {
 AbsorptionSpectrum readAbsorption(const json& j, const std::string& path) {
     if (!j.is_object())
         throw Error(path, path + " must be an object {\"wavelength_nm\": [...], \"ordinary_per_mm\": [...]}");
-    // Three forms: a table of o (and e) columns, a biaxial material's table of rays, or a colour by
+    if (j.contains("corundum_ppma")) return readCorundum(j, path);
+    // Three more forms: a table of o (and e) columns, a biaxial material's table of rays, or a colour by
     // transmission; transmitted_colour's or x_per_mm's presence decides.
     const bool byColour = j.contains("transmitted_colour");
     const bool byRays =
@@ -137,7 +170,7 @@ AbsorptionSpectrum readAbsorption(const json& j, const std::string& path) {
                               : "' (a spectrum has wavelength_nm, ordinary_per_mm and "
                                 "extraordinary_per_mm, or x_per_mm, y_per_mm and z_per_mm for a "
                                 "biaxial material, or is a colour by transmission: "
-                                "transmitted_colour)"));
+                                "transmitted_colour, or a corundum's chromophores: corundum_ppma)"));
     }
     if (byColour) return readTransmittedColour(j, path);
     const std::vector<const char*> required =
@@ -173,6 +206,7 @@ AbsorptionSpectrum readAbsorption(const json& j, const std::string& path) {
 }
 
 json toJson(const AbsorptionSpectrum& s) {
+    if (s.corundum) return {{"corundum_ppma", {{"cr", s.corundum->crPpma}, {"fe_ti", s.corundum->feTiPpma}}}};
     if (s.trichroic())
         return {{"wavelength_nm", s.wavelengthNm},
                 {"x_per_mm", s.rayPerMm[0]},

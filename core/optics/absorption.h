@@ -5,10 +5,13 @@
 // gives it as JSON "absorption" (readAbsorption), the CLI as --absorption.
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "optics/corundum_chromophores.h"
 
 namespace facetlight {
 
@@ -20,6 +23,9 @@ struct AbsorptionSpectrum {
     // its indices alpha, beta and gamma: the rays a dichroscope shows), or all empty. ordinaryPerMm is then
     // their mean, meanOfRays(), what a trace that takes one spectrum uses.
     std::array<std::vector<double>, 3> rayPerMm = {};
+    // Where the o and e columns came from a corundum's chromophores (JSON "corundum_ppma"): kept, so that the
+    // job's settings say so and the material can be checked to be corundum.
+    std::optional<CorundumChromophores> corundum = std::nullopt;
 
     // Linear between the table's points, constant beyond its ends.
     double ordinary(double wavelengthNm) const;
@@ -41,7 +47,8 @@ struct AbsorptionSpectrum {
 
 // {"wavelength_nm": [...], "ordinary_per_mm": [...], "extraordinary_per_mm": [...] (optional)}, or
 // {"wavelength_nm": [...], "x_per_mm": [...], "y_per_mm": [...], "z_per_mm": [...]} (a biaxial material's
-// rays), or a colour by transmission, checked: throws Error naming the field at fault below `path`
+// rays), or a colour by transmission, or {"corundum_ppma": {"cr": ..., "fe_ti": ...}}, checked: throws Error
+// naming the field at fault below `path`
 // ("absorption.ordinary_per_mm[3]").
 AbsorptionSpectrum readAbsorption(const nlohmann::json& j, const std::string& path);
 nlohmann::json toJson(const AbsorptionSpectrum& spectrum);

@@ -206,4 +206,11 @@ std::vector<std::string> materialNames() {
     return names;
 }
 
+std::vector<std::string> corundumMaterialNames() {
+    std::vector<std::string> names;
+    for (const Fit& fit : fits())
+        if (fit.axes[0] == kCorundumO && fit.axes[2] == kCorundumE) names.emplace_back(fit.name);
+    return names;
+}
+
 }  // namespace facetlight

@@ -28,6 +28,7 @@ struct Dispersion {
     int terms = 0;
     bool poleOnly = false;  // terms B / (L^2 - C) rather than B L^2 / (L^2 - C)
     double d = 0;           // the infrared term's D L^2
+    bool operator==(const Dispersion&) const = default;
 
     template <class D>
     [[gnu::always_inline]] D at(D wavelengthNm) const;
@@ -99,6 +100,9 @@ class Material {
 };
 
 std::vector<std::string> materialNames();
+// The named materials that are corundum (Malitson & Dodge's indices): sapphire, ruby, blue_sapphire; what a
+// job's corundum_ppma may colour (optics/corundum_chromophores.h).
+std::vector<std::string> corundumMaterialNames();
 // "isotropic", "uniaxial" or "biaxial" (stats.json's material.optic).
 const char* opticName(Optic optic);
 

@@ -68,7 +68,9 @@ const Schema<TraceSettings>& traceSettingsSchema() {
                    "[...], \"extraordinary_per_mm\": [...]} (a biaxial material's rays: \"x_per_mm\", "
                    "\"y_per_mm\", "
                    "\"z_per_mm\"), or the colour 1 mm transmits, "
-                   "{\"transmitted_colour\": \"#5b8fd0\"} (or [L*, a*, b*]), inline or in a file"}),
+                   "{\"transmitted_colour\": \"#5b8fd0\"} (or [L*, a*, b*]), or a corundum's chromophores in "
+                   "ppma of all atoms, {\"corundum_ppma\": {\"cr\": 100, \"fe_ti\": 20}} (GIA's cross "
+                   "sections), inline or in a file"}),
             boolean("dispersion", inherited<TraceSettings>(&TraceSettings::dispersion),
                     {"--no-dispersion", "Trace every photon at 589.3 nm"}),
             count("max_bounces", &TraceSettings::maxBounces, 1, 100000,
@@ -96,6 +98,20 @@ const Schema<TraceSettings>& traceSettingsSchema() {
                                        " too)");
             }
             if (!s.constantIndex) readChoice(s.material, fieldPath(path, "material"), materialChoices());
+            // Concentrations of corundum's chromophores colour corundum only: a named material with its
+            // indices (not `n`, a job's own material or "auto", which name no crystal).
+            if (s.absorption && s.absorption->corundum) {
+                const std::vector<std::string> corundum = corundumMaterialNames();
+                if (s.constantIndex || s.customMaterial ||
+                    std::find(corundum.begin(), corundum.end(), s.material) == corundum.end()) {
+                    std::string names;
+                    for (size_t i = 0; i < corundum.size(); ++i)
+                        names += (i == 0 ? "" : i + 1 == corundum.size() ? " or " : ", ") + corundum[i];
+                    const std::string field = fieldPath(path, "absorption.corundum_ppma");
+                    throw Error(field, field + " colours corundum only: choose the material " + names +
+                                           " (got " + chosenMaterialName(s) + ")");
+                }
+            }
             // An extraordinary spectrum needs a uniaxial material ("auto" and `n` are isotropic).
             if (s.absorption && !s.absorption->extraordinaryPerMm.empty() &&
                 chosenOptic(s) != Optic::Uniaxial) {

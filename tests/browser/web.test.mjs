@@ -1795,6 +1795,42 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
 
   // Issue 30: the result, compare and sweep pages at 1400 x 1000 read without zooming: no text on them under
   // 11 px (the pictures the server draws are checked for their width elsewhere).
+  // Issue 29: a corundum coloured by its chromophores (docs/optics.md, "Corundum by its chromophores").
+  test('corundum takes its Cr and Fe-Ti concentrations: two fields for corundum only, sent as corundum_ppma, refused beside a table', async () => {
+    await page.goto(`${baseUrl}/#/`);
+    await page.waitForSelector('#f-mesh option[value="round_brilliant"]', { state: 'attached' });
+    await page.selectOption('#f-mesh', 'round_brilliant');
+    await fillSmallJob({ photons: '2000', material: 'diamond' });
+    await page.setChecked('#f-render', false);
+    assert.equal(await page.isHidden('#corundum-fields'), true, 'diamond is not corundum');
+    for (const material of ['sapphire', 'ruby', 'blue_sapphire']) {
+      await page.selectOption('#f-material', material);
+      assert.equal(await page.isVisible('#corundum-fields'), true, `${material} is corundum`);
+    }
+    await page.selectOption('#f-material', 'emerald');
+    assert.equal(await page.isHidden('#corundum-fields'), true, 'emerald is not corundum');
+    await page.selectOption('#f-material', 'ruby');
+    await page.fill('#f-absorption', '');
+    await page.fill('#f-corundum-cr', '300');
+    await page.fill('#f-corundum-fe-ti', '');
+    await page.waitForFunction(() => /chromophores/.test(document.querySelector('#absorption-swatches').textContent));
+    await shot('16b-form-corundum');
+    // Beside a table: the server refuses it, naming the table.
+    await page.fill('#f-absorption', '400 0.3\n700 0.1');
+    await page.click('#submit-button');
+    await page.waitForSelector('#err-absorption:not([hidden])');
+    assert.match(await page.textContent('#err-absorption'), /cannot go with absorption\.corundum_ppma/);
+    // Alone: sent as the concentrations given.
+    await page.fill('#f-absorption', '');
+    const posted = page.waitForRequest((r) => r.method() === 'POST' && r.url().endsWith('/api/jobs'));
+    const id = await submitAndGetId({ stay: true });
+    assert.deepEqual(JSON.parse((await posted).postData()).absorption, { corundum_ppma: { cr: 300 } });
+    await fetch(`${baseUrl}/api/jobs/${id}/cancel`, { method: 'POST' });
+    await page.evaluate(() => { location.hash = '#/'; });
+    await page.fill('#f-corundum-cr', '');
+    await page.selectOption('#f-material', 'diamond');
+  });
+
   test('the result, compare and sweep pages at 1400 x 1000 show no text under 11 px', async () => {
     await page.setViewportSize({ width: 1400, height: 1000 });
     try {

@@ -55,4 +55,21 @@ if "$tool" trace "${small[@]}" >/dev/null 2>&1 && "$tool" trace "${small[@]}" | 
   echo "trace without --colour measured the colour" >&2
   exit 1
 fi
+# A corundum coloured by its chromophores (docs/optics.md, "Corundum by its chromophores"): it absorbs, its
+# settings keep the concentrations, and a material that is not corundum is refused naming the flag.
+"$tool" trace "${small[@]}" --material ruby --absorption '{"corundum_ppma": {"cr": 300, "fe_ti": 5}}' \
+  --json "$dir/corundum.json" >"$dir/corundum.txt"
+grep -q '^  absorbed inside the stone  *[0-9.]* +- [0-9.]* %$' "$dir/corundum.txt"
+python3 - "$dir/corundum.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["settings"]["absorption"] == {"corundum_ppma": {"cr": 300, "fe_ti": 5}}, r["settings"]["absorption"]
+assert r["totals"]["absorbed"] > 0, r["totals"]
+PY
+if "$tool" trace "${small[@]}" --material diamond --absorption '{"corundum_ppma": {"cr": 300}}' \
+  >/dev/null 2>"$dir/diamond.err"; then
+  echo "corundum_ppma on diamond was not refused" >&2
+  exit 1
+fi
+grep -q -- '--absorption: absorption.corundum_ppma colours corundum only' "$dir/diamond.err"
 echo "cli colour summary: ok"

@@ -480,6 +480,14 @@ TEST_F(ServiceTest, TheColourViewIsLinkedServedAndItsFieldsChecked) {
     expectProblem(submit(bad), 422, "colour.illuminant");
     bad["colour"] = {{"wavelengths", 2}};
     expectProblem(submit(bad), 422, "colour.wavelengths");
+    // A corundum's chromophores colour corundum only (docs/optics.md, "Corundum by its chromophores").
+    bad = smallJob();
+    bad["material"] = "diamond";
+    bad["absorption"] = {{"corundum_ppma", {{"cr", 100}}}};
+    expectProblem(submit(bad), 422, "absorption.corundum_ppma");
+    bad["material"] = "ruby";
+    bad["absorption"] = {{"corundum_ppma", {{"fe_ti", 20000}}}};
+    expectProblem(submit(bad), 422, "absorption.corundum_ppma.fe_ti");
 }
 
 TEST_F(ServiceTest, ViewerViewsAreLinkedAndServed) {

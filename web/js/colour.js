@@ -157,6 +157,12 @@ export async function updateAbsorptionSwatches() {
   const errors = [];
   const spectrum = readAbsorption(form, errors);
   const size = Number(form.elements.size_mm.value);
+  const byChromophores = !$('#corundum-fields').hidden
+    && ['cr', 'fe_ti'].some((k) => form.elements[`absorption.corundum_ppma.${k}`].value.trim() !== '');
+  if (!spectrum && byChromophores) {
+    box.replaceChildren(h('span', { class: 'muted' }, 'By its chromophores: the server makes the spectrum (GIA\'s cross sections).'));
+    return;
+  }
   if (!spectrum || errors.length) {
     box.replaceChildren(h('span', { class: 'muted' }, errors.length ? 'No colour until the table reads.' : 'Clear: no table, no colour.'));
     return;
@@ -234,6 +240,7 @@ export function initColourFields() {
   form.elements.absorption.addEventListener('input', updateAbsorptionSwatches);
   form.elements.absorption.addEventListener('change', checkAbsorptionField);
   form.elements.size_mm.addEventListener('input', updateAbsorptionSwatches);
+  for (const key of ['cr', 'fe_ti']) form.elements[`absorption.corundum_ppma.${key}`].addEventListener('input', updateAbsorptionSwatches);
   form.elements.material.addEventListener('change', syncAbsorptionField);
   form.elements.colour.addEventListener('change', syncColourControls);
   syncAbsorptionField();

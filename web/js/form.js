@@ -59,6 +59,18 @@ function readNumber(form, name, errors, { required = true } = {}) {
   return Number(input.value);
 }
 
+// The corundum_ppma the corundum fields give (docs/optics.md, "Corundum by its chromophores"): the
+// concentrations typed, or undefined when the fields are hidden or both empty.
+function readCorundum(form, errors) {
+  if ($('#corundum-fields').hidden) return undefined;
+  const ppma = {};
+  for (const key of ['cr', 'fe_ti']) {
+    const value = readNumber(form, `absorption.corundum_ppma.${key}`, errors, { required: false });
+    if (value !== undefined) ppma[key] = value;
+  }
+  return Object.keys(ppma).length ? ppma : undefined;
+}
+
 // "Your own material" as a job's custom_material (docs/optics.md, "A job's own material"); the ranges are the
 // server's to check.
 function readCustomMaterial(form, errors) {
@@ -103,7 +115,9 @@ function buildJob(form) {
   job.polarization = form.elements.polarization.value;
   job.size_mm = readNumber(form, 'size_mm', errors);
   const absorption = readAbsorption(form, errors);
-  if (absorption) job.absorption = absorption;
+  // A corundum's chromophores go beside a table as given: the server refuses the pair, naming the table.
+  const corundum = readCorundum(form, errors);
+  if (absorption || corundum) job.absorption = { ...absorption, ...(corundum && { corundum_ppma: corundum }) };
   if (!$('#optic-axis-fields').hidden) {
     job.optic_axis = {
       tilt_deg: readNumber(form, 'optic_axis.tilt_deg', errors),
@@ -277,6 +291,10 @@ export function syncFormControls() {
     input.disabled = !(doubly && polarized) || (input.name === 'optic_axis.rotation_deg' && optic !== 'biaxial');
   }
   $('#hint-material-split').hidden = !(doubly && !polarized);
+  // Corundum may be coloured by its chromophores.
+  const corundum = material.selectedOptions[0]?.dataset.corundum === 'true';
+  $('#corundum-fields').hidden = !corundum;
+  for (const input of $('#corundum-fields').querySelectorAll('input')) input.disabled = !corundum;
   // A coloured material's swatch (index.html: what 6.5 mm passes of D65).
   const swatch = material.selectedOptions[0]?.dataset.swatch;
   $('#material-swatch').hidden = !swatch;
