@@ -193,6 +193,13 @@ void checkColourPlan(const SweepPlan& plan) {
     const std::vector<SweepPoint> points = sweepPoints(plan);
     if (std::none_of(points.begin(), points.end(), [](const SweepPoint& p) { return absorbs(p.trace); })) {
         const TraceSettings& t = plan.trace;
+        // The job's own spectrum replaces every point's material's, so it is the one at fault.
+        if (t.absorption)
+            throw Error(
+                "absorption",
+                "the colour figures measure absorption, and no point of the sweep absorbs (the job's "
+                "absorption is 0 at every wavelength, in place of the material's): give it coefficients "
+                "or concentrations above 0, or leave it out for a coloured material's own");
         const std::string name = chosenMaterialName(t);
         const std::string what = t.constantIndex  ? name
                                  : name == "auto" ? "the material auto, diamond or a design's own index,"

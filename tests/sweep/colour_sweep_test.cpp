@@ -12,6 +12,7 @@
 #include "colour/cie.h"
 #include "colour/colour_space.h"
 #include "cuts/cut_library.h"
+#include "optics/absorption.h"
 #include "optics/gem_spectra.h"
 #include "optics/material_definition.h"
 #include "study/study.h"
@@ -181,6 +182,18 @@ TEST(ColourSweep, RefusesWhatTheColourViewCannotMeasure) {
     tinted.material = "quartz";
     tinted.absorption = AbsorptionSpectrum{{400, 700}, {0.1, 0.5}, {}};
     EXPECT_EQ(plan({"size_mm=3,6"}, "colour_lightness", tinted, coarseColour()), "");
+    // A job's spectrum of zeros replaces a coloured material's: the spectrum is at fault, not the material.
+    for (const char* absorption :
+         {R"({"wavelength_nm": [400, 700], "ordinary_per_mm": [0, 0]})", R"({"corundum_ppma": {"cr": 0}})"}) {
+        TraceSettings zero = quickTrace();
+        zero.material = "ruby";
+        zero.absorption = readAbsorption(nlohmann::json::parse(absorption), "absorption");
+        EXPECT_EQ(plan({"size_mm=3,6"}, "colour_lightness", zero, coarseColour()), "absorption")
+            << absorption;
+        EXPECT_EQ(plan({"material=ruby,blue_sapphire"}, "colour_lightness", zero, coarseColour()),
+                  "absorption")
+            << absorption;
+    }
     // The view is face-up under a dome of its own: the light's axes change nothing it sees.
     EXPECT_EQ(plan({"size_mm=3,6", "tilt=0,10"}, "colour_lightness", sapphire, coarseColour()),
               "sweep.axes[1]");
