@@ -244,6 +244,20 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
     });
 }
 
+// The lanes' buffers hold kNumbers numbers a lane (photon_packet.cpp) and EntryLane and LeavingLane read them
+// by those counts: forEachNumber stores exactly as many, so a number added there without its count (or a
+// count changed without it) would write past them or shift what the lanes read.
+TEST(UniaxialLanes, EachStoresItsCountOfNumbers) {
+    uniaxial::UniaxialEntry<double> entry{};
+    int numbers = 0;
+    entry.forEachNumber([&](double&) { ++numbers; });
+    EXPECT_EQ(numbers, uniaxial::UniaxialEntry<double>::kNumbers);
+    uniaxial::UniaxialLeaving<double> leaving{};
+    numbers = 0;
+    leaving.forEachNumber([&](double&) { ++numbers; });
+    EXPECT_EQ(numbers, uniaxial::UniaxialLeaving<double>::kNumbers);
+}
+
 TEST(UniaxialEntry, RefusedInputIsLeftToEnterCrystal) {
     test::forEachSimdTarget([] {
         alignas(64) double nO[kBatch], nE[kBatch], d[3][kBatch], n[3][kBatch];
