@@ -15,6 +15,7 @@
 #include "render/render_settings.h"
 #include "render/view_settings.h"
 #include "study/job_request.h"
+#include "support/expect_error.h"
 #include "sweep/sweep_request.h"
 #include "util/closest_name.h"
 #include "util/error.h"
@@ -83,13 +84,7 @@ std::vector<json> badValues(const FieldInfo& f) {
 }
 
 std::string errorField(const json& job) {
-    try {
-        JobRequest::fromJson(job);
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find(e.field()), std::string::npos) << e.what();
-        return e.field();
-    }
-    return "no error";
+    return test::refusedField([&] { JobRequest::fromJson(job); });
 }
 
 TEST(SettingsSchema, ABadValueInEachFieldNamesItsDottedPath) {
