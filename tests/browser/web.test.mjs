@@ -1793,8 +1793,6 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await shot('16c-compare-colour');
   });
 
-  // Issue 30: the result, compare and sweep pages at 1400 x 1000 read without zooming: no text on them under
-  // 11 px (the pictures the server draws are checked for their width elsewhere).
   // Issue 29: a corundum coloured by its chromophores (docs/optics.md, "Corundum by its chromophores").
   test('corundum takes its Cr and Fe-Ti concentrations: two fields for corundum only, sent as corundum_ppma, refused beside a table', async () => {
     await page.goto(`${baseUrl}/#/`);
@@ -1831,6 +1829,8 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     await page.selectOption('#f-material', 'diamond');
   });
 
+  // Issue 30: the result, compare and sweep pages at 1400 x 1000 read without zooming: no text on them under
+  // 11 px (the pictures the server draws are checked for their width elsewhere).
   test('the result, compare and sweep pages at 1400 x 1000 show no text under 11 px', async () => {
     await page.setViewportSize({ width: 1400, height: 1000 });
     try {
