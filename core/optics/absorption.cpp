@@ -205,6 +205,10 @@ AbsorptionSpectrum readAbsorption(const json& j, const std::string& path) {
     return s;
 }
 
+std::string origin(const AbsorptionSpectrum& spectrum) {
+    return spectrum.corundum ? describe(*spectrum.corundum) : "the job's absorption spectrum";
+}
+
 json toJson(const AbsorptionSpectrum& s) {
     if (s.corundum) return {{"corundum_ppma", {{"cr", s.corundum->crPpma}, {"fe_ti", s.corundum->feTiPpma}}}};
     if (s.trichroic())

@@ -51,6 +51,9 @@ struct AbsorptionSpectrum {
 // naming the field at fault below `path`
 // ("absorption.ordinary_per_mm[3]").
 AbsorptionSpectrum readAbsorption(const nlohmann::json& j, const std::string& path);
+// Where a job's spectrum came from, for a picture's title: its chromophores (describe()) or "the job's
+// absorption spectrum" (a table or a colour by transmission).
+std::string origin(const AbsorptionSpectrum& spectrum);
 nlohmann::json toJson(const AbsorptionSpectrum& spectrum);
 
 // The optical depth left to a photon after a path of `length` through a medium absorbing `alpha` per unit

@@ -3,6 +3,8 @@
 #include <array>
 #include <cstddef>
 
+#include "util/number_text.h"
+
 namespace facetlight {
 namespace {
 
@@ -139,6 +141,17 @@ std::vector<double> chromiumCrossSectionCm2(CorundumRay ray) {
 
 std::vector<double> ironTitaniumCrossSectionCm2(CorundumRay ray) {
     return column(ray == CorundumRay::Ordinary ? &Row::feTiO : &Row::feTiE);
+}
+
+std::string describe(const CorundumChromophores& c) {
+    std::string text;
+    const auto add = [&](const char* ion, double ppma) {
+        if (ppma <= 0) return;
+        text += (text.empty() ? "" : ", ") + std::string(ion) + " " + formatNumber("%g", ppma) + " ppma";
+    };
+    add("Cr3+", c.crPpma);
+    add("Fe2+-Ti4+", c.feTiPpma);
+    return text.empty() ? "no chromophores" : text;
 }
 
 std::vector<double> corundumAbsorptionPerMm(const CorundumChromophores& c, CorundumRay ray) {

@@ -2,6 +2,7 @@
 // Corundum coloured by its chromophores (docs/optics.md, "Corundum by its chromophores"): GIA's absorption
 // cross sections of Cr3+ and of the Fe2+-Ti4+ pair (Dubinsky, Stone-Sundberg & Emmett, Gems & Gemology 56(1),
 // 2020), times the concentrations a job gives, make the stone's ordinary and extraordinary spectra.
+#include <string>
 #include <vector>
 
 namespace facetlight {
@@ -21,6 +22,9 @@ struct CorundumChromophores {
 // Atoms per cm^3 of corundum: 5 per Al2O3, density 4.00 g/cm^3 (GIA Gem Reference Guide, as
 // docs/optics.md's materials table), molar mass 101.96 g/mol, Avogadro's 6.02214076e23 (SI, exact).
 inline constexpr double kCorundumAtomsPerCm3 = 5 * 6.02214076e23 * 4.00 / 101.96;
+
+// "Cr3+ 1000 ppma, Fe2+-Ti4+ 20 ppma" (the chromophores present): what a picture's title names the colour by.
+std::string describe(const CorundumChromophores& c);
 
 enum class CorundumRay { Ordinary, Extraordinary };  // E perp c, E || c
 

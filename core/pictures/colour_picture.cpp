@@ -31,8 +31,10 @@ Rgb display(const Vec3& xyz) {
 }  // namespace
 
 std::string colourTitle(const Stone& stone, const TraceSettings& settings) {
+    // A job's own spectrum replaces the material's colour: the title says by what.
+    const std::string colouredBy = settings.absorption ? " coloured by " + origin(*settings.absorption) : "";
     return "True colour face-up: " + stone.name + ", " + chooseMaterial(settings, stone).material.name() +
-           ", " + formatNumber("%g", settings.sizeMm) + " mm";
+           colouredBy + ", " + formatNumber("%g", settings.sizeMm) + " mm";
 }
 
 std::string colourSummary(const ColourView& v) {

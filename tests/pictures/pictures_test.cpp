@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "optics/absorption.h"
 #include "pictures/colormap.h"
 #include "pictures/colour_picture.h"
 #include "pictures/doubling_picture.h"
@@ -36,6 +37,25 @@ TEST(PictureTitles, NameTheMaterialTraced) {
     settings.customMaterial->n = 1.718;
     EXPECT_NE(colourTitle(test::roundBrilliant(), settings).find(", my spinel, "), std::string::npos);
     EXPECT_NE(doublingTitle(test::roundBrilliant(), settings).find(", my spinel, "), std::string::npos);
+}
+
+// A job's own spectrum replaces the material's colour, so the colour picture's title says by what.
+TEST(PictureTitles, NameWhatAJobsOwnSpectrumColoursTheStoneBy) {
+    TraceSettings settings;
+    settings.material = "ruby";
+    EXPECT_NE(colourTitle(test::roundBrilliant(), settings).find(", ruby, 6.5 mm"), std::string::npos);
+    settings.absorption = readAbsorption({{"corundum_ppma", {{"cr", 1000}, {"fe_ti", 20}}}}, "absorption");
+    EXPECT_NE(colourTitle(test::roundBrilliant(), settings)
+                  .find(", ruby coloured by Cr3+ 1000 ppma, Fe2+-Ti4+ 20 ppma, 6.5 mm"),
+              std::string::npos);
+    settings.absorption = readAbsorption({{"corundum_ppma", {{"fe_ti", 2.5}}}}, "absorption");
+    EXPECT_NE(colourTitle(test::roundBrilliant(), settings).find(" coloured by Fe2+-Ti4+ 2.5 ppma, "),
+              std::string::npos);
+    settings.absorption =
+        readAbsorption({{"wavelength_nm", {400, 700}}, {"ordinary_per_mm", {0.1, 0.2}}}, "absorption");
+    EXPECT_NE(
+        colourTitle(test::roundBrilliant(), settings).find(" coloured by the job's absorption spectrum, "),
+        std::string::npos);
 }
 
 // The scintillation is written to its standard error's digits: a small error is not rounded to "0.0", a
