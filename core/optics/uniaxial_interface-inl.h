@@ -124,6 +124,32 @@ HWY_INLINE uint64_t leaveUniaxialLanes(const Vec3& axis, double nOutside, const 
     return left;
 }
 
+// The draws (uniaxial::drawLeaving) of the photons whose leavings j < count leaveUniaxialLanes() stored in
+// `numbers` (stride as there), photon j's stream at state[j] (Rng::state(), readable as nO is; not advanced):
+// bit j of `out` where photon j's draw takes it out, else of `ordinary` where it reflects as the ordinary
+// wave (the bits of leavings not stored are unspecified).
+HWY_INLINE void drawLeavingLanes(const double* numbers, size_t stride, const uint64_t* state, size_t count,
+                                 uint64_t& out, uint64_t& ordinary) {
+    const DoubleTag d;
+    const hn::Repartition<int64_t, DoubleTag> d64;
+    const size_t lanes = hn::Lanes(d);
+    out = 0, ordinary = 0;
+    for (size_t first = 0; first < count; first += lanes) {
+        auto share = [&](int i) { return Doubles::load(numbers + size_t(i) * stride + first); };
+        Streams s = Streams::load(state + first);
+        // Rng::uniform()'s 24 bits times 2^-24: exact in double as in float.
+        const Doubles u =
+            Doubles(hn::ConvertTo(d, hn::BitCast(d64, (nextOf(s, hn::FirstN(StreamTag(), lanes)) >> 40).v))) *
+            Doubles(0x1p-24);
+        const uniaxial::LeavingDraw<Doubles> draw =
+            uniaxial::drawLeaving(u, share(0), share(1), share(2), share(3));
+        uint64_t outBits = 0, ordinaryBits = 0;
+        hn::StoreMaskBits(d, draw.out, reinterpret_cast<uint8_t*>(&outBits));
+        hn::StoreMaskBits(d, draw.ordinary, reinterpret_cast<uint8_t*>(&ordinaryBits));
+        out |= outBits << first, ordinary |= ordinaryBits << first;
+    }
+}
+
 #endif  // HWY_TARGET != HWY_SCALAR
 }  // namespace HWY_NAMESPACE
 }  // namespace facetlight

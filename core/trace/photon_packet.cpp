@@ -508,10 +508,11 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
     // slot[k], kMaxLanes, ...} where bit k of `left` is set; meet() finds the others' one at a time.
     alignas(64) double leavings[uniaxial::UniaxialLeaving<double>::kNumbers * kMaxLanes];
     int slot[kMaxLanes];
-    uint64_t evanescent = 0;
+    uint64_t evanescent = 0, out = 0, ordinary = 0;
     LaneBits left = 0;
     if (!s.trace.biaxial()) {
         alignas(64) double nO[kMaxLanes], nE[kMaxLanes], normal[3][kMaxLanes];
+        alignas(64) uint64_t state[kMaxLanes];
         const PlaneWave* incident[kMaxLanes];
         int lane[kMaxLanes], count = 0;
         forEachLane(lanes.live, [&](int k) {
@@ -521,12 +522,15 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
             nO[count] = ph.n, nE[count] = ph.nE;
             normal[0][count] = nk.x, normal[1][count] = nk.y, normal[2][count] = nk.z;
             incident[count] = &ph.wave;
+            state[count] = ph.rng.state();
             slot[k] = count, lane[count++] = k;
         });
         const double* const normals[3] = {normal[0], normal[1], normal[2]};
         const uint64_t met = leaveUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, incident, normals,
                                                 size_t(count), leavings, kMaxLanes, evanescent);
         forEachLane(met, [&](int j) { left |= LaneBits(1) << lane[j]; });
+        // Their draws too (the photon's next number: meet() draws nothing before its choice).
+        if (met) drawLeavingLanes(leavings, kMaxLanes, state, size_t(count), out, ordinary);
     }
     forEachLane(lanes.live, [&](int k) {
         PhotonWalker::Photon& ph = lanes.ph[k];
@@ -534,11 +538,13 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
         bool stays = false;
         if (!(ts[k] < kInf)) {
             v.lost(ph.bounces);
+        } else if (left >> k & 1) {
+            const int j = slot[k];
+            const uniaxial::LeavingLane leaving{leavings + j, kMaxLanes, bool(evanescent >> j & 1),
+                                                out >> j & 1 ? -1 : int(~ordinary >> j & 1)};
+            stays = PhotonWalker::meet(s.trace, SurfaceHit{ts[k], uint32_t(facets[k])}, v, ph, &leaving);
         } else {
-            const uniaxial::LeavingLane leaving{leavings + slot[k], kMaxLanes,
-                                                bool(evanescent >> slot[k] & 1)};
-            stays = PhotonWalker::meet(s.trace, SurfaceHit{ts[k], uint32_t(facets[k])}, v, ph,
-                                       left >> k & 1 ? &leaving : nullptr);
+            stays = PhotonWalker::meet(s.trace, SurfaceHit{ts[k], uint32_t(facets[k])}, v, ph);
         }
         if (!stays) {
             lanes.live &= ~(LaneBits(1) << k);

@@ -1,5 +1,7 @@
-// The entry into a uniaxial crystal computed in lanes of doubles (optics/uniaxial_interface-inl.h) against
-// enterCrystal() one incidence at a time: the same bits, on every SIMD target this machine runs.
+// The entry into and the leaving from a uniaxial crystal computed in lanes of doubles
+// (optics/uniaxial_interface-inl.h) against enterCrystal() and leaveCrystal() one incidence at a time, and
+// the lanes' draw among a leaving's waves against the one-photon walk's: the same bits, on every SIMD
+// target this machine runs.
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -14,6 +16,7 @@
 
 #include "hwy/highway.h"
 #include "optics/uniaxial_interface-inl.h"
+#include "util/random.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace facetlight {
@@ -51,10 +54,11 @@ uint64_t EnterLanes(const Vec3& axis, double nOutside, const double* nO, const d
 #endif
 }
 
-// leaveUniaxialLanes(), as EnterLanes.
+// leaveUniaxialLanes(), as EnterLanes; and drawLeavingLanes() for photons whose streams are at state[j]:
+// the wave drawn into drawn[j] (-1 out, 0 or 1 the reflected ordinary or extraordinary wave).
 uint64_t LeaveLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
                     const PlaneWave* const incident[], const double* const normal[3], size_t count,
-                    InterfaceWaves* out) {
+                    const uint64_t* state, InterfaceWaves* out, int* drawn) {
 #if HWY_TARGET != HWY_SCALAR
     // What a photon's choice reads through uniaxial::LeavingLane, into out[j] (leaveCrystal()'s waves when
     // called, each number read replaced by the lanes'), as EnterLanes.
@@ -64,6 +68,8 @@ uint64_t LeaveLanes(const Vec3& axis, double nOutside, const double* nO, const d
     uint64_t evanescent = 0;
     const uint64_t left =
         leaveUniaxialLanes(axis, nOutside, nO, nE, incident, normal, count, numbers, kStride, evanescent);
+    uint64_t leaves = 0, ordinary = 0;
+    drawLeavingLanes(numbers, kStride, state, count, leaves, ordinary);
     for (uint64_t b = left; b; b &= b - 1) {
         const int j = __builtin_ctzll(b);
         const bool outsideEvanescent = evanescent >> j & 1;
@@ -77,10 +83,12 @@ uint64_t LeaveLanes(const Vec3& axis, double nOutside, const double* nO, const d
         }
         w.transmitted[0].wave.ray = lane.transmittedRay();
         w.transmitted[0].wave.field = lane.transmittedField();
+        drawn[j] = leaves >> j & 1 ? -1 : ordinary >> j & 1 ? 0 : 1;
     }
     return left;
 #else
-    (void)axis, (void)nOutside, (void)nO, (void)nE, (void)incident, (void)normal, (void)count, (void)out;
+    (void)axis, (void)nOutside, (void)nO, (void)nE, (void)incident, (void)normal, (void)count, (void)state,
+        (void)out, (void)drawn;
     return 0;
 #endif
 }
@@ -196,7 +204,7 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
     test::forEachSimdTarget([] {
         std::mt19937_64 rng(29);
         std::uniform_real_distribution<double> u(0, 1);
-        size_t compared = 0, incidences = 0, out = 0, totallyReflected = 0;
+        size_t compared = 0, incidences = 0, out = 0, totallyReflected = 0, drawnWaves[3] = {};
         for (int round = 0; round < 500; ++round) {
             Batch b = randomBatch(rng);
             PlaneWave waves[kBatch];
@@ -217,8 +225,11 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
             }
             std::vector<InterfaceWaves> lanes = ones;
             const double* const n[3] = {b.n[0], b.n[1], b.n[2]};
-            const uint64_t met =
-                HWY_DYNAMIC_DISPATCH(LeaveLanes)(b.axis, 1, b.nO, b.nE, incident, n, b.count, lanes.data());
+            alignas(64) uint64_t state[kBatch];
+            for (uint64_t& st : state) st = rng();
+            int drawn[kBatch];
+            const uint64_t met = HWY_DYNAMIC_DISPATCH(LeaveLanes)(b.axis, 1, b.nO, b.nE, incident, n, b.count,
+                                                                  state, lanes.data(), drawn);
             ASSERT_EQ(met >> b.count, 0u);
             for (size_t j = 0; j < b.count; ++j) {
                 ++incidences;
@@ -231,6 +242,16 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
                     continue;
                 }
                 ASSERT_TRUE(same(lanes[j], one)) << "round " << round << ", incidence " << j;
+                // The lanes' draw, as the one-photon walk draws from leaveCrystal()'s shares.
+                Rng stream = Rng::resume(state[j]);
+                const uniaxial::LeavingDraw<double> draw = uniaxial::drawLeaving<double>(
+                    stream.uniform(), one.reflected[0].share[0], one.reflected[1].share[0],
+                    one.transmitted[0].share[0], one.transmitted[1].share[0]);
+                ASSERT_EQ(drawn[j], draw.out        ? -1
+                                    : draw.ordinary ? 0
+                                                    : 1)
+                    << "round " << round << ", incidence " << j;
+                ++drawnWaves[drawn[j] + 1];
                 ++compared;
                 (one.totalInternalReflection() ? totallyReflected : out) += 1;
             }
@@ -240,6 +261,7 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
             EXPECT_GT(compared, incidences * 8 / 10);
             EXPECT_GT(out, compared / 10);
             EXPECT_GT(totallyReflected, compared / 10);
+            for (const size_t waves : drawnWaves) EXPECT_GT(waves, compared / 20);  // each wave drawn
         }
     });
 }
