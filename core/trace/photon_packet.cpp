@@ -454,10 +454,14 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
     LaneBits entered = 0;
     const bool laneEntries = s.trace.polarized() && !s.trace.biaxial() && s.trace.fixedEntries().empty();
     if (laneEntries) {
+        // Each lane's n_e as TraceBase::principalIndex() gives it: at the lane's wavelength when dispersive.
+        (s.dispersive ? viaDoubles(Floats::load(b.wavelength),
+                                   [&](Doubles w) HWY_ATTR { return s.material.principalIndexOf(2, w); })
+                      : Floats(s.trace.principalIndex(2, Material::kSodiumD)))
+            .store(extraordinary);
         alignas(64) double nO[kMaxLanes], nE[kMaxLanes], dir[3][kMaxLanes], normal[3][kMaxLanes];
         int lane[kMaxLanes], count = 0;
         forEachLane(b.photons & b.hits, [&](int k) {
-            extraordinary[k] = s.trace.principalIndex(2, b.wavelength[k]);
             const Vec3f& nk = s.trace.scene().normal(uint32_t(b.hit.facet[k]));
             nO[count] = index[k], nE[count] = extraordinary[k];
             dir[0][count] = d.x, dir[1][count] = d.y, dir[2][count] = d.z;
