@@ -519,13 +519,32 @@ inline void putInterfaceWaves(const UniaxialLeaving<double>& e, const PlaneWave&
     put(out.transmitted[1], WaveMode::P, e.transmitted[1], !evanescent);
 }
 
+// The draw among an entry's waves (PhotonWalker::chooseCrystalWave()), written once over the number type: u
+// is the photon's next Rng::uniform(), then the shares of the reflected s and p waves and of the transmitted
+// ordinary and extraordinary waves. The photon reflects where `reflected`, else enters as the ordinary wave
+// where `ordinary`, else as the extraordinary one.
+template <class T>
+struct EntryDraw {
+    decltype(T{} < T{}) reflected, ordinary;
+};
+template <class T>
+FACETLIGHT_AI EntryDraw<T> drawEntry(T u, T reflectedS, T reflectedP, T ordinary, T extraordinary) {
+    const T reflected = reflectedS + reflectedP;
+    const T x = u * (reflected + ordinary + extraordinary);
+    return {x < reflected, x < reflected + ordinary};
+}
+
 // One lane's entry among several kept by number (UniaxialEntry<double>::forEachNumber's order, number i at
 // numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseCrystalWave()), the values
 // putInterfaceWaves() would put into InterfaceWaves.
 struct EntryLane {
     using Entry = UniaxialEntry<double>;
+    static constexpr int kNotDrawn = 2;
     const double* numbers;
     size_t stride;
+    // Where the lanes drew for it (drawEntryLanes()): -1 reflected, 0 or 1 the ordinary or extraordinary
+    // wave.
+    int drawn = kNotDrawn;
 
     double number(int i) const { return numbers[size_t(i) * stride]; }
     Vec3 vec(int i) const { return {number(i), number(i + 1), number(i + 2)}; }

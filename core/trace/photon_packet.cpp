@@ -452,6 +452,7 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
     alignas(64) double entries[uniaxial::UniaxialEntry<double>::kNumbers * kMaxLanes];
     int slot[kMaxLanes];
     LaneBits entered = 0;
+    uint64_t reflects = 0, ordinary = 0;
     const bool laneEntries = s.trace.polarized() && !s.trace.biaxial() && s.trace.fixedEntries().empty();
     if (laneEntries) {
         // Each lane's n_e as TraceBase::principalIndex() gives it: at the lane's wavelength when dispersive.
@@ -460,12 +461,14 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
                       : Floats(s.trace.principalIndex(2, Material::kSodiumD)))
             .store(extraordinary);
         alignas(64) double nO[kMaxLanes], nE[kMaxLanes], dir[3][kMaxLanes], normal[3][kMaxLanes];
+        alignas(64) uint64_t stream[kMaxLanes];
         int lane[kMaxLanes], count = 0;
         forEachLane(b.photons & b.hits, [&](int k) {
             const Vec3f& nk = s.trace.scene().normal(uint32_t(b.hit.facet[k]));
             nO[count] = index[k], nE[count] = extraordinary[k];
             dir[0][count] = d.x, dir[1][count] = d.y, dir[2][count] = d.z;
             normal[0][count] = nk.x, normal[1][count] = nk.y, normal[2][count] = nk.z;
+            stream[count] = state[k];
             slot[k] = count, lane[count++] = k;
         });
         const double* const dirs[3] = {dir[0], dir[1], dir[2]};
@@ -473,6 +476,10 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
         const uint64_t met = enterUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, dirs, normals, size_t(count),
                                                 entries, kMaxLanes);
         forEachLane(met, [&](int j) { entered |= LaneBits(1) << lane[j]; });
+        // Their draws too (enterAt() draws nothing before its choice).
+        if (met)
+            drawEntryLanes(s.trace.sourcePolarization(d), d, entries, kMaxLanes, stream, size_t(count),
+                           reflects, ordinary);
     }
     forEachLane(b.photons, [&](int k) {
         const uint32_t id = uint32_t(first - begin) + uint32_t(k);
@@ -488,7 +495,9 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
         ph.nE = laneEntries ? extraordinary[k] : s.trace.principalIndex(2, b.wavelength[k]);
         if (s.trace.biaxial()) ph.nA = s.trace.principalIndex(0, b.wavelength[k]);
         ph.setAbsorption(s.trace, b.wavelength[k]);
-        const uniaxial::EntryLane entry{entries + slot[k], kMaxLanes};
+        const int j = entered >> k & 1 ? slot[k] : 0;
+        const uniaxial::EntryLane entry{entries + j, kMaxLanes,
+                                        reflects >> j & 1 ? -1 : int(~ordinary >> j & 1)};
         if (PhotonWalker::enterAt(s.trace, uint32_t(b.hit.facet[k]), b.hit.p(k), d, v, ph,
                                   entered >> k & 1 ? &entry : nullptr))
             started.put(next++, ph, id);

@@ -322,22 +322,40 @@ class PhotonWalker {
         const PlaneWave& transmittedWave(int j) const { return w.transmitted[j].wave; }
         const Vec3& ordinaryNormal() const { return w.transmitted[0].wave.waveNormal; }
     };
+    // The wave a photon's draw picks among an entry's (uniaxial::drawEntry) for its state pol along d: -1
+    // reflected, 0 or 1 the transmitted ordinary or extraordinary wave; or the lanes' draw where they made
+    // it.
+    template <class Waves>
+    static int drawEntryWave(const Waves& w, const Polarization& pol, const Vec3f& d, Rng& rng) {
+        const Coherency j = coherencyOf(pol, d, Vec3f(w.incidentS()));
+        auto share = [&](int i) {
+            const Complex ts = w.amplitude(i, 0), tp = w.amplitude(i, 1);
+            return shareOfParts(w.fluxRatio(i), ts.real(), ts.imag(), tp.real(), tp.imag(), j.ss, j.pp,
+                                j.sp.real(), j.sp.imag());
+        };
+        const uniaxial::EntryDraw<double> draw =
+            uniaxial::drawEntry<double>(rng.uniform(), share(0), share(1), share(2), share(3));
+        return draw.reflected ? -1 : draw.ordinary ? 0 : 1;
+    }
+    static int drawEntryWave(const uniaxial::EntryLane& w, const Polarization& pol, const Vec3f& d,
+                             Rng& rng) {
+        if (w.drawn == uniaxial::EntryLane::kNotDrawn)
+            return drawEntryWave<uniaxial::EntryLane>(w, pol, d, rng);
+        rng.skip();
+        return w.drawn;
+    }
     // enterCrystalWave() once the interface's waves w are known (WavesEntry or uniaxial::EntryLane).
     template <class Visitor, class Waves>
     static bool chooseCrystalWave(const TraceBase& s, const Waves& w, const Vec3f& normal, uint32_t facet,
                                   const Vec3f& p, Vec3f& d, Visitor& visit, Photon& ph) {
         ph.coherent = s.nearOpticAxis(w.ordinaryNormal());
         if (ph.coherent) return enterPolarized(normal, 1.0f / ph.n, facet, p, d, visit, ph);
-        const Coherency j = coherencyOf(ph.pol, d, Vec3f(w.incidentS()));
-        auto share = [&](int i) { return shareOf(w.fluxRatio(i), w.amplitude(i, 0), w.amplitude(i, 1), j); };
-        const double reflected = share(0) + share(1);
-        const double ordinary = share(2);
-        const double u = ph.rng.uniform() * (reflected + ordinary + share(3));
-        if (u < reflected) {
+        const int wave = drawEntryWave(w, ph.pol, d, ph.rng);
+        if (wave < 0) {
             visit.reflectedAtEntry(facet, p, reflectOff(d, normal, std::clamp(-dot(d, normal), 0.0f, 1.0f)));
             return false;
         }
-        ph.wave = w.transmittedWave(u < reflected + ordinary ? 0 : 1);
+        ph.wave = w.transmittedWave(wave);
         d = Vec3f(ph.wave.ray);
         return true;
     }
