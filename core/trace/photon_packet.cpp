@@ -453,6 +453,7 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
     int slot[kMaxLanes];
     LaneBits entered = 0;
     uint64_t reflects = 0, ordinary = 0;
+    constexpr bool kEntryDraws = HWY_TARGET != HWY_SSE4;
     const bool laneEntries = s.trace.polarized() && !s.trace.biaxial() && s.trace.fixedEntries().empty();
     if (laneEntries) {
         // Each lane's n_e as TraceBase::principalIndex() gives it: at the lane's wavelength when dispersive.
@@ -476,8 +477,9 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
         const uint64_t met = enterUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, dirs, normals, size_t(count),
                                                 entries, kMaxLanes);
         forEachLane(met, [&](int j) { entered |= LaneBits(1) << lane[j]; });
-        // Their draws too (enterAt() draws nothing before its choice).
-        if (met)
+        // Their draws too (enterAt() draws nothing before its choice), but on SSE4: with two lanes of doubles
+        // they cost more than they save there (docs/performance.md, issue 28, 2026-12-03 20:00).
+        if (kEntryDraws && met)
             drawEntryLanes(s.trace.sourcePolarization(d), d, entries, kMaxLanes, stream, size_t(count),
                            reflects, ordinary);
     }
@@ -497,7 +499,9 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
         ph.setAbsorption(s.trace, b.wavelength[k]);
         const int j = entered >> k & 1 ? slot[k] : 0;
         const uniaxial::EntryLane entry{entries + j, kMaxLanes,
-                                        reflects >> j & 1 ? -1 : int(~ordinary >> j & 1)};
+                                        !kEntryDraws        ? uniaxial::EntryLane::kNotDrawn
+                                        : reflects >> j & 1 ? -1
+                                                            : int(~ordinary >> j & 1)};
         if (PhotonWalker::enterAt(s.trace, uint32_t(b.hit.facet[k]), b.hit.p(k), d, v, ph,
                                   entered >> k & 1 ? &entry : nullptr))
             started.put(next++, ph, id);
