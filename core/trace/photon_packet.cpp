@@ -478,7 +478,7 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
                                                 entries, kMaxLanes);
         forEachLane(met, [&](int j) { entered |= LaneBits(1) << lane[j]; });
         // Their draws too (enterAt() draws nothing before its choice), but on SSE4: with two lanes of doubles
-        // they cost more than they save there (docs/performance.md, issue 28, 2026-12-03 20:00).
+        // they cost more than they save there (docs/performance.md, issue 28, 2026-12-03 20:04).
         if (kEntryDraws && met)
             drawEntryLanes(s.trace.sourcePolarization(d), d, entries, kMaxLanes, stream, size_t(count),
                            reflects, ordinary);
