@@ -153,11 +153,33 @@ inline double shareOf(const OutgoingWave& wave, const Coherency& incident) {
     return shareOf(wave.fluxRatio, wave.amplitude[0], wave.amplitude[1], incident);
 }
 
+// shareOf() part by part over the number type T (double, or the packet walk's lanes of doubles): amplitudes
+// ts and tp, coherency J = {ss, pp, sp}; std::norm and std::complex's textbook products written out.
+template <class T>
+[[gnu::always_inline]] inline T shareOfParts(T fluxRatio, T tsRe, T tsIm, T tpRe, T tpIm, T ss, T pp, T spRe,
+                                             T spIm) {
+    const T cRe = tsRe * tpRe - tsIm * -tpIm, cIm = tsRe * -tpIm + tsIm * tpRe;  // ts conj(tp)
+    return fluxRatio * ((tsRe * tsRe + tsIm * tsIm) * ss + (tpRe * tpRe + tpIm * tpIm) * pp +
+                        T(2.0) * (cRe * spRe - cIm * spIm));
+}
+
 // A photon's state (optics/polarization.h) along d as the coherency matrix over the basis whose s is `s`
-// (across d, p = d x s): J_ss = (S0 + S1) / 2, J_pp = (S0 - S1) / 2, J_sp = (S2 - i S3) / 2, S0 = 1.
+// (across d, p = d x s): J_ss = (S0 + S1) / 2, J_pp = (S0 - S1) / 2, J_sp = (S2 - i S3) / 2, S0 = 1. Over
+// the number types: the state st already referred to s (F: float or lanes of floats), each sum widened to T
+// by widen().
+template <class T>
+struct CoherencyParts {
+    T ss, pp, spRe, spIm;
+};
+template <class T, class F, class Widen>
+[[gnu::always_inline]] inline CoherencyParts<T> coherencyParts(const StokesOf<F>& st, Widen&& widen) {
+    return {T(0.5) * widen(st.s0 + st.s1), T(0.5) * widen(st.s0 - st.s1), T(0.5) * widen(st.s2),
+            T(-0.5) * widen(st.s3)};
+}
 inline Coherency coherencyOf(const Polarization& pol, const Vec3f& d, const Vec3f& s) {
-    const Stokes st = rotateFrame(pol.stokes, pol.x, s, d);
-    return {0.5 * (st.s0 + st.s1), 0.5 * (st.s0 - st.s1), Complex(0.5 * st.s2, -0.5 * st.s3)};
+    const CoherencyParts<double> j =
+        coherencyParts<double>(rotateFrame(pol.stokes, pol.x, s, d), [](float x) { return double(x); });
+    return {j.ss, j.pp, Complex(j.spRe, j.spIm)};
 }
 // The Stokes vector (S0 = 1) of the light of amplitudes a_s and a_p over an s-p basis (the inverse of the
 // above): S1 = |a_s|^2 - |a_p|^2, S2 = 2 Re(a_s conj(a_p)), S3 = -2 Im(a_s conj(a_p)), over |a_s|^2 + |a_p|^2.

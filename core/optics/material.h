@@ -70,7 +70,7 @@ class Material {
     // principalIndices()[axis] alone (a birefringent trace's per-photon index: one dispersion formula, not
     // three).
     double principalIndex(int axis, double wavelengthNm) const {
-        return axes_[size_t(axis)].at(wavelengthNm);
+        return principalIndexOf(axis, wavelengthNm);
     }
     // At 589.3 nm, as gemmologists quote them: the largest less the smallest principal index (0 for
     // isotropic), and the optic sign: +1 when n_e > n_o, or for biaxial when gamma is the acute bisectrix
@@ -88,6 +88,11 @@ class Material {
     template <class D>
     [[gnu::always_inline]] D indexOf(D wavelengthNm) const {
         return axes_[1].at(wavelengthNm);
+    }
+    // principalIndex() likewise.
+    template <class D>
+    [[gnu::always_inline]] D principalIndexOf(int axis, D wavelengthNm) const {
+        return axes_[size_t(axis)].at(wavelengthNm);
     }
 
   private:

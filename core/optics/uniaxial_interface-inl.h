@@ -124,6 +124,64 @@ HWY_INLINE uint64_t leaveUniaxialLanes(const Vec3& axis, double nOutside, const 
     return left;
 }
 
+// The draws (uniaxial::drawEntry) of photons in state `pol` along d (alike for all) whose entries j < count
+// enterUniaxialLanes() stored in `numbers` (stride as there), photon j's stream at state[j] (Rng::state(),
+// readable as nO is; not advanced): bit j of `reflected` where photon j's draw reflects it, else of
+// `ordinary` where it enters as the ordinary wave (the bits of entries not stored are unspecified).
+HWY_INLINE void drawEntryLanes(const Polarization& pol, const Vec3f& d, const double* numbers, size_t stride,
+                               const uint64_t* state, size_t count, uint64_t& reflected, uint64_t& ordinary) {
+    using Entry = uniaxial::UniaxialEntry<double>;
+    using Halves = Lanes<HalfTag>;  // floats, one per lane of doubles
+    const DoubleTag dd;
+    const size_t lanes = hn::Lanes(dd);
+    const StokesOf<Halves> stokes{Halves(pol.stokes.s0), Halves(pol.stokes.s1), Halves(pol.stokes.s2),
+                                  Halves(pol.stokes.s3)};
+    const Vec3Of<Halves> x{Halves(pol.x.x), Halves(pol.x.y), Halves(pol.x.z)};
+    const Vec3Of<Halves> dir{Halves(d.x), Halves(d.y), Halves(d.z)};
+    const Doubles zero(0.0);
+    reflected = 0, ordinary = 0;
+    for (size_t first = 0; first < count; first += lanes) {
+        auto number = [&](int i) { return Doubles::load(numbers + size_t(i) * stride + first); };
+        auto narrow = [&](Doubles v) { return Halves(hn::DemoteTo(HalfTag(), v.v)); };
+        // PhotonWalker::drawEntryWave(): the state as a coherency matrix over the incident s (in float), the
+        // waves' shares of it (their amplitudes real, as uniaxial::EntryLane gives them), the draw.
+        const Vec3Of<Halves> s{narrow(number(0)), narrow(number(1)), narrow(number(2))};
+        const CoherencyParts<Doubles> j = coherencyParts<Doubles>(
+            rotateFrame(stokes, x, s, dir), [&](Halves v) { return Doubles(hn::PromoteTo(dd, v.v)); });
+        auto share = [&](int w) {
+            const int at = Entry::kFluxes + 3 * w;
+            return shareOfParts(number(at), number(at + 1), zero, number(at + 2), zero, j.ss, j.pp, j.spRe,
+                                j.spIm);
+        };
+        const uniaxial::EntryDraw<Doubles> draw =
+            uniaxial::drawEntry(nextUniformOf(state + first), share(0), share(1), share(2), share(3));
+        uint64_t reflectedBits = 0, ordinaryBits = 0;
+        hn::StoreMaskBits(dd, draw.reflected, reinterpret_cast<uint8_t*>(&reflectedBits));
+        hn::StoreMaskBits(dd, draw.ordinary, reinterpret_cast<uint8_t*>(&ordinaryBits));
+        reflected |= reflectedBits << first, ordinary |= ordinaryBits << first;
+    }
+}
+
+// The draws (uniaxial::drawLeaving) of the photons whose leavings j < count leaveUniaxialLanes() stored in
+// `numbers` (stride as there), photon j's stream at state[j] (Rng::state(), readable as nO is; not advanced):
+// bit j of `out` where photon j's draw takes it out, else of `ordinary` where it reflects as the ordinary
+// wave (the bits of leavings not stored are unspecified).
+HWY_INLINE void drawLeavingLanes(const double* numbers, size_t stride, const uint64_t* state, size_t count,
+                                 uint64_t& out, uint64_t& ordinary) {
+    const DoubleTag d;
+    const size_t lanes = hn::Lanes(d);
+    out = 0, ordinary = 0;
+    for (size_t first = 0; first < count; first += lanes) {
+        auto share = [&](int i) { return Doubles::load(numbers + size_t(i) * stride + first); };
+        const uniaxial::LeavingDraw<Doubles> draw =
+            uniaxial::drawLeaving(nextUniformOf(state + first), share(0), share(1), share(2), share(3));
+        uint64_t outBits = 0, ordinaryBits = 0;
+        hn::StoreMaskBits(d, draw.out, reinterpret_cast<uint8_t*>(&outBits));
+        hn::StoreMaskBits(d, draw.ordinary, reinterpret_cast<uint8_t*>(&ordinaryBits));
+        out |= outBits << first, ordinary |= ordinaryBits << first;
+    }
+}
+
 #endif  // HWY_TARGET != HWY_SCALAR
 }  // namespace HWY_NAMESPACE
 }  // namespace facetlight

@@ -519,13 +519,32 @@ inline void putInterfaceWaves(const UniaxialLeaving<double>& e, const PlaneWave&
     put(out.transmitted[1], WaveMode::P, e.transmitted[1], !evanescent);
 }
 
+// The draw among an entry's waves (PhotonWalker::chooseCrystalWave()), written once over the number type: u
+// is the photon's next Rng::uniform(), then the shares of the reflected s and p waves and of the transmitted
+// ordinary and extraordinary waves. The photon reflects where `reflected`, else enters as the ordinary wave
+// where `ordinary`, else as the extraordinary one.
+template <class T>
+struct EntryDraw {
+    decltype(T{} < T{}) reflected, ordinary;
+};
+template <class T>
+FACETLIGHT_AI EntryDraw<T> drawEntry(T u, T reflectedS, T reflectedP, T ordinary, T extraordinary) {
+    const T reflected = reflectedS + reflectedP;
+    const T x = u * (reflected + ordinary + extraordinary);
+    return {x < reflected, x < reflected + ordinary};
+}
+
 // One lane's entry among several kept by number (UniaxialEntry<double>::forEachNumber's order, number i at
 // numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseCrystalWave()), the values
 // putInterfaceWaves() would put into InterfaceWaves.
 struct EntryLane {
     using Entry = UniaxialEntry<double>;
+    static constexpr int kNotDrawn = 2;
     const double* numbers;
     size_t stride;
+    // Where the lanes drew for it (drawEntryLanes()): -1 reflected, 0 or 1 the ordinary or extraordinary
+    // wave.
+    int drawn = kNotDrawn;
 
     double number(int i) const { return numbers[size_t(i) * stride]; }
     Vec3 vec(int i) const { return {number(i), number(i + 1), number(i + 2)}; }
@@ -541,14 +560,32 @@ struct EntryLane {
     Vec3 ordinaryNormal() const { return vec(Entry::kTransmitted); }
 };
 
+// The draw among a leaving's waves (PhotonWalker::chooseLeavingWave()), written once over the number type:
+// u is the photon's next Rng::uniform(), then the shares of the reflected ordinary and extraordinary waves
+// and of the transmitted s and p waves. The photon leaves where `out`, else reflects as the ordinary wave
+// where `ordinary`, else as the extraordinary one.
+template <class T>
+struct LeavingDraw {
+    decltype(T{} < T{}) out, ordinary;
+};
+template <class T>
+FACETLIGHT_AI LeavingDraw<T> drawLeaving(T u, T reflectedO, T reflectedE, T transmittedS, T transmittedP) {
+    const T out = transmittedS + transmittedP;
+    const T x = u * (out + reflectedO + reflectedE);
+    return {x < out, x < out + reflectedO};
+}
+
 // One lane's leaving among several kept by number (UniaxialLeaving<double>::forEachNumber's order, number i
 // at numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseLeavingWave()), the values
-// putInterfaceWaves() would put into InterfaceWaves.
+// putInterfaceWaves() would put into InterfaceWaves; and, where the lanes drew for it (drawLeavingLanes()),
+// the wave drawn: -1 out through the s and p waves, 0 or 1 the reflected ordinary or extraordinary wave.
 struct LeavingLane {
     using Leaving = UniaxialLeaving<double>;
+    static constexpr int kNotDrawn = 2;
     const double* numbers;
     size_t stride;
     bool evanescent;
+    int drawn = kNotDrawn;
 
     double number(int i) const { return numbers[size_t(i) * stride]; }
     Vec3 vec(int i) const { return {number(i), number(i + 1), number(i + 2)}; }

@@ -452,16 +452,24 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
     alignas(64) double entries[uniaxial::UniaxialEntry<double>::kNumbers * kMaxLanes];
     int slot[kMaxLanes];
     LaneBits entered = 0;
+    uint64_t reflects = 0, ordinary = 0;
+    constexpr bool kEntryDraws = HWY_TARGET != HWY_SSE4;
     const bool laneEntries = s.trace.polarized() && !s.trace.biaxial() && s.trace.fixedEntries().empty();
     if (laneEntries) {
+        // Each lane's n_e as TraceBase::principalIndex() gives it: at the lane's wavelength when dispersive.
+        (s.dispersive ? viaDoubles(Floats::load(b.wavelength),
+                                   [&](Doubles w) HWY_ATTR { return s.material.principalIndexOf(2, w); })
+                      : Floats(s.trace.principalIndex(2, Material::kSodiumD)))
+            .store(extraordinary);
         alignas(64) double nO[kMaxLanes], nE[kMaxLanes], dir[3][kMaxLanes], normal[3][kMaxLanes];
+        alignas(64) uint64_t stream[kMaxLanes];
         int lane[kMaxLanes], count = 0;
         forEachLane(b.photons & b.hits, [&](int k) {
-            extraordinary[k] = s.trace.principalIndex(2, b.wavelength[k]);
             const Vec3f& nk = s.trace.scene().normal(uint32_t(b.hit.facet[k]));
             nO[count] = index[k], nE[count] = extraordinary[k];
             dir[0][count] = d.x, dir[1][count] = d.y, dir[2][count] = d.z;
             normal[0][count] = nk.x, normal[1][count] = nk.y, normal[2][count] = nk.z;
+            stream[count] = state[k];
             slot[k] = count, lane[count++] = k;
         });
         const double* const dirs[3] = {dir[0], dir[1], dir[2]};
@@ -469,6 +477,11 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
         const uint64_t met = enterUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, dirs, normals, size_t(count),
                                                 entries, kMaxLanes);
         forEachLane(met, [&](int j) { entered |= LaneBits(1) << lane[j]; });
+        // Their draws too (enterAt() draws nothing before its choice), but on SSE4: with two lanes of doubles
+        // they cost more than they save there (docs/performance.md, issue 28, 2026-12-03 20:04).
+        if (kEntryDraws && met)
+            drawEntryLanes(s.trace.sourcePolarization(d), d, entries, kMaxLanes, stream, size_t(count),
+                           reflects, ordinary);
     }
     forEachLane(b.photons, [&](int k) {
         const uint32_t id = uint32_t(first - begin) + uint32_t(k);
@@ -484,7 +497,11 @@ void startCrystalPacket(const Packets& s, uint64_t begin, uint64_t first, uint64
         ph.nE = laneEntries ? extraordinary[k] : s.trace.principalIndex(2, b.wavelength[k]);
         if (s.trace.biaxial()) ph.nA = s.trace.principalIndex(0, b.wavelength[k]);
         ph.setAbsorption(s.trace, b.wavelength[k]);
-        const uniaxial::EntryLane entry{entries + slot[k], kMaxLanes};
+        const int j = entered >> k & 1 ? slot[k] : 0;
+        const uniaxial::EntryLane entry{entries + j, kMaxLanes,
+                                        !kEntryDraws        ? uniaxial::EntryLane::kNotDrawn
+                                        : reflects >> j & 1 ? -1
+                                                            : int(~ordinary >> j & 1)};
         if (PhotonWalker::enterAt(s.trace, uint32_t(b.hit.facet[k]), b.hit.p(k), d, v, ph,
                                   entered >> k & 1 ? &entry : nullptr))
             started.put(next++, ph, id);
@@ -508,10 +525,11 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
     // slot[k], kMaxLanes, ...} where bit k of `left` is set; meet() finds the others' one at a time.
     alignas(64) double leavings[uniaxial::UniaxialLeaving<double>::kNumbers * kMaxLanes];
     int slot[kMaxLanes];
-    uint64_t evanescent = 0;
+    uint64_t evanescent = 0, out = 0, ordinary = 0;
     LaneBits left = 0;
     if (!s.trace.biaxial()) {
         alignas(64) double nO[kMaxLanes], nE[kMaxLanes], normal[3][kMaxLanes];
+        alignas(64) uint64_t state[kMaxLanes];
         const PlaneWave* incident[kMaxLanes];
         int lane[kMaxLanes], count = 0;
         forEachLane(lanes.live, [&](int k) {
@@ -521,12 +539,15 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
             nO[count] = ph.n, nE[count] = ph.nE;
             normal[0][count] = nk.x, normal[1][count] = nk.y, normal[2][count] = nk.z;
             incident[count] = &ph.wave;
+            state[count] = ph.rng.state();
             slot[k] = count, lane[count++] = k;
         });
         const double* const normals[3] = {normal[0], normal[1], normal[2]};
         const uint64_t met = leaveUniaxialLanes(s.trace.opticAxis(), 1, nO, nE, incident, normals,
                                                 size_t(count), leavings, kMaxLanes, evanescent);
         forEachLane(met, [&](int j) { left |= LaneBits(1) << lane[j]; });
+        // Their draws too (the photon's next number: meet() draws nothing before its choice).
+        if (met) drawLeavingLanes(leavings, kMaxLanes, state, size_t(count), out, ordinary);
     }
     forEachLane(lanes.live, [&](int k) {
         PhotonWalker::Photon& ph = lanes.ph[k];
@@ -534,11 +555,13 @@ void stepCrystalPacket(const Packets& s, CrystalPacket& lanes, Visitor& visit) {
         bool stays = false;
         if (!(ts[k] < kInf)) {
             v.lost(ph.bounces);
+        } else if (left >> k & 1) {
+            const int j = slot[k];
+            const uniaxial::LeavingLane leaving{leavings + j, kMaxLanes, bool(evanescent >> j & 1),
+                                                out >> j & 1 ? -1 : int(~ordinary >> j & 1)};
+            stays = PhotonWalker::meet(s.trace, SurfaceHit{ts[k], uint32_t(facets[k])}, v, ph, &leaving);
         } else {
-            const uniaxial::LeavingLane leaving{leavings + slot[k], kMaxLanes,
-                                                bool(evanescent >> slot[k] & 1)};
-            stays = PhotonWalker::meet(s.trace, SurfaceHit{ts[k], uint32_t(facets[k])}, v, ph,
-                                       left >> k & 1 ? &leaving : nullptr);
+            stays = PhotonWalker::meet(s.trace, SurfaceHit{ts[k], uint32_t(facets[k])}, v, ph);
         }
         if (!stays) {
             lanes.live &= ~(LaneBits(1) << k);

@@ -187,9 +187,11 @@ class PhotonWalker {
             const FacetWaves& w = m.waves;
             if (!w.totalInternal && ph.rng.uniform() >= w.reflected.share(m.stokes)) {
                 const Vec3f out = refractOut(d, normal, n, cosI, w.cosT);
-                ph.pol = {w.refracted.apply(m.stokes), toVec3f(m.s)};
-                if constexpr (requires { visit.exitPolarization(ph.pol, out); })
+                // The state it leaves in, for a visitor that reads it (the photon goes no further).
+                if constexpr (requires { visit.exitPolarization(ph.pol, out); }) {
+                    ph.pol = {w.refracted.apply(m.stokes), toVec3f(m.s)};
                     visit.exitPolarization(ph.pol, out);
+                }
                 visit.exited(hit.facet, p, out, ph.bounces);
                 return false;
             }
@@ -320,22 +322,40 @@ class PhotonWalker {
         const PlaneWave& transmittedWave(int j) const { return w.transmitted[j].wave; }
         const Vec3& ordinaryNormal() const { return w.transmitted[0].wave.waveNormal; }
     };
+    // The wave a photon's draw picks among an entry's (uniaxial::drawEntry) for its state pol along d: -1
+    // reflected, 0 or 1 the transmitted ordinary or extraordinary wave; or the lanes' draw where they made
+    // it.
+    template <class Waves>
+    static int drawEntryWave(const Waves& w, const Polarization& pol, const Vec3f& d, Rng& rng) {
+        const Coherency j = coherencyOf(pol, d, Vec3f(w.incidentS()));
+        auto share = [&](int i) {
+            const Complex ts = w.amplitude(i, 0), tp = w.amplitude(i, 1);
+            return shareOfParts(w.fluxRatio(i), ts.real(), ts.imag(), tp.real(), tp.imag(), j.ss, j.pp,
+                                j.sp.real(), j.sp.imag());
+        };
+        const uniaxial::EntryDraw<double> draw =
+            uniaxial::drawEntry<double>(rng.uniform(), share(0), share(1), share(2), share(3));
+        return draw.reflected ? -1 : draw.ordinary ? 0 : 1;
+    }
+    static int drawEntryWave(const uniaxial::EntryLane& w, const Polarization& pol, const Vec3f& d,
+                             Rng& rng) {
+        if (w.drawn == uniaxial::EntryLane::kNotDrawn)
+            return drawEntryWave<uniaxial::EntryLane>(w, pol, d, rng);
+        rng.skip();
+        return w.drawn;
+    }
     // enterCrystalWave() once the interface's waves w are known (WavesEntry or uniaxial::EntryLane).
     template <class Visitor, class Waves>
     static bool chooseCrystalWave(const TraceBase& s, const Waves& w, const Vec3f& normal, uint32_t facet,
                                   const Vec3f& p, Vec3f& d, Visitor& visit, Photon& ph) {
         ph.coherent = s.nearOpticAxis(w.ordinaryNormal());
         if (ph.coherent) return enterPolarized(normal, 1.0f / ph.n, facet, p, d, visit, ph);
-        const Coherency j = coherencyOf(ph.pol, d, Vec3f(w.incidentS()));
-        auto share = [&](int i) { return shareOf(w.fluxRatio(i), w.amplitude(i, 0), w.amplitude(i, 1), j); };
-        const double reflected = share(0) + share(1);
-        const double ordinary = share(2);
-        const double u = ph.rng.uniform() * (reflected + ordinary + share(3));
-        if (u < reflected) {
+        const int wave = drawEntryWave(w, ph.pol, d, ph.rng);
+        if (wave < 0) {
             visit.reflectedAtEntry(facet, p, reflectOff(d, normal, std::clamp(-dot(d, normal), 0.0f, 1.0f)));
             return false;
         }
-        ph.wave = w.transmittedWave(u < reflected + ordinary ? 0 : 1);
+        ph.wave = w.transmittedWave(wave);
         d = Vec3f(ph.wave.ray);
         return true;
     }
@@ -380,23 +400,39 @@ class PhotonWalker {
         const Vec3& transmittedRay() const { return w.transmitted[0].wave.ray; }
         const Vec3& transmittedField() const { return w.transmitted[0].wave.field; }
     };
+    // The wave a photon's draw picks among a leaving's (uniaxial::drawLeaving): -1 out through the s and p
+    // waves, 0 or 1 the reflected ordinary or extraordinary wave; or the lanes' draw where they made it.
+    template <class Waves>
+    static int drawLeavingWave(const Waves& w, Rng& rng) {
+        const uniaxial::LeavingDraw<double> draw =
+            uniaxial::drawLeaving<double>(rng.uniform(), w.reflectedShare(0), w.reflectedShare(1),
+                                          w.transmittedShare(0), w.transmittedShare(1));
+        return draw.out ? -1 : draw.ordinary ? 0 : 1;
+    }
+    static int drawLeavingWave(const uniaxial::LeavingLane& w, Rng& rng) {
+        if (w.drawn == uniaxial::LeavingLane::kNotDrawn)
+            return drawLeavingWave<uniaxial::LeavingLane>(w, rng);
+        rng.skip();
+        return w.drawn;
+    }
     // stepCrystalWave() once the interface's waves w are known (WavesLeaving or uniaxial::LeavingLane).
     template <class Visitor, class Waves>
     static bool chooseLeavingWave(const TraceBase& s, const Waves& w, const SurfaceHit& hit, Visitor& visit,
                                   Photon& ph) {
         const Vec3f p = ph.p + ph.d * hit.t;
-        const double out = w.transmittedShare(0) + w.transmittedShare(1);
-        const double ordinary = w.reflectedShare(0);
-        const double u = ph.rng.uniform() * (out + ordinary + w.reflectedShare(1));
-        if (u < out) {
+        const int wave = drawLeavingWave(w, ph.rng);
+        if (wave < 0) {
             const Vec3f dir(w.transmittedRay());
-            ph.pol = {stokesOf(w.transmittedAmplitude(0), w.transmittedAmplitude(1)),
-                      Vec3f(w.transmittedField())};
-            if constexpr (requires { visit.exitPolarization(ph.pol, dir); }) visit.exitPolarization(ph.pol, dir);
+            // The state it leaves in, for a visitor that reads it (the photon goes no further).
+            if constexpr (requires { visit.exitPolarization(ph.pol, dir); }) {
+                ph.pol = {stokesOf(w.transmittedAmplitude(0), w.transmittedAmplitude(1)),
+                          Vec3f(w.transmittedField())};
+                visit.exitPolarization(ph.pol, dir);
+            }
             visit.exited(hit.facet, p, dir, ph.bounces);
             return false;
         }
-        ph.wave = w.reflectedWave(u < out + ordinary ? 0 : 1);
+        ph.wave = w.reflectedWave(wave);
         ph.p = p;
         ph.d = Vec3f(ph.wave.ray);
         if (s.nearOpticAxis(ph.wave.waveNormal)) {  // the wave, linear along its field, goes on as one state

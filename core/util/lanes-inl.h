@@ -149,6 +149,14 @@ HWY_INLINE Floats uniformOf(uint64_t* state, FloatMask draw) {
     const auto bits = hn::ConcatEven(d32, hn::BitCast(d32, bitsHi.v), hn::BitCast(d32, bitsLo.v));
     return Floats(hn::ConvertTo(FloatTag(), hn::BitCast(IndexTag(), bits))) * Floats(0x1p-24f);
 }
+// Rng::uniform() of the streams at state[0 .. Lanes(DoubleTag)), in doubles (24 bits times 2^-24: exact in
+// double as in float), the states left as they are.
+HWY_INLINE Doubles nextUniformOf(const uint64_t* state) {
+    const hn::Repartition<int64_t, DoubleTag> d64;
+    Streams s = Streams::load(state);
+    const Streams bits = nextOf(s, hn::FirstN(StreamTag(), hn::Lanes(StreamTag()))) >> 40;
+    return Doubles(hn::ConvertTo(DoubleTag(), hn::BitCast(d64, bits.v))) * Doubles(0x1p-24);
+}
 // The states of Rng(seed, firstStream + k) for k = 0 .. Lanes(FloatTag) - 1, into state[].
 HWY_INLINE void seedOf(uint64_t seed, uint64_t firstStream, uint64_t* state) {
     const size_t half = hn::Lanes(StreamTag());

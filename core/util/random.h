@@ -26,6 +26,8 @@ class Rng {
     // Uniform in [0, 1) with 24 bits, exactly representable as a float.
     constexpr float uniform() { return float(next() >> 40) * 0x1p-24f; }
     constexpr double uniformDouble() { return double(next() >> 11) * 0x1p-53; }
+    // Passes over the next number, drawn from this stream elsewhere (a packet's lanes).
+    constexpr void skip() { state_ += kGamma; }
 
     // The stream's position, for a packet of photons that draws from one stream per lane: the next
     // number is mix64(state() + kGamma).

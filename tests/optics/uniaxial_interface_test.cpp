@@ -1,6 +1,9 @@
-// The entry into a uniaxial crystal computed in lanes of doubles (optics/uniaxial_interface-inl.h) against
-// enterCrystal() one incidence at a time: the same bits, on every SIMD target this machine runs.
+// The entry into and the leaving from a uniaxial crystal computed in lanes of doubles
+// (optics/uniaxial_interface-inl.h) against enterCrystal() and leaveCrystal() one incidence at a time, and
+// the lanes' draws among an entry's and a leaving's waves against the one-photon walk's: the same bits, on
+// every SIMD target this machine runs.
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <random>
@@ -14,15 +17,19 @@
 
 #include "hwy/highway.h"
 #include "optics/uniaxial_interface-inl.h"
+#include "util/random.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace facetlight {
 namespace HWY_NAMESPACE {
 
-// enterUniaxialLanes(); nothing on Highway's one-lane fallback, which has no lanes of doubles.
+// enterUniaxialLanes(); nothing on Highway's one-lane fallback, which has no lanes of doubles. And
+// drawEntryLanes() for photons in state pol along d whose streams are at state[j]: the wave drawn into
+// drawn[j] (-1 reflected, 0 or 1 the ordinary or extraordinary wave).
 uint64_t EnterLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
                     const double* const direction[3], const double* const normal[3], size_t count,
-                    InterfaceWaves* out) {
+                    const Polarization& pol, const Vec3f& d, const uint64_t* state, InterfaceWaves* out,
+                    int* drawn) {
 #if HWY_TARGET != HWY_SCALAR
     // What a photon's choice reads through uniaxial::EntryLane, into out[j] (enterCrystal()'s waves when
     // called, each number read replaced by the lanes'): the comparison with enterCrystal() checks those.
@@ -31,6 +38,8 @@ uint64_t EnterLanes(const Vec3& axis, double nOutside, const double* nO, const d
     alignas(64) double numbers[Entry::kNumbers * kStride];
     const uint64_t entered =
         enterUniaxialLanes(axis, nOutside, nO, nE, direction, normal, count, numbers, kStride);
+    uint64_t reflected = 0, ordinary = 0;
+    drawEntryLanes(pol, d, numbers, kStride, state, count, reflected, ordinary);
     for (uint64_t b = entered; b; b &= b - 1) {
         const int j = __builtin_ctzll(b);
         InterfaceWaves& w = out[j];
@@ -43,18 +52,21 @@ uint64_t EnterLanes(const Vec3& axis, double nOutside, const double* nO, const d
         }
         for (int k = 0; k < 2; ++k) w.transmitted[k].wave = lane.transmittedWave(k);
         w.transmitted[0].wave.waveNormal = lane.ordinaryNormal();
+        drawn[j] = reflected >> j & 1 ? -1 : ordinary >> j & 1 ? 0 : 1;
     }
     return entered;
 #else
-    (void)axis, (void)nOutside, (void)nO, (void)nE, (void)direction, (void)normal, (void)count, (void)out;
+    (void)axis, (void)nOutside, (void)nO, (void)nE, (void)direction, (void)normal, (void)count, (void)pol,
+        (void)d, (void)state, (void)out, (void)drawn;
     return 0;
 #endif
 }
 
-// leaveUniaxialLanes(), as EnterLanes.
+// leaveUniaxialLanes(), as EnterLanes; and drawLeavingLanes() for photons whose streams are at state[j]:
+// the wave drawn into drawn[j] (-1 out, 0 or 1 the reflected ordinary or extraordinary wave).
 uint64_t LeaveLanes(const Vec3& axis, double nOutside, const double* nO, const double* nE,
                     const PlaneWave* const incident[], const double* const normal[3], size_t count,
-                    InterfaceWaves* out) {
+                    const uint64_t* state, InterfaceWaves* out, int* drawn) {
 #if HWY_TARGET != HWY_SCALAR
     // What a photon's choice reads through uniaxial::LeavingLane, into out[j] (leaveCrystal()'s waves when
     // called, each number read replaced by the lanes'), as EnterLanes.
@@ -64,6 +76,8 @@ uint64_t LeaveLanes(const Vec3& axis, double nOutside, const double* nO, const d
     uint64_t evanescent = 0;
     const uint64_t left =
         leaveUniaxialLanes(axis, nOutside, nO, nE, incident, normal, count, numbers, kStride, evanescent);
+    uint64_t leaves = 0, ordinary = 0;
+    drawLeavingLanes(numbers, kStride, state, count, leaves, ordinary);
     for (uint64_t b = left; b; b &= b - 1) {
         const int j = __builtin_ctzll(b);
         const bool outsideEvanescent = evanescent >> j & 1;
@@ -77,10 +91,12 @@ uint64_t LeaveLanes(const Vec3& axis, double nOutside, const double* nO, const d
         }
         w.transmitted[0].wave.ray = lane.transmittedRay();
         w.transmitted[0].wave.field = lane.transmittedField();
+        drawn[j] = leaves >> j & 1 ? -1 : ordinary >> j & 1 ? 0 : 1;
     }
     return left;
 #else
-    (void)axis, (void)nOutside, (void)nO, (void)nE, (void)incident, (void)normal, (void)count, (void)out;
+    (void)axis, (void)nOutside, (void)nO, (void)nE, (void)incident, (void)normal, (void)count, (void)state,
+        (void)out, (void)drawn;
     return 0;
 #endif
 }
@@ -162,7 +178,8 @@ Batch randomBatch(std::mt19937_64& rng) {
 TEST(UniaxialEntry, LanesGiveEnterCrystalsBitsOnEveryTarget) {
     test::forEachSimdTarget([] {
         std::mt19937_64 rng(28);
-        size_t compared = 0, incidences = 0;
+        std::uniform_real_distribution<double> u(0, 1);
+        size_t compared = 0, incidences = 0, drawnWaves[3] = {};
         for (int round = 0; round < 500; ++round) {
             const Batch b = randomBatch(rng);
             std::vector<InterfaceWaves> ones(kBatch);
@@ -173,19 +190,43 @@ TEST(UniaxialEntry, LanesGiveEnterCrystalsBitsOnEveryTarget) {
             std::vector<InterfaceWaves> lanes = ones;
             const double* const d[3] = {b.d[0], b.d[1], b.d[2]};
             const double* const n[3] = {b.n[0], b.n[1], b.n[2]};
-            const uint64_t met =
-                HWY_DYNAMIC_DISPATCH(EnterLanes)(b.axis, 1, b.nO, b.nE, d, n, b.count, lanes.data());
+            // A random state along one direction for the draws (the lanes' share it).
+            const Vec3f dir(randomUnit(rng));
+            const double psi = 3 * u(rng), chi = u(rng) - 0.5, degree = u(rng);
+            const Polarization pol{
+                Stokes{1, float(degree * std::cos(chi) * std::cos(2 * psi)),
+                       float(degree * std::cos(chi) * std::sin(2 * psi)), float(degree * std::sin(chi))},
+                frameAcross(dir, Vec3f(randomUnit(rng)))};
+            alignas(64) uint64_t state[kBatch];
+            for (uint64_t& st : state) st = rng();
+            int drawn[kBatch];
+            const uint64_t met = HWY_DYNAMIC_DISPATCH(EnterLanes)(b.axis, 1, b.nO, b.nE, d, n, b.count, pol,
+                                                                  dir, state, lanes.data(), drawn);
             ASSERT_EQ(met >> b.count, 0u);
             for (size_t j = 0; j < b.count; ++j) {
                 ++incidences;
                 if (!(met >> j & 1)) continue;
                 ASSERT_TRUE(same(lanes[j], ones[j])) << "round " << round << ", incidence " << j;
+                // The lanes' draw, as the one-photon walk drew from enterCrystal()'s waves before the draw
+                // was written over the number type (shareOf(), coherencyOf()).
+                const InterfaceWaves& one = ones[j];
+                const Coherency c = coherencyOf(pol, dir, Vec3f(one.incident[0].field));
+                const double reflected = shareOf(one.reflected[0], c) + shareOf(one.reflected[1], c);
+                const double ordinary = shareOf(one.transmitted[0], c);
+                Rng stream = Rng::resume(state[j]);
+                const double x = stream.uniform() * (reflected + ordinary + shareOf(one.transmitted[1], c));
+                ASSERT_EQ(drawn[j], x < reflected              ? -1
+                                    : x < reflected + ordinary ? 0
+                                                               : 1)
+                    << "round " << round << ", incidence " << j;
+                ++drawnWaves[drawn[j] + 1];
                 ++compared;
             }
         }
         // Entering from air every wave propagates: each incidence is computed in lanes where there are lanes.
         if (hwy::SupportedTargets() != HWY_SCALAR) {
             EXPECT_EQ(compared, incidences);
+            for (const size_t waves : drawnWaves) EXPECT_GT(waves, compared / 50);  // each wave drawn
         }
     });
 }
@@ -196,7 +237,7 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
     test::forEachSimdTarget([] {
         std::mt19937_64 rng(29);
         std::uniform_real_distribution<double> u(0, 1);
-        size_t compared = 0, incidences = 0, out = 0, totallyReflected = 0;
+        size_t compared = 0, incidences = 0, out = 0, totallyReflected = 0, drawnWaves[3] = {};
         for (int round = 0; round < 500; ++round) {
             Batch b = randomBatch(rng);
             PlaneWave waves[kBatch];
@@ -217,8 +258,11 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
             }
             std::vector<InterfaceWaves> lanes = ones;
             const double* const n[3] = {b.n[0], b.n[1], b.n[2]};
-            const uint64_t met =
-                HWY_DYNAMIC_DISPATCH(LeaveLanes)(b.axis, 1, b.nO, b.nE, incident, n, b.count, lanes.data());
+            alignas(64) uint64_t state[kBatch];
+            for (uint64_t& st : state) st = rng();
+            int drawn[kBatch];
+            const uint64_t met = HWY_DYNAMIC_DISPATCH(LeaveLanes)(b.axis, 1, b.nO, b.nE, incident, n, b.count,
+                                                                  state, lanes.data(), drawn);
             ASSERT_EQ(met >> b.count, 0u);
             for (size_t j = 0; j < b.count; ++j) {
                 ++incidences;
@@ -231,6 +275,16 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
                     continue;
                 }
                 ASSERT_TRUE(same(lanes[j], one)) << "round " << round << ", incidence " << j;
+                // The lanes' draw, as the one-photon walk draws from leaveCrystal()'s shares.
+                Rng stream = Rng::resume(state[j]);
+                const uniaxial::LeavingDraw<double> draw = uniaxial::drawLeaving<double>(
+                    stream.uniform(), one.reflected[0].share[0], one.reflected[1].share[0],
+                    one.transmitted[0].share[0], one.transmitted[1].share[0]);
+                ASSERT_EQ(drawn[j], draw.out        ? -1
+                                    : draw.ordinary ? 0
+                                                    : 1)
+                    << "round " << round << ", incidence " << j;
+                ++drawnWaves[drawn[j] + 1];
                 ++compared;
                 (one.totalInternalReflection() ? totallyReflected : out) += 1;
             }
@@ -240,6 +294,7 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
             EXPECT_GT(compared, incidences * 8 / 10);
             EXPECT_GT(out, compared / 10);
             EXPECT_GT(totallyReflected, compared / 10);
+            for (const size_t waves : drawnWaves) EXPECT_GT(waves, compared / 20);  // each wave drawn
         }
     });
 }
@@ -268,10 +323,16 @@ TEST(UniaxialEntry, RefusedInputIsLeftToEnterCrystal) {
         const double* const dp[3] = {d[0], d[1], d[2]};
         const double* const np[3] = {n[0], n[1], n[2]};
         std::vector<InterfaceWaves> out(kBatch);
-        const uint64_t met =
-            HWY_DYNAMIC_DISPATCH(EnterLanes)(Vec3{0, 0, 1}, 1, nO, nE, dp, np, kBatch, out.data());
+        const Polarization pol{Stokes{}, Vec3f(1, 0, 0)};
+        const Vec3f dir(0, 0, -1);
+        alignas(64) uint64_t state[kBatch] = {};
+        int drawn[kBatch];
+        const uint64_t met = HWY_DYNAMIC_DISPATCH(EnterLanes)(Vec3{0, 0, 1}, 1, nO, nE, dp, np, kBatch, pol,
+                                                              dir, state, out.data(), drawn);
         EXPECT_EQ(met & 0x5555, 0u);
-        EXPECT_EQ(HWY_DYNAMIC_DISPATCH(EnterLanes)(Vec3{0, 0, 2}, 1, nO, nE, dp, np, kBatch, out.data()), 0u);
+        EXPECT_EQ(HWY_DYNAMIC_DISPATCH(EnterLanes)(Vec3{0, 0, 2}, 1, nO, nE, dp, np, kBatch, pol, dir, state,
+                                                   out.data(), drawn),
+                  0u);
     });
 }
 
