@@ -8,9 +8,13 @@
 // grid over the floor in raster order, like a camera's primary hits, and again in random order.
 //
 // Usage: photon_map_bench [--photons N] [--sizes N,N,...] [--queries-side S] [--k K] [--reps R] [--focus 1]
+//                         [--irradiance FILE]
 // --focus 1: only PhotonMap's tree build (1 and 2 threads) and cached-radius gather (1 and 2 threads), with
 // hashes of the tree and of every gather's answer, so that two builds of the library can be compared for
-// speed and for identical results in one script (bench/photon_map_ab.sh).
+// speed and for identical results in one script (bench/photon_map_ab.py); it also checks, untimed, that an
+// estimate at every query has the same bits on 1 and 2 threads and in both orders.
+// --irradiance FILE (with --focus 1): writes that estimate at every raster-order query, one thread, as
+// doubles, to compare two builds' estimates (bench/compare_irradiance.py).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -18,6 +22,7 @@
 #include <cstring>
 #include <ctime>
 #include <functional>
+#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -305,7 +310,7 @@ struct Timer {
 };
 
 // The tree build and the cached-radius gather alone, interleaved repetitions, with hashes of the results.
-void runFocus(size_t photonCount, int side, size_t k, int reps) {
+void runFocus(size_t photonCount, int side, size_t k, int reps, const std::string& dumpPath) {
     const std::vector<Photon> photons = causticPhotons(photonCount, 1);
     std::vector<double> wall[2], cpu[2];
     for (int r = 0; r < reps; ++r)
@@ -330,6 +335,64 @@ void runFocus(size_t photonCount, int side, size_t k, int reps) {
         std::shuffle(s.begin(), s.end(), std::mt19937(5));
         return s;
     }();
+    // Untimed: the estimate at every query (by its place in `raster`), one thread in each order and two
+    // threads in blocks, each thread with its own state, as the renderer's workers gather.
+    std::vector<size_t> place(raster.size());
+    {
+        std::vector<size_t> perm(raster.size());
+        std::iota(perm.begin(), perm.end(), size_t(0));
+        std::shuffle(perm.begin(), perm.end(), std::mt19937(5));  // the same shuffle as `shuffled`
+        place = perm;
+        for (size_t i = 0; i < place.size(); ++i)
+            if (!(shuffled[i] == raster[place[i]])) std::abort();
+    }
+    // An estimate like the renderer's: its cone filter, and photons weighed by wavelength, so that the terms
+    // differ and the order of the sum shows in the last bits.
+    GatherSettings cone;
+    cone.coneK = 1.1f;
+    auto estimate = [&](const Vec3& q, std::vector<Neighbor>& buffer, GatherState& state) {
+        return map.estimate<double>(q, buffer, state, cone, [](const Photon& ph) {
+            return ph.travel().z < 0 ? double(ph.power) * ph.wavelength() / 550 : 0.0;
+        });
+    };
+    auto irradianceOneThread = [&](const std::vector<Vec3>& order, bool shuffledOrder) {
+        std::vector<double> e(raster.size());
+        std::vector<Neighbor> buffer(k);
+        GatherState state;
+        for (size_t i = 0; i < order.size(); ++i)
+            e[shuffledOrder ? place[i] : i] = estimate(order[i], buffer, state);
+        return e;
+    };
+    const std::vector<double> eRaster = irradianceOneThread(raster, false);
+    const std::vector<double> eRandom = irradianceOneThread(shuffled, true);
+    std::vector<double> eTwo(raster.size());
+    struct EstimateWorker {
+        std::vector<Neighbor> buffer;
+        GatherState state;
+    };
+    parallelForBlocks(BlockLoop{0, shuffled.size(), 4096, 2}, nullptr,
+                      EstimateWorker{std::vector<Neighbor>(k), {}},
+                      [&](EstimateWorker& w, uint64_t first, uint64_t last) {
+                          for (uint64_t i = first; i < last; ++i)
+                              eTwo[place[i]] = estimate(shuffled[i], w.buffer, w.state);
+                          return uint64_t(0);
+                      });
+    Hash irradianceHash;
+    irradianceHash.add(eRaster.data(), eRaster.size() * sizeof(double));
+    auto same = [&](const std::vector<double>& e) {
+        return std::memcmp(e.data(), eRaster.data(), e.size() * sizeof(double)) == 0 ? "yes" : "no";
+    };
+    std::printf(
+        "estimates at the raster queries: hash %016llx; same bits in random order %s, on 2 threads %s\n",
+        (unsigned long long)irradianceHash.h, same(eRandom), same(eTwo));
+    if (!dumpPath.empty()) {
+        std::FILE* f = std::fopen(dumpPath.c_str(), "wb");
+        if (!f || std::fwrite(eRaster.data(), sizeof(double), eRaster.size(), f) != eRaster.size()) {
+            std::fprintf(stderr, "cannot write %s\n", dumpPath.c_str());
+            std::exit(1);
+        }
+        std::fclose(f);
+    }
     for (const auto* order : {&raster, &shuffled}) {
         for (auto* v : {&wall[0], &wall[1], &cpu[0], &cpu[1]}) v->clear();
         Hash answers;
@@ -388,6 +451,7 @@ int run(int argc, char** argv) {
     size_t k = 100;
     int reps = 5;
     bool focus = false;
+    std::string dumpPath;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         if (flag == "--photons")
@@ -402,13 +466,15 @@ int run(int argc, char** argv) {
             reps = std::atoi(argv[i + 1]);
         else if (flag == "--focus")
             focus = std::atoi(argv[i + 1]) != 0;
+        else if (flag == "--irradiance")
+            dumpPath = argv[i + 1];
         else {
             std::fprintf(stderr, "unknown flag %s\n", argv[i]);
             return 2;
         }
     }
     if (focus) {
-        runFocus(photonCount, side, k, reps);
+        runFocus(photonCount, side, k, reps, dumpPath);
         return 0;
     }
     const std::vector<Vec3> raster = rasterQueries(side);
