@@ -347,30 +347,46 @@ GatherResult PhotonMap::gather(const Vec3& p, std::span<Neighbor> buffer, Gather
     float r2 = max2;
     if (settings.cachedRadius && state.lastRadius2 > 0) {
         r2 = std::min(max2, state.lastRadius2 * settings.cacheGrowth * settings.cacheGrowth);
-        found = within(q, r2, candidates, cap, state.nodesVisited);
-        if (found >= k && found < cap) {
-            // Every photon below r2 is here, so the k smallest keys are the k nearest. Copy them out in walk
-            // order (the candidates' order) up to the k-th's key.
-            uint64_t* copy = candidates + cap;
-            std::copy(candidates, candidates + found, copy);
-            last = selectKey(copy, copy + found, copy + (k - 1));
-            uint32_t out = 0;
-            for (uint32_t i = 0; out < k; ++i) {
-                buffer[out] = {keyDistance2(candidates[i]), uint32_t(candidates[i])};
-                out += candidates[i] <= last;
+        // Fewer than k below `lower`, cap or more below `upper`. A range search that finds too few or too
+        // many searches again with its bound scaled by the count it found (a photon's share of area, as in a
+        // smooth density), kept between the two; after kRangeTries the heap search takes over.
+        constexpr int kRangeTries = 4;
+        float lower = 0, upper = INFINITY;
+        for (int attempt = 0;; ++attempt) {
+            found = within(q, r2, candidates, cap, state.nodesVisited);
+            if (found >= k && found < cap) {
+                // Every photon below r2 is here, so the k smallest keys are the k nearest. Copy them out in
+                // walk order (the candidates' order) up to the k-th's key.
+                uint64_t* copy = candidates + cap;
+                std::copy(candidates, candidates + found, copy);
+                last = selectKey(copy, copy + found, copy + (k - 1));
+                uint32_t out = 0;
+                for (uint32_t i = 0; out < k; ++i) {
+                    buffer[out] = {keyDistance2(candidates[i]), uint32_t(candidates[i])};
+                    out += candidates[i] <= last;
+                }
+                state.lastRadius2 = keyDistance2(last);
+                return {buffer.first(k), keyDistance2(last)};
             }
-            state.lastRadius2 = keyDistance2(last);
-            return {buffer.first(k), keyDistance2(last)};
+            if (found < k && !(r2 < max2)) {
+                // Every photon within maxRadius, fewer than k: already in walk order.
+                for (uint32_t i = 0; i < found; ++i)
+                    buffer[i] = {keyDistance2(candidates[i]), uint32_t(candidates[i])};
+                return {buffer.first(found), max2};
+            }
+            ++state.retries;
+            if (attempt + 1 == kRangeTries) break;
+            if (found < k) {
+                lower = r2;
+                r2 *= found > 0 ? std::min(16.0f, 1.5f * float(k) / float(found)) : 16.0f;
+            } else {
+                upper = r2;
+                r2 *= 1.5f * float(k) / float(cap);
+            }
+            if (!(r2 > lower && r2 < upper)) r2 = 0.5f * (lower + upper);
+            r2 = std::min(r2, max2);
         }
-        if (found < k && !(r2 < max2)) {
-            // Every photon within maxRadius, fewer than k: already in walk order.
-            for (uint32_t i = 0; i < found; ++i)
-                buffer[i] = {keyDistance2(candidates[i]), uint32_t(candidates[i])};
-            return {buffer.first(found), max2};
-        }
-        ++state.retries;
-        // Too many to hold: r2 still bounds the k nearest. Too few: search within maxRadius.
-        if (found < k) r2 = max2;
+        r2 = std::min(upper, max2);  // bounds the k nearest when a search found too many
     }
     found = nearest(q, candidates, k, r2, state.nodesVisited);
     if (found == 0) return {buffer.first(0), std::isfinite(max2) ? max2 : 0.0f};
