@@ -14,7 +14,8 @@
 // speed and for identical results in one script (bench/photon_map_ab.py); it also checks, untimed, that an
 // estimate at every query has the same bits on 1 and 2 threads and in both orders.
 // --irradiance FILE (with --focus 1): writes that estimate at every raster-order query, one thread, as
-// doubles, to compare two builds' estimates (bench/compare_irradiance.py).
+// doubles, to compare two builds' estimates (bench/compare_irradiance.py), and to FILE.sets their sets of k
+// nearest.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -390,6 +391,25 @@ void runFocus(size_t photonCount, int side, size_t k, int reps, const std::strin
         if (!f || std::fwrite(eRaster.data(), sizeof(double), eRaster.size(), f) != eRaster.size()) {
             std::fprintf(stderr, "cannot write %s\n", dumpPath.c_str());
             std::exit(1);
+        }
+        std::fclose(f);
+        // FILE.sets: each raster-order query's k-th squared distance (a float) and its photons' indices in
+        // increasing order (k uint32s), from a fresh state: the sets of two builds compare photon by photon.
+        f = std::fopen((dumpPath + ".sets").c_str(), "wb");
+        std::vector<Neighbor> buffer(k);
+        std::vector<uint32_t> set;
+        GatherState state;
+        for (const Vec3& q : raster) {
+            const GatherResult g = map.gather(q, buffer, state);
+            set.clear();
+            for (const Neighbor& n : g.neighbors) set.push_back(n.index);
+            std::sort(set.begin(), set.end());
+            set.resize(k, UINT32_MAX);
+            if (!f || std::fwrite(&g.radius2, sizeof(float), 1, f) != 1 ||
+                std::fwrite(set.data(), sizeof(uint32_t), k, f) != k) {
+                std::fprintf(stderr, "cannot write %s.sets\n", dumpPath.c_str());
+                std::exit(1);
+            }
         }
         std::fclose(f);
     }

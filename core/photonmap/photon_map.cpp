@@ -139,6 +139,12 @@ void build(Subtree t, const Placement& out) {
     }
 }
 
+// The gather's walk tests the subtrees of the tree's last kBucketLevels levels whole (15 photons, in 4 runs
+// of consecutive nodes): 1.2x the gathers per CPU second of a walk to the leaves in raster order, though it
+// tests 1.2x the photons (bench/photon_map_bench, 3 levels 1.15x, 5 levels faster in raster order but
+// slower in random order).
+constexpr int kBucketLevels = 4;
+
 // A photon's place in the order of the gather: its squared distance, then its index, in one unsigned word (a
 // non-negative float's bits order as the float does). Every key is distinct, so the k nearest are one set
 // whatever the walk.
@@ -268,8 +274,29 @@ uint64_t PhotonMap::walk(const float q[3], float r2, Visit&& visit) const {
     uint64_t count = 0;
     uint32_t node = 0;
     if (n == 0) return 0;
+    // Nodes from bucketFirst on root the last kBucketLevels levels: their subtrees are tested whole, in index
+    // order, the loads independent of each other, where a walk would wait for each level's load and branch
+    // on it.
+    const int last = std::bit_width(n) - 1;
+    const uint32_t bucketFirst = last >= kBucketLevels ? (1u << (last - kBucketLevels + 1)) - 1 : UINT32_MAX;
+    auto distance2 = [&](uint32_t i) {
+        const Photon& p = photons[i];
+        const float dx = q[0] - p.position[0], dy = q[1] - p.position[1], dz = q[2] - p.position[2];
+        return dx * dx + dy * dy + dz * dz;
+    };
     for (;;) {
         for (;;) {
+            if (node >= bucketFirst) {
+                for (int level = 0; level < kBucketLevels; ++level) {
+                    const uint32_t first = ((node + 1) << level) - 1;
+                    const uint32_t end = std::min(n, first + (1u << level));
+                    for (uint32_t i = first; i < end; ++i) {
+                        ++count;
+                        if (!visit(distance2(i), i, r2)) return count;
+                    }
+                }
+                break;
+            }
             const uint32_t left = 2 * node + 1;
             // The lower levels miss the cache: fetch the grandchildren (4 nodes, 80 contiguous bytes) while
             // this node is tested, two levels ahead of the walk (the children were fetched by the parent).

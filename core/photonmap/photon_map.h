@@ -43,8 +43,9 @@ struct GatherState {
 };
 
 struct GatherResult {
-    // In the order of the tree walk from the query point (near side first), which depends on the point alone:
-    // sums over them have the same bits whatever the search's bound was.
+    // In the order of the tree walk from the query point (near side first; the last levels' subtrees in index
+    // order), which depends on the point alone: sums over them have the same bits whatever the search's
+    // bound was.
     std::span<Neighbor> neighbors;
     // Squared radius of the disc the estimate divides by: the k-th distance when k were found, else
     // maxRadius^2 (or, with no maxRadius, the farthest photon found).
@@ -81,7 +82,8 @@ class PhotonMap {
 
   private:
     // The walk from q, near side first, below the squared bound r2: visit(d2, node, r2) for every photon it
-    // reaches, which may lower r2 and returns false to stop. Returns the photons tested.
+    // reaches, which may lower r2 and returns false to stop; the subtrees of the last levels are tested
+    // whole, in index order. Returns the photons tested.
     template <class Visit>
     uint64_t walk(const float q[3], float r2, Visit&& visit) const;
     // The k smallest keys (see key() in the .cpp) below the squared bound r2 as a max-heap; returns the
