@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Two builds of photon_map_bench side by side: runs `--focus 1` of each alternately, then prints a markdown
 table of the medians over the rounds (tree build ms at 1 and 2 threads; gather k queries/s in raster and
-random order at 1 and 2 threads) and whether the tree and gather hashes agree.
+random order at 1 and 2 threads) and whether the tree and gather hashes agree, naming those that differ (a
+change that moves the gather's last bits on purpose is checked with bench/compare_irradiance.py instead).
 
 Usage: bench/photon_map_ab.py OLD_BENCH NEW_BENCH [--rounds R] [--reps N] [extra photon_map_bench flags]
 """
@@ -63,6 +64,9 @@ def main():
     same = hashes["old"] == hashes["new"]
     print(f"\nhashes of the tree and of every 1-thread gather's answers: {'identical' if same else 'DIFFERENT'} "
           f"({hashes['new']})")
+    for key in hashes["new"]:
+        if hashes["old"].get(key) != hashes["new"][key]:
+            print(f"  {key}: old {hashes['old'].get(key)}, new {hashes['new'][key]}")
 
 
 if __name__ == "__main__":

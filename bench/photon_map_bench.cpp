@@ -1,16 +1,21 @@
 // The photon map's gather and tree experiments, side by side in one run (tables for docs/performance.md):
-//  1. gather methods on one 4 M photon map: radius doubling from 0.001 (the earlier study), the cached
-//  radius,
-//     the unbounded heap kNN, and nanoflann's kNN;
+//  1. gather methods on one 4 M photon map: radius doubling from 0.001 (the earlier study), PhotonMap's
+//     gather with the cached radius (a range search) and without (a heap kNN, then a walk that orders the
+//     answer), and nanoflann's kNN;
 //  2. trees as photons grow: the balanced heap tree against a midpoint-split tree (the earlier study's
 //     alternative) and nanoflann: build time and gather time.
 // Photons are caustic-like: Gaussian spots and a ring on a floor over a uniform background. Queries walk a
 // grid over the floor in raster order, like a camera's primary hits, and again in random order.
 //
 // Usage: photon_map_bench [--photons N] [--sizes N,N,...] [--queries-side S] [--k K] [--reps R] [--focus 1]
+//                         [--irradiance FILE]
 // --focus 1: only PhotonMap's tree build (1 and 2 threads) and cached-radius gather (1 and 2 threads), with
 // hashes of the tree and of every gather's answer, so that two builds of the library can be compared for
-// speed and for identical results in one script (bench/photon_map_ab.sh).
+// speed and for identical results in one script (bench/photon_map_ab.py); it also checks, untimed, that an
+// estimate at every query has the same bits on 1 and 2 threads and in both orders.
+// --irradiance FILE (with --focus 1): writes that estimate at every raster-order query, one thread, as
+// doubles, to compare two builds' estimates (bench/compare_irradiance.py), and to FILE.sets their sets of k
+// nearest.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -18,6 +23,7 @@
 #include <cstring>
 #include <ctime>
 #include <functional>
+#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -305,7 +311,7 @@ struct Timer {
 };
 
 // The tree build and the cached-radius gather alone, interleaved repetitions, with hashes of the results.
-void runFocus(size_t photonCount, int side, size_t k, int reps) {
+void runFocus(size_t photonCount, int side, size_t k, int reps, const std::string& dumpPath) {
     const std::vector<Photon> photons = causticPhotons(photonCount, 1);
     std::vector<double> wall[2], cpu[2];
     for (int r = 0; r < reps; ++r)
@@ -330,6 +336,83 @@ void runFocus(size_t photonCount, int side, size_t k, int reps) {
         std::shuffle(s.begin(), s.end(), std::mt19937(5));
         return s;
     }();
+    // Untimed: the estimate at every query (by its place in `raster`), one thread in each order and two
+    // threads in blocks, each thread with its own state, as the renderer's workers gather.
+    std::vector<size_t> place(raster.size());
+    {
+        std::vector<size_t> perm(raster.size());
+        std::iota(perm.begin(), perm.end(), size_t(0));
+        std::shuffle(perm.begin(), perm.end(), std::mt19937(5));  // the same shuffle as `shuffled`
+        place = perm;
+        for (size_t i = 0; i < place.size(); ++i)
+            if (!(shuffled[i] == raster[place[i]])) std::abort();
+    }
+    // An estimate like the renderer's: its cone filter, and photons weighed by wavelength, so that the terms
+    // differ and the order of the sum shows in the last bits.
+    GatherSettings cone;
+    cone.coneK = 1.1f;
+    auto estimate = [&](const Vec3& q, std::vector<Neighbor>& buffer, GatherState& state) {
+        return map.estimate<double>(q, buffer, state, cone, [](const Photon& ph) {
+            return ph.travel().z < 0 ? double(ph.power) * ph.wavelength() / 550 : 0.0;
+        });
+    };
+    auto irradianceOneThread = [&](const std::vector<Vec3>& order, bool shuffledOrder) {
+        std::vector<double> e(raster.size());
+        std::vector<Neighbor> buffer(k);
+        GatherState state;
+        for (size_t i = 0; i < order.size(); ++i)
+            e[shuffledOrder ? place[i] : i] = estimate(order[i], buffer, state);
+        return e;
+    };
+    const std::vector<double> eRaster = irradianceOneThread(raster, false);
+    const std::vector<double> eRandom = irradianceOneThread(shuffled, true);
+    std::vector<double> eTwo(raster.size());
+    struct EstimateWorker {
+        std::vector<Neighbor> buffer;
+        GatherState state;
+    };
+    parallelForBlocks(BlockLoop{0, shuffled.size(), 4096, 2}, nullptr,
+                      EstimateWorker{std::vector<Neighbor>(k), {}},
+                      [&](EstimateWorker& w, uint64_t first, uint64_t last) {
+                          for (uint64_t i = first; i < last; ++i)
+                              eTwo[place[i]] = estimate(shuffled[i], w.buffer, w.state);
+                          return uint64_t(0);
+                      });
+    Hash irradianceHash;
+    irradianceHash.add(eRaster.data(), eRaster.size() * sizeof(double));
+    auto same = [&](const std::vector<double>& e) {
+        return std::memcmp(e.data(), eRaster.data(), e.size() * sizeof(double)) == 0 ? "yes" : "no";
+    };
+    std::printf(
+        "estimates at the raster queries: hash %016llx; same bits in random order %s, on 2 threads %s\n",
+        (unsigned long long)irradianceHash.h, same(eRandom), same(eTwo));
+    if (!dumpPath.empty()) {
+        std::FILE* f = std::fopen(dumpPath.c_str(), "wb");
+        if (!f || std::fwrite(eRaster.data(), sizeof(double), eRaster.size(), f) != eRaster.size()) {
+            std::fprintf(stderr, "cannot write %s\n", dumpPath.c_str());
+            std::exit(1);
+        }
+        std::fclose(f);
+        // FILE.sets: each raster-order query's k-th squared distance (a float) and its photons' indices in
+        // increasing order (k uint32s), from a fresh state: the sets of two builds compare photon by photon.
+        f = std::fopen((dumpPath + ".sets").c_str(), "wb");
+        std::vector<Neighbor> buffer(k);
+        std::vector<uint32_t> set;
+        GatherState state;
+        for (const Vec3& q : raster) {
+            const GatherResult g = map.gather(q, buffer, state);
+            set.clear();
+            for (const Neighbor& n : g.neighbors) set.push_back(n.index);
+            std::sort(set.begin(), set.end());
+            set.resize(k, UINT32_MAX);
+            if (!f || std::fwrite(&g.radius2, sizeof(float), 1, f) != 1 ||
+                std::fwrite(set.data(), sizeof(uint32_t), k, f) != k) {
+                std::fprintf(stderr, "cannot write %s.sets\n", dumpPath.c_str());
+                std::exit(1);
+            }
+        }
+        std::fclose(f);
+    }
     for (const auto* order : {&raster, &shuffled}) {
         for (auto* v : {&wall[0], &wall[1], &cpu[0], &cpu[1]}) v->clear();
         Hash answers;
@@ -388,6 +471,7 @@ int run(int argc, char** argv) {
     size_t k = 100;
     int reps = 5;
     bool focus = false;
+    std::string dumpPath;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         if (flag == "--photons")
@@ -402,13 +486,15 @@ int run(int argc, char** argv) {
             reps = std::atoi(argv[i + 1]);
         else if (flag == "--focus")
             focus = std::atoi(argv[i + 1]) != 0;
+        else if (flag == "--irradiance")
+            dumpPath = argv[i + 1];
         else {
             std::fprintf(stderr, "unknown flag %s\n", argv[i]);
             return 2;
         }
     }
     if (focus) {
-        runFocus(photonCount, side, k, reps);
+        runFocus(photonCount, side, k, reps, dumpPath);
         return 0;
     }
     const std::vector<Vec3> raster = rasterQueries(side);
@@ -447,8 +533,8 @@ int run(int argc, char** argv) {
             cachedState = {};
             std::vector<Method> methods = {
                 {"(a) radius doubling from 0.001", std::ref(doubling), {}, {}},
-                {"(b) heap kNN, cached radius 1.15x", heapGather(cachedState, cached), {}, {}},
-                {"(c) heap kNN, no initial bound", heapGather(plainState, plain), {}, {}},
+                {"(b) range search, cached radius 1.15x", heapGather(cachedState, cached), {}, {}},
+                {"(c) heap kNN + ordering walk, no bound", heapGather(plainState, plain), {}, {}},
                 {"(d) nanoflann kNN (leaf 10)", nanoGather, {}, {}},
             };
             runSideBySide(methods, *order, reps);
@@ -468,7 +554,7 @@ int run(int argc, char** argv) {
             std::printf("\nk-th radius checksums (exact methods agree): ");
             for (const Method& m : methods) std::printf("%.6g ", m.work.checksum);
             std::printf(
-                "\ncached radius: %.1f%% of queries searched twice\n",
+                "\ncached radius: searched again %.1f times a hundred queries\n",
                 100.0 * double(cachedState.retries) / double(std::max<uint64_t>(cachedState.queries, 1)));
         }
     }

@@ -32,16 +32,21 @@ struct GatherSettings {
     float coneK = 0;
 };
 
-// One per thread, never shared: the cached radius and counters of the work done.
+// One per thread, never shared: the cached radius, the candidates' buffer (sized at the first gather, so
+// that gathers allocate nothing after it) and counters of the work done.
 struct GatherState {
     float lastRadius2 = 0;  // 0 until a gather found k photons
     uint64_t queries = 0;
-    uint64_t retries = 0;       // cached-radius searches that found fewer than k and were repeated
+    uint64_t retries = 0;  // cached-radius searches that found fewer than k, or too many, and were repeated
     uint64_t nodesVisited = 0;  // = photons distance-tested: every node is a photon
+    std::vector<uint64_t> scratch;
 };
 
 struct GatherResult {
-    std::span<Neighbor> neighbors;  // a max-heap: neighbors[0] is the farthest
+    // In the order of the tree walk from the query point (near side first; the last levels' subtrees in index
+    // order), which depends on the point alone: sums over them have the same bits whatever the search's
+    // bound was.
+    std::span<Neighbor> neighbors;
     // Squared radius of the disc the estimate divides by: the k-th distance when k were found, else
     // maxRadius^2 (or, with no maxRadius, the farthest photon found).
     float radius2 = 0;
@@ -59,7 +64,8 @@ class PhotonMap {
     std::span<const Photon> photons() const { return photons_; }
 
     // The k = buffer.size() photons nearest to p within settings.maxRadius (fewer where there are fewer),
-    // written to buffer. Allocates nothing.
+    // written to buffer; at equal distances the lower index in photons() is the nearer. The answer depends
+    // only on p, k and maxRadius, never on the state's history. Allocates nothing after the state's first.
     GatherResult gather(const Vec3& p, std::span<Neighbor> buffer, GatherState& state,
                         const GatherSettings& settings = {}) const;
 
@@ -75,8 +81,16 @@ class PhotonMap {
                       const GatherSettings& settings = {}) const;
 
   private:
-    // kNN below the squared bound r2 (shrunk to the k-th distance once k are found); returns the count.
-    uint32_t nearest(const float q[3], Neighbor* heap, uint32_t k, float& r2, uint64_t& visited) const;
+    // The walk from q, near side first, below the squared bound r2: visit(d2, node, r2) for every photon it
+    // reaches, which may lower r2 and returns false to stop; the subtrees of the last levels are tested
+    // whole, in index order. Returns the photons tested.
+    template <class Visit>
+    uint64_t walk(const float q[3], float r2, Visit&& visit) const;
+    // The k smallest keys (see key() in the .cpp) below the squared bound r2 as a max-heap; returns the
+    // count.
+    uint32_t nearest(const float q[3], uint64_t* heap, uint32_t k, float r2, uint64_t& visited) const;
+    // The keys of every photon below r2, in walk order; returns the count, or cap when there are cap or more.
+    uint32_t within(const float q[3], float r2, uint64_t* keys, uint32_t cap, uint64_t& visited) const;
 
     std::vector<Photon> photons_;
 };
