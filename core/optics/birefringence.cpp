@@ -546,7 +546,8 @@ InterfaceWaves leaveCrystal(const UniaxialMedium& crystal, const PlaneWave& inci
 }
 
 double shareOf(double fluxRatio, Complex ts, Complex tp, const Coherency& j) {
-    return fluxRatio * (std::norm(ts) * j.ss + std::norm(tp) * j.pp + 2 * (ts * std::conj(tp) * j.sp).real());
+    return shareOfParts(fluxRatio, ts.real(), ts.imag(), tp.real(), tp.imag(), j.ss, j.pp, j.sp.real(),
+                        j.sp.imag());
 }
 
 // ---- Biaxial crystals (docs/optics.md, "Biaxial crystals") ----

@@ -207,8 +207,8 @@ TEST(UniaxialEntry, LanesGiveEnterCrystalsBitsOnEveryTarget) {
                 ++incidences;
                 if (!(met >> j & 1)) continue;
                 ASSERT_TRUE(same(lanes[j], ones[j])) << "round " << round << ", incidence " << j;
-                // The lanes' draw, as the one-photon walk drew from enterCrystal()'s waves before the draw
-                // was written over the number type (shareOf(), coherencyOf()).
+                // The lanes' draw, as the one-photon walk draws from enterCrystal()'s waves by shareOf() and
+                // coherencyOf(), the double instances of what the lanes run.
                 const InterfaceWaves& one = ones[j];
                 const Coherency c = coherencyOf(pol, dir, Vec3f(one.incident[0].field));
                 const double reflected = shareOf(one.reflected[0], c) + shareOf(one.reflected[1], c);
