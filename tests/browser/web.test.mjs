@@ -1824,6 +1824,16 @@ describe('facetlight web page', { timeout: 900_000 }, () => {
     const id = await submitAndGetId({ stay: true });
     assert.deepEqual(JSON.parse((await posted).postData()).absorption, { corundum_ppma: { cr: 300 } });
     await fetch(`${baseUrl}/api/jobs/${id}/cancel`, { method: 'POST' });
+    // A quick one without the viewer: its result page says what coloured the stone, not the ruby's spectrum.
+    const res = await fetch(`${baseUrl}/api/jobs`, {
+      method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ mesh: 'round_brilliant', photons: 2000, threads: 2, material: 'ruby', viewer: { enabled: false }, absorption: { corundum_ppma: { cr: 300 } } }),
+    });
+    const created = await res.json();
+    assert.equal(res.status, 202, JSON.stringify(created));
+    await page.evaluate((jobId) => { location.hash = `#/jobs/${jobId}`; }, created.id);
+    await page.waitForSelector('[data-section="design"]', { timeout: JOB_TIMEOUT_MS });
+    assert.match(await page.textContent('[data-section="design"]'), /Coloured by\s*Cr³⁺ 300 ppma \(GIA's absorption cross sections\)/);
     await page.evaluate(() => { location.hash = '#/'; });
     await page.fill('#f-corundum-cr', '');
     await page.selectOption('#f-material', 'diamond');

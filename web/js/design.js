@@ -50,6 +50,15 @@ function doubleRefractionText(material, settings) {
   return `${head}${material.double_refraction}${split ? ` (${where})` : ''}`;
 }
 
+function absorptionText(absorption) {
+  const c = absorption.corundum_ppma;
+  if (!c) return 'the job\'s own absorption spectrum';
+  const parts = [];
+  if (c.cr > 0) parts.push(`Cr³⁺ ${fmtNumber(c.cr, 4)} ppma`);
+  if (c.fe_ti > 0) parts.push(`Fe²⁺–Ti⁴⁺ pairs ${fmtNumber(c.fe_ti, 4)} ppma`);
+  return `${parts.join(', ') || 'no chromophores'} (GIA's absorption cross sections)`;
+}
+
 function sizeList(size, material, settings = {}) {
   const rows = [];
   if (size) {
@@ -63,6 +72,8 @@ function sizeList(size, material, settings = {}) {
     rows.push(['Traced as', `${what}n ${fmtNumber(material.n_d, 4)}: ${SOURCE_TEXT[material.source] || material.source}`]);
     if (material.optic && material.optic !== 'isotropic') rows.push(['Double refraction', doubleRefractionText(material, settings)]);
   }
+  // A job's own spectrum replaces the material's colour (docs/optics.md, "Absorption"): say by what.
+  if (settings.absorption) rows.push(['Coloured by', absorptionText(settings.absorption)]);
   if (POLARIZATION_TEXT[settings.polarization]) rows.push(['Polarisation', POLARIZATION_TEXT[settings.polarization]]);
   return h('dl', { class: 'kv' }, rows.map(([k, v]) => [h('dt', {}, k), h('dd', {}, v)]));
 }
