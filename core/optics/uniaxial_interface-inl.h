@@ -124,7 +124,7 @@ HWY_INLINE uint64_t leaveUniaxialLanes(const Vec3& axis, double nOutside, const 
     return left;
 }
 
-// The draws (uniaxial::drawEntry) of photons in state `pol` along d (alike for all) whose entries j < count
+// The draws (uniaxial::drawWave) of photons in state `pol` along d (alike for all) whose entries j < count
 // enterUniaxialLanes() stored in `numbers` (stride as there), photon j's stream at state[j] (Rng::state(),
 // readable as nO is; not advanced): bit j of `reflected` where photon j's draw reflects it, else of
 // `ordinary` where it enters as the ordinary wave (the bits of entries not stored are unspecified).
@@ -153,16 +153,16 @@ HWY_INLINE void drawEntryLanes(const Polarization& pol, const Vec3f& d, const do
             return shareOfParts(number(at), number(at + 1), zero, number(at + 2), zero, j.ss, j.pp, j.spRe,
                                 j.spIm);
         };
-        const uniaxial::EntryDraw<Doubles> draw =
-            uniaxial::drawEntry(nextUniformOf(state + first), share(0), share(1), share(2), share(3));
+        const uniaxial::WaveDraw<Doubles> draw =
+            uniaxial::drawWave(nextUniformOf(state + first), share(0), share(1), share(2), share(3));
         uint64_t reflectedBits = 0, ordinaryBits = 0;
-        hn::StoreMaskBits(dd, draw.reflected, reinterpret_cast<uint8_t*>(&reflectedBits));
+        hn::StoreMaskBits(dd, draw.pair, reinterpret_cast<uint8_t*>(&reflectedBits));
         hn::StoreMaskBits(dd, draw.ordinary, reinterpret_cast<uint8_t*>(&ordinaryBits));
         reflected |= reflectedBits << first, ordinary |= ordinaryBits << first;
     }
 }
 
-// The draws (uniaxial::drawLeaving) of the photons whose leavings j < count leaveUniaxialLanes() stored in
+// The draws (uniaxial::drawWave) of the photons whose leavings j < count leaveUniaxialLanes() stored in
 // `numbers` (stride as there), photon j's stream at state[j] (Rng::state(), readable as nO is; not advanced):
 // bit j of `out` where photon j's draw takes it out, else of `ordinary` where it reflects as the ordinary
 // wave (the bits of leavings not stored are unspecified).
@@ -173,10 +173,11 @@ HWY_INLINE void drawLeavingLanes(const double* numbers, size_t stride, const uin
     out = 0, ordinary = 0;
     for (size_t first = 0; first < count; first += lanes) {
         auto share = [&](int i) { return Doubles::load(numbers + size_t(i) * stride + first); };
-        const uniaxial::LeavingDraw<Doubles> draw =
-            uniaxial::drawLeaving(nextUniformOf(state + first), share(0), share(1), share(2), share(3));
+        // Stored reflected o and e, then transmitted s and p: the pair is the transmitted one.
+        const uniaxial::WaveDraw<Doubles> draw =
+            uniaxial::drawWave(nextUniformOf(state + first), share(2), share(3), share(0), share(1));
         uint64_t outBits = 0, ordinaryBits = 0;
-        hn::StoreMaskBits(d, draw.out, reinterpret_cast<uint8_t*>(&outBits));
+        hn::StoreMaskBits(d, draw.pair, reinterpret_cast<uint8_t*>(&outBits));
         hn::StoreMaskBits(d, draw.ordinary, reinterpret_cast<uint8_t*>(&ordinaryBits));
         out |= outBits << first, ordinary |= ordinaryBits << first;
     }

@@ -519,19 +519,21 @@ inline void putInterfaceWaves(const UniaxialLeaving<double>& e, const PlaneWave&
     put(out.transmitted[1], WaveMode::P, e.transmitted[1], !evanescent);
 }
 
-// The draw among an entry's waves (PhotonWalker::chooseCrystalWave()), written once over the number type: u
-// is the photon's next Rng::uniform(), then the shares of the reflected s and p waves and of the transmitted
-// ordinary and extraordinary waves. The photon reflects where `reflected`, else enters as the ordinary wave
-// where `ordinary`, else as the extraordinary one.
+// The draw among an interface's waves, written once over the number type and for entries and leavings
+// alike: u is the photon's next Rng::uniform(), then the shares of a pair of waves the photon takes together
+// (an entry's reflected s and p waves, a leaving's transmitted s and p waves) and of the two crystal waves
+// (ordinary, then extraordinary: transmitted on entry, reflected on leaving). The photon takes the pair where
+// `pair`, else the ordinary wave where `ordinary`, else the extraordinary one
+// (PhotonWalker::chooseCrystalWave(), chooseLeavingWave()).
 template <class T>
-struct EntryDraw {
-    decltype(T{} < T{}) reflected, ordinary;
+struct WaveDraw {
+    decltype(T{} < T{}) pair, ordinary;
 };
 template <class T>
-FACETLIGHT_AI EntryDraw<T> drawEntry(T u, T reflectedS, T reflectedP, T ordinary, T extraordinary) {
-    const T reflected = reflectedS + reflectedP;
-    const T x = u * (reflected + ordinary + extraordinary);
-    return {x < reflected, x < reflected + ordinary};
+FACETLIGHT_AI WaveDraw<T> drawWave(T u, T pairS, T pairP, T ordinary, T extraordinary) {
+    const T pair = pairS + pairP;
+    const T x = u * (pair + ordinary + extraordinary);
+    return {x < pair, x < pair + ordinary};
 }
 
 // One lane's entry among several kept by number (UniaxialEntry<double>::forEachNumber's order, number i at
@@ -559,21 +561,6 @@ struct EntryLane {
     }
     Vec3 ordinaryNormal() const { return vec(Entry::kTransmitted); }
 };
-
-// The draw among a leaving's waves (PhotonWalker::chooseLeavingWave()), written once over the number type:
-// u is the photon's next Rng::uniform(), then the shares of the reflected ordinary and extraordinary waves
-// and of the transmitted s and p waves. The photon leaves where `out`, else reflects as the ordinary wave
-// where `ordinary`, else as the extraordinary one.
-template <class T>
-struct LeavingDraw {
-    decltype(T{} < T{}) out, ordinary;
-};
-template <class T>
-FACETLIGHT_AI LeavingDraw<T> drawLeaving(T u, T reflectedO, T reflectedE, T transmittedS, T transmittedP) {
-    const T out = transmittedS + transmittedP;
-    const T x = u * (out + reflectedO + reflectedE);
-    return {x < out, x < out + reflectedO};
-}
 
 // One lane's leaving among several kept by number (UniaxialLeaving<double>::forEachNumber's order, number i
 // at numbers[i * stride]): what a photon's choice reads of it (PhotonWalker::chooseLeavingWave()), the values

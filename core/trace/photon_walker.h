@@ -322,7 +322,7 @@ class PhotonWalker {
         const PlaneWave& transmittedWave(int j) const { return w.transmitted[j].wave; }
         const Vec3& ordinaryNormal() const { return w.transmitted[0].wave.waveNormal; }
     };
-    // The wave a photon's draw picks among an entry's (uniaxial::drawEntry) for its state pol along d: -1
+    // The wave a photon's draw picks among an entry's (uniaxial::drawWave) for its state pol along d: -1
     // reflected, 0 or 1 the transmitted ordinary or extraordinary wave; or the lanes' draw where they made
     // it.
     template <class Waves>
@@ -333,9 +333,9 @@ class PhotonWalker {
             return shareOfParts(w.fluxRatio(i), ts.real(), ts.imag(), tp.real(), tp.imag(), j.ss, j.pp,
                                 j.sp.real(), j.sp.imag());
         };
-        const uniaxial::EntryDraw<double> draw =
-            uniaxial::drawEntry<double>(rng.uniform(), share(0), share(1), share(2), share(3));
-        return draw.reflected ? -1 : draw.ordinary ? 0 : 1;
+        const uniaxial::WaveDraw<double> draw =
+            uniaxial::drawWave<double>(rng.uniform(), share(0), share(1), share(2), share(3));
+        return draw.pair ? -1 : draw.ordinary ? 0 : 1;
     }
     static int drawEntryWave(const uniaxial::EntryLane& w, const Polarization& pol, const Vec3f& d,
                              Rng& rng) {
@@ -400,14 +400,14 @@ class PhotonWalker {
         const Vec3& transmittedRay() const { return w.transmitted[0].wave.ray; }
         const Vec3& transmittedField() const { return w.transmitted[0].wave.field; }
     };
-    // The wave a photon's draw picks among a leaving's (uniaxial::drawLeaving): -1 out through the s and p
+    // The wave a photon's draw picks among a leaving's (uniaxial::drawWave): -1 out through the s and p
     // waves, 0 or 1 the reflected ordinary or extraordinary wave; or the lanes' draw where they made it.
     template <class Waves>
     static int drawLeavingWave(const Waves& w, Rng& rng) {
-        const uniaxial::LeavingDraw<double> draw =
-            uniaxial::drawLeaving<double>(rng.uniform(), w.reflectedShare(0), w.reflectedShare(1),
-                                          w.transmittedShare(0), w.transmittedShare(1));
-        return draw.out ? -1 : draw.ordinary ? 0 : 1;
+        const uniaxial::WaveDraw<double> draw =
+            uniaxial::drawWave<double>(rng.uniform(), w.transmittedShare(0), w.transmittedShare(1),
+                                       w.reflectedShare(0), w.reflectedShare(1));
+        return draw.pair ? -1 : draw.ordinary ? 0 : 1;
     }
     static int drawLeavingWave(const uniaxial::LeavingLane& w, Rng& rng) {
         if (w.drawn == uniaxial::LeavingLane::kNotDrawn)

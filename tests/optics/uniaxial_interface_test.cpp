@@ -277,10 +277,10 @@ TEST(UniaxialLeaving, LanesGiveLeaveCrystalsBitsOnEveryTarget) {
                 ASSERT_TRUE(same(lanes[j], one)) << "round " << round << ", incidence " << j;
                 // The lanes' draw, as the one-photon walk draws from leaveCrystal()'s shares.
                 Rng stream = Rng::resume(state[j]);
-                const uniaxial::LeavingDraw<double> draw = uniaxial::drawLeaving<double>(
-                    stream.uniform(), one.reflected[0].share[0], one.reflected[1].share[0],
-                    one.transmitted[0].share[0], one.transmitted[1].share[0]);
-                ASSERT_EQ(drawn[j], draw.out        ? -1
+                const uniaxial::WaveDraw<double> draw = uniaxial::drawWave<double>(
+                    stream.uniform(), one.transmitted[0].share[0], one.transmitted[1].share[0],
+                    one.reflected[0].share[0], one.reflected[1].share[0]);
+                ASSERT_EQ(drawn[j], draw.pair       ? -1
                                     : draw.ordinary ? 0
                                                     : 1)
                     << "round " << round << ", incidence " << j;
